@@ -1,0 +1,66 @@
+"""Small, predictable algebra used by every stage (no ``simplify``).
+
+- ``reduce_signs``: s**2 = 1 for sign symbols of open sign patterns;
+- ``reduce_trig``: cos(x)**2 = 1 - sin(x)**2, a polynomial reduction;
+- ``normalize``: expand, then both reductions.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+__all__ = ["SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "normalize"]
+
+
+class SignSymbol(sp.Symbol):
+    """A symbol for sign(sigma) on an open sign pattern: its value is +1 or -1."""
+
+    def __new__(cls, name, **assumptions):
+        return super().__new__(cls, name, integer=True, nonzero=True)
+
+
+def sign_symbols(count: int) -> tuple[SignSymbol, ...]:
+    """s (one switching function) or s_1, ..., s_count."""
+    if count == 1:
+        return (SignSymbol("s"),)
+    return tuple(SignSymbol(f"s_{i}") for i in range(1, count + 1))
+
+
+def reduce_signs(expr: sp.Expr) -> sp.Expr:
+    """Use s**2 = 1 for every SignSymbol s.
+
+    Examples
+    --------
+    >>> s = SignSymbol("s")
+    >>> reduce_signs(s**2 + 3*s**3 - s**4)
+    3*s
+    """
+    return sp.sympify(expr).replace(
+        lambda e: e.is_Pow and isinstance(e.base, SignSymbol) and e.exp.is_Integer,
+        lambda e: e.base ** (e.exp % 2),
+    )
+
+
+def reduce_trig(expr: sp.Expr) -> sp.Expr:
+    """Replace cos(x)**n, n >= 2, by cos(x)**(n % 2) (1 - sin(x)**2)**(n // 2), expanded.
+
+    Examples
+    --------
+    >>> a, m = sp.symbols("alpha m", positive=True)
+    >>> reduce_trig(sp.sin(a)**2/m + sp.cos(a)**2/m)
+    1/m
+    """
+
+    def is_cos_power(e):
+        return e.is_Pow and isinstance(e.base, sp.cos) and e.exp.is_Integer and e.exp >= 2
+
+    def rewrite(e):
+        n = int(e.exp)
+        return e.base ** (n % 2) * (1 - sp.sin(e.base.args[0]) ** 2) ** (n // 2)
+
+    return sp.expand(sp.sympify(expr).replace(is_cos_power, rewrite))
+
+
+def normalize(expr: sp.Expr) -> sp.Expr:
+    """Expanded, with s**2 = 1 and sin**2 + cos**2 = 1 used."""
+    return reduce_signs(reduce_trig(sp.expand(expr)))

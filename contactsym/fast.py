@@ -1,0 +1,167 @@
+"""The associated (fast) system (2.1), in the form (3.1)/(4.1):
+
+    u_j' = Phi_j(u_j, v_j) v_j + Psi_j(u_j, v_j) f_j(u),    v_j' = f_j(u),
+
+where ' is d/dtau, tau = t/eps, and f_j(u) is the acceleration of contact j with the
+deformations and their rates set to zero, the slow state frozen and N = u.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import sympy as sp
+
+from .algebra import normalize
+from .errors import SceneError
+
+__all__ = ["FastSubsystem", "switching_functions", "on_piece"]
+
+
+def _canonical(arg: sp.Expr, u) -> tuple[sp.Expr, int]:
+    """(sigma, c) with arg = c * sigma, sigma increasing in the first u it contains."""
+    first = next(x for x in u if arg.has(x))
+    return (-arg, -1) if sp.diff(arg, first).could_extract_minus_sign() else (arg, 1)
+
+
+def switching_functions(exprs, u) -> tuple[sp.Expr, ...]:
+    """The distinct arguments of Abs and sign in ``exprs`` that depend on ``u``.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> u1, u2, y = sp.symbols("u_1 u_2 y", real=True)
+    >>> switching_functions([sp.Abs(u1) + sp.sign(-u1) + sp.Abs(u2 + y) + sp.Abs(y)], [u1, u2])
+    (u_1, u_2 + y)
+    """
+    found = set()
+    for expr in exprs:
+        for atom in sp.sympify(expr).atoms(sp.Abs, sp.sign):
+            if atom.args[0].has(*u):
+                found.add(_canonical(atom.args[0], u)[0])
+    order = {symbol: i for i, symbol in enumerate(u)}
+    return tuple(sorted(found, key=lambda s: (min(order[x] for x in s.free_symbols if x in order), str(s))))
+
+
+def on_piece(expr, switching, signs, u) -> sp.Expr:
+    """``expr`` on the piece where sign(switching[i]) = signs[i]; signs may be symbols.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> u, s = sp.symbols("u s", real=True)
+    >>> on_piece(2*u + sp.Abs(-u) - sp.sign(u), [u], [s], [u])
+    s*u - s + 2*u
+    """
+    by_sigma = dict(zip(switching, signs))
+    replacements = {}
+    for atom in sp.sympify(expr).atoms(sp.Abs, sp.sign):
+        if not atom.args[0].has(*u):
+            continue
+        sigma, c = _canonical(atom.args[0], u)
+        if sigma in by_sigma:
+            s = by_sigma[sigma]
+            replacements[atom] = s * sigma if atom.func is sp.Abs else c * s
+    return sp.sympify(expr).xreplace(replacements)
+
+
+@dataclass(frozen=True, eq=False)
+class FastSubsystem:
+    """The fast subsystem (2.1) of a scene. All attributes are SymPy objects.
+
+    Attributes
+    ----------
+    u, v : tuple of Symbol
+        Fast variables (1.6): u_j = N_j (the reaction), v_j = q_j'/eps.
+    f : Matrix
+        f_j(u), piecewise smooth through Abs/sign of the switching functions.
+    Phi, Psi : tuple
+        eps^2 dN_j/dq_j and eps dN_j/dq_j' in the limit eps -> 0 (3.1).
+    rhs : Matrix
+        The right-hand side, in the order ``state = (u_1..u_k, v_1..v_k)``.
+    switching : tuple
+        Arguments of Abs/sign that depend on u; a sign pattern gives one sign each.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> fs = cs.scene("sliding-point").fast_subsystem()
+    >>> fs.rhs.T
+    Matrix([[-2*b*(u/m + Y(x, xdot)/m) - v, u/m + Y(x, xdot)/m]])
+    """
+
+    scene: object
+
+    @property
+    def k(self) -> int:
+        return self.scene.k
+
+    def _names(self, letter: str) -> tuple[sp.Symbol, ...]:
+        if self.k == 1:
+            return (sp.Symbol(letter, real=True),)
+        return tuple(sp.Symbol(f"{letter}_{j}", real=True) for j in range(1, self.k + 1))
+
+    @cached_property
+    def u(self) -> tuple[sp.Symbol, ...]:
+        return self._names("u")
+
+    @cached_property
+    def v(self) -> tuple[sp.Symbol, ...]:
+        return self._names("v")
+
+    @cached_property
+    def state(self) -> sp.Matrix:
+        return sp.Matrix(self.u + self.v)
+
+    @cached_property
+    def f(self) -> sp.Matrix:
+        to_u = dict(zip(self.scene.reactions, self.u))
+        f = sp.Matrix([normalize(self.scene.freeze(g).subs(to_u)) for g in self.scene.gap_accelerations])
+        if not any(fj.has(*self.u) for fj in f):
+            raise SceneError(
+                "the contact accelerations f_j do not depend on any reaction; "
+                "check that each reaction acts along its contact's normal."
+            )
+        return f
+
+    @cached_property
+    def _laws(self) -> tuple[tuple[sp.Expr, sp.Expr], ...]:
+        index = (lambda j: None) if self.k == 1 else (lambda j: j + 1)
+        return tuple(c.compliance.phi_psi(self.u[j], self.v[j], index(j)) for j, c in enumerate(self.scene.contacts))
+
+    @cached_property
+    def Phi(self) -> tuple[sp.Expr, ...]:
+        return tuple(phi for phi, _ in self._laws)
+
+    @cached_property
+    def Psi(self) -> tuple[sp.Expr, ...]:
+        return tuple(psi for _, psi in self._laws)
+
+    @cached_property
+    def rhs(self) -> sp.Matrix:
+        du = [self.Phi[j] * self.v[j] + self.Psi[j] * self.f[j] for j in range(self.k)]
+        return sp.Matrix(du + list(self.f))
+
+    @cached_property
+    def switching(self) -> tuple[sp.Expr, ...]:
+        return switching_functions(self.f, self.u)
+
+    @cached_property
+    def constant_laws(self) -> bool:
+        """True when every Phi_j, Psi_j is constant (Proposition 5 applies for k = 1)."""
+        return all(c.compliance.constant for c in self.scene.contacts)
+
+    def piece(self, signs) -> sp.Matrix:
+        """f on the piece of a sign pattern (numbers or symbols)."""
+        return self.f.applyfunc(lambda e: on_piece(e, self.switching, signs, self.u))
+
+    @cached_property
+    def equations(self) -> list[sp.Eq]:
+        """The equations (2.1) as ``Eq(Symbol("u_j'"), ...)``, for display."""
+        return [sp.Eq(sp.Symbol(f"{x}'"), r) for x, r in zip(self.state, self.rhs)]
+
+    def _repr_latex_(self) -> str:
+        from .latex import latex
+
+        return f"$\\displaystyle {latex(self)}$"

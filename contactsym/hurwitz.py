@@ -1,0 +1,153 @@
+"""Routh–Hurwitz conditions in the Liénard–Chipart form, fraction-free, any degree.
+
+For ``p(lam) = a_0 lam^n + a_1 lam^(n-1) + ... + a_n`` with ``a_0 > 0`` every root has a
+negative real part exactly when all ``a_i > 0`` and the Hurwitz determinants
+``Delta_(n-1), Delta_(n-3), ...`` are positive. The determinants are computed once per
+degree for generic coefficients (polynomials with integer coefficients, no division)
+and then evaluated at the given coefficients.
+
+A Hopf point is where ``Delta_(n-1) = 0`` with the other conditions positive; there
+``p(i omega) = 0`` and ``omega^2`` is the common root of the even and odd parts.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cache, cached_property
+
+import sympy as sp
+
+__all__ = ["hurwitz_matrix", "hurwitz_minors", "lienard_chipart", "hopf_omega_squared", "Hurwitz"]
+
+_z = sp.Symbol("z")
+
+
+def _generic(n: int) -> tuple[sp.Symbol, ...]:
+    return sp.symbols(f"a_0:{n + 1}")
+
+
+def hurwitz_matrix(coefficients) -> sp.Matrix:
+    """The n x n Hurwitz matrix H[i, j] = a_(2j - i) (1-based), for a_0 lam^n + ... + a_n.
+
+    Examples
+    --------
+    >>> hurwitz_matrix(sp.symbols("a0:4"))
+    Matrix([
+    [a1, a3,  0],
+    [a0, a2,  0],
+    [ 0, a1, a3]])
+    """
+    a = list(coefficients)
+    n = len(a) - 1
+
+    def entry(i, j):
+        index = 2 * (j + 1) - (i + 1)
+        return a[index] if 0 <= index <= n else sp.S.Zero
+
+    return sp.Matrix(n, n, entry)
+
+
+@cache
+def _generic_minors(n: int) -> tuple[sp.Expr, ...]:
+    H = hurwitz_matrix(_generic(n))
+    return tuple(sp.expand(H[:m, :m].det(method="berkowitz")) for m in range(1, n + 1))
+
+
+def _coefficients(poly: sp.Poly) -> list[sp.Expr]:
+    return [poly.coeff_monomial(poly.gen**i) for i in range(poly.degree(), -1, -1)]
+
+
+def hurwitz_minors(poly: sp.Poly) -> list[sp.Expr]:
+    """Delta_1 .. Delta_n of ``poly`` (unexpanded substitution into generic minors).
+
+    Examples
+    --------
+    >>> x, a, b = sp.symbols("x a b")
+    >>> hurwitz_minors(sp.Poly(x**2 + a*x + b, x))
+    [a, a*b]
+    """
+    values = dict(zip(_generic(poly.degree()), _coefficients(poly)))
+    return [m.xreplace(values) for m in _generic_minors(poly.degree())]
+
+
+def lienard_chipart(poly: sp.Poly) -> list[sp.Expr]:
+    """Expressions that are all > 0 exactly when ``poly`` is Hurwitz stable.
+
+    The leading coefficient must be positive; coefficients that are positive numbers
+    are dropped, and Delta_1 (= a_1) is not repeated.
+
+    Examples
+    --------
+    >>> x, a, b, c = sp.symbols("x a b c")
+    >>> lienard_chipart(sp.Poly(x**3 + a*x**2 + b*x + c, x))
+    [a, b, c, a*b - c]
+    """
+    coefficients = _coefficients(poly)
+    minors = hurwitz_minors(poly)
+    n = poly.degree()
+    chosen = [minors[m - 1] for m in range(n - 1, 1, -2)]
+    return [c for c in coefficients if not (c.is_number and c > 0)] + chosen
+
+
+@cache
+def _generic_omega_squared(n: int) -> sp.Expr | None:
+    a = _generic(n)[::-1]  # a[i] is the coefficient of lam**i
+    even = sum((-1) ** i * a[2 * i] * _z**i for i in range(n // 2 + 1))
+    odd = sum((-1) ** i * a[2 * i + 1] * _z**i for i in range((n - 1) // 2 + 1))
+    for s in sp.subresultants(sp.Poly(even, _z), sp.Poly(odd, _z)):
+        s = sp.Poly(s, _z)
+        if s.degree() == 1:
+            return -s.coeff_monomial(1) / s.coeff_monomial(_z)
+    return None
+
+
+def hopf_omega_squared(poly: sp.Poly) -> sp.Expr | None:
+    """omega^2 at a Hopf point (Delta_(n-1) = 0): the common root of Re and Im of p(i omega).
+
+    Examples
+    --------
+    >>> x, a = sp.symbols("x a", positive=True)
+    >>> hopf_omega_squared(sp.Poly(x**4 + 2*x**3 + 3*x**2 + a*x + 1, x))
+    a/2
+    """
+    generic = _generic_omega_squared(poly.degree())
+    if generic is None:
+        return None
+    values = dict(zip(_generic(poly.degree()), _coefficients(poly)))
+    return sp.cancel(generic.xreplace(values))
+
+
+@dataclass(frozen=True, eq=False)
+class Hurwitz:
+    """Hurwitz data of a characteristic polynomial (4.6)-(4.7).
+
+    Examples
+    --------
+    >>> x, a, b = sp.symbols("x a b")
+    >>> Hurwitz(sp.Poly(x**2 + a*x + b, x)).conditions
+    [a, b]
+    """
+
+    poly: sp.Poly
+
+    @cached_property
+    def coefficients(self) -> list[sp.Expr]:
+        """p_n, ..., p_0 (leading first)."""
+        return _coefficients(self.poly)
+
+    @cached_property
+    def minors(self) -> list[sp.Expr]:
+        return hurwitz_minors(self.poly)
+
+    @cached_property
+    def conditions(self) -> list[sp.Expr]:
+        return lienard_chipart(self.poly)
+
+    @cached_property
+    def hopf_minor(self) -> sp.Expr:
+        """Delta_(n-1): its zero set, with the rest positive, is the Hopf set."""
+        return self.minors[-2] if self.poly.degree() > 1 else self.minors[0]
+
+    @cached_property
+    def omega_squared(self) -> sp.Expr | None:
+        return hopf_omega_squared(self.poly)

@@ -1,0 +1,162 @@
+"""Regularization (1.6)-(1.9) and the comparison (reduced) system (2.2).
+
+New fast variables u_j = N_j(q_j, q_j'), v_j = q_j'/eps (1.6) and the stretched time
+tau = t/eps turn the equations into the singularly perturbed system (1.9)
+
+    x' = eps X(x, y, eps),   y' = Y(x, y, eps),   x = (t, q_i, q_i'),  y = (u_j, v_j).
+
+Setting eps = 0 in Y gives the fast subsystem (2.1); solving its equilibrium f(u*) = 0
+for the reactions gives the comparison system (2.2), the classical rigid-contact motion.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import sympy as sp
+
+from .errors import ContactsymError
+from .scene import t
+
+__all__ = ["Regularized", "ReducedSystem"]
+
+
+@dataclass(frozen=True, eq=False)
+class Regularized:
+    """The system (1.9) of a scene, in stretched time.
+
+    Attributes
+    ----------
+    tau : Symbol
+        Stretched time t/eps.
+    x, y : Matrix
+        Slow variables (t, q_i, q_i') and fast variables (u_j, v_j).
+    X, Y : Matrix
+        Right-hand sides; ``x' = eps X``, ``y' = Y``. The compliance law enters
+        through its scaled form (exact for Kelvin–Voigt and other laws homogeneous in
+        the scaling (1.8)).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> reg = cs.scene("sliding-point").regularized()
+    >>> reg.Y.T
+    Matrix([[-2*b*(u/m + Y(x, xdot)/m) - v, u/m + Y(x, xdot)/m]])
+    >>> reg.Y.subs(reg.eps, 0) == reg.scene.fast_subsystem().rhs
+    True
+    """
+
+    scene: object
+
+    @property
+    def eps(self) -> sp.Symbol:
+        return self.scene.eps
+
+    @cached_property
+    def tau(self) -> sp.Symbol:
+        return sp.Symbol("tau", positive=True)
+
+    @cached_property
+    def slow_coordinates(self) -> tuple:
+        """Coordinates that are not contact coordinates."""
+        return tuple(q for q in self.scene.coordinates if q not in self.scene.gaps)
+
+    @cached_property
+    def _deformed(self) -> dict:
+        """Contact coordinates and rates in terms of (u, v, eps), (1.6)."""
+        fast = self.scene.fast_subsystem()
+        index = (lambda j: None) if self.scene.k == 1 else (lambda j: j + 1)
+        subs = {}
+        for j, contact in enumerate(self.scene.contacts):
+            q = contact.coordinate
+            if q in self.scene.coordinates:
+                subs[sp.diff(q, t)] = self.eps * fast.v[j]
+                subs[q] = contact.compliance.deformation(fast.u[j], fast.v[j], self.eps, index(j))
+        return subs
+
+    def _on_fast(self, expr: sp.Expr) -> sp.Expr:
+        fast = self.scene.fast_subsystem()
+        rates = {d: v for d, v in self._deformed.items() if isinstance(d, sp.Derivative)}
+        positions = {d: v for d, v in self._deformed.items() if not isinstance(d, sp.Derivative)}
+        expr = expr.subs(rates).subs(positions).subs(dict(zip(self.scene.reactions, fast.u)))
+        return self.scene._plain(expr)
+
+    @cached_property
+    def x(self) -> sp.Matrix:
+        plain = [self.scene._plain(q) for q in self.slow_coordinates]
+        rates = [self.scene._plain(sp.diff(q, t)) for q in self.slow_coordinates]
+        return sp.Matrix([sp.Symbol("t", real=True), *plain, *rates])
+
+    @cached_property
+    def X(self) -> sp.Matrix:
+        rates = [self.scene._plain(sp.diff(q, t)) for q in self.slow_coordinates]
+        accelerations = [self._on_fast(self.scene.accelerations[q]) for q in self.slow_coordinates]
+        return sp.Matrix([1, *rates, *accelerations])
+
+    @cached_property
+    def y(self) -> sp.Matrix:
+        return self.scene.fast_subsystem().state
+
+    @cached_property
+    def Y(self) -> sp.Matrix:
+        fast = self.scene.fast_subsystem()
+        G = [self._on_fast(g) for g in self.scene.gap_accelerations]
+        du = [fast.Phi[j] * fast.v[j] + fast.Psi[j] * G[j] for j in range(self.scene.k)]
+        return sp.Matrix(du + G)
+
+
+@dataclass(frozen=True, eq=False)
+class ReducedSystem:
+    """The comparison system (2.2): slow coordinates with the reactions N = u*.
+
+    Attributes
+    ----------
+    reactions : dict
+        N_j -> u_j* (in the frozen-state symbols of the fast subsystem).
+    accelerations : dict
+        Each remaining slow coordinate -> its acceleration with N = u*.
+    condition : sympy Boolean
+        Where this branch exists (the sign pattern is consistent).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> red = cs.scene("sliding-point").reduced_system()
+    >>> red.accelerations
+    {x: (-mu*Abs(Y(x, xdot)) + X(x, xdot))/m}
+    """
+
+    scene: object
+    signs: tuple | None
+
+    @cached_property
+    def branch(self):
+        branches = self.scene.equilibria(self.signs).branches
+        if len(branches) != 1:
+            raise ContactsymError(
+                f"scene '{self.scene.name}' has {len(branches)} equilibrium branches; "
+                "choose one with reduced_system(signs=...)."
+            )
+        return branches[0]
+
+    @cached_property
+    def reactions(self) -> dict:
+        return dict(zip(self.scene.reactions, self.branch.u_star))
+
+    @cached_property
+    def condition(self) -> sp.Basic:
+        return self.branch.condition
+
+    @cached_property
+    def coordinates(self) -> tuple:
+        """Plain symbols of the coordinates that the contacts leave free."""
+        fixed = set(self.scene.manifold)
+        plain = [self.scene._plain(q) for q in self.scene.coordinates]
+        return tuple(q for q in plain if q not in fixed)
+
+    @cached_property
+    def accelerations(self) -> dict:
+        scene = self.scene
+        by_plain = {scene._plain(q): g for q, g in scene.accelerations.items()}
+        return {q: sp.cancel(scene.freeze(by_plain[q]).subs(self.reactions)) for q in self.coordinates}

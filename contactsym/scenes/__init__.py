@@ -1,0 +1,55 @@
+"""Built-in scenes: the paper's four examples, written at the level of mechanics."""
+
+from __future__ import annotations
+
+from importlib import import_module
+
+from ..errors import SceneError
+
+__all__ = ["scene", "scene_names", "DEFAULT_SCENE"]
+
+_MODULES = {
+    "sliding-point": "sliding_point",
+    "painleve-klein-rod": "painleve_klein_rod",
+    "painleve-klein-guides": "painleve_klein_guides",
+    "brake": "brake",
+}
+
+#: The scene that ``contactsym`` shows when no scene is named.
+DEFAULT_SCENE = "brake"
+
+_built: dict = {}
+
+
+def scene_names() -> list[str]:
+    """Names of the built-in scenes.
+
+    Examples
+    --------
+    >>> scene_names()
+    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake']
+    """
+    return list(_MODULES)
+
+
+def scene(name: str):
+    """A built-in scene by name (built once, then shared; scenes are immutable).
+
+    Examples
+    --------
+    >>> scene("brake")
+    <Scene 'brake': 3 coordinates, k = 2 contacts>
+    >>> scene("break")
+    Traceback (most recent call last):
+    ...
+    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake.
+    """
+    if name not in _MODULES:
+        import difflib
+
+        close = difflib.get_close_matches(name, _MODULES, n=1)
+        hint = f"did you mean '{close[0]}'? " if close else ""
+        raise SceneError(f"unknown scene '{name}'; {hint}Known scenes: {', '.join(_MODULES)}.")
+    if name not in _built:
+        _built[name] = import_module(f".{_MODULES[name]}", __name__).build()
+    return _built[name]

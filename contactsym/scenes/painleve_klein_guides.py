@@ -1,0 +1,63 @@
+"""§5, (5.1)-(5.10): Painlevé–Klein system with a rigid rod and deformable guides.
+
+A rod of length 2 l carries masses 1/2 at its ends (radius of inertia k = l) and
+slides to the right between two guides 2 h apart, at angle phi to them. The local
+deformations of the guides are q_{1,2} = h - l sin(phi) -/+ y. Loads: force (X, Y) at
+the centre and moment M.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+from sympy.physics.mechanics import Lagrangian as lagrangian_of
+from sympy.physics.mechanics import Particle, Point, ReferenceFrame, dynamicsymbols
+
+from ..algebra import SignSymbol
+from ..laws import Coulomb
+from ..scene import Contact, Scene
+
+
+def build() -> Scene:
+    x, y, phi = dynamicsymbols("x y phi")
+    l, h = sp.symbols("l h", positive=True)
+    mu1, mu2 = sp.symbols("mu_1 mu_2", positive=True)
+    X, Y, M = sp.symbols("X Y M", real=True)
+    N1, N2 = sp.symbols("N_1 N_2", real=True)
+    O = ReferenceFrame("O")
+    rod = O.orientnew("B", "Axis", [phi, O.z])
+    origin = Point("O")
+    origin.set_vel(O, 0)
+    centre = origin.locatenew("C", x * O.x + y * O.y)
+    centre.set_vel(O, centre.pos_from(origin).dt(O))
+    ends = []
+    for name, side in (("P_1", 1), ("P_2", -1)):
+        end = centre.locatenew(name, side * l * rod.x)
+        end.v2pt_theory(centre, O, rod)
+        ends.append(end)
+    half = sp.Rational(1, 2)
+    L = lagrangian_of(O, Particle("m_1", ends[0], half), Particle("m_2", ends[1], half))
+    contacts = [
+        Contact(coordinate=h - l * sp.sin(phi) - y, reaction=N1, friction=Coulomb(mu1, O.x, ends[0])),
+        Contact(coordinate=h - l * sp.sin(phi) + y, reaction=N2, friction=Coulomb(mu2, O.x, ends[1])),
+    ]
+    kappa = sp.Symbol("kappa", positive=True)
+    v1, v2 = sp.symbols("v_1 v_2", real=True)
+    s1, s2 = SignSymbol("s_1"), SignSymbol("s_2")
+    phi_ = sp.Symbol("phi", real=True)
+    presentation = {
+        mu1: s1 * v1 / kappa,  # v_j = (-1)^(j+1) kappa s_j mu_j  (5.4)
+        mu2: -s2 * v2 / kappa,
+        sp.sin(phi_): 1 / sp.sqrt(1 + kappa**2),  # kappa = cot(phi), 0 < phi < pi/2
+        sp.cos(phi_): kappa / sp.sqrt(1 + kappa**2),
+    }
+    return Scene.from_lagrangian(
+        L,
+        [x, y, phi],
+        contacts,
+        loads=[(centre, X * O.x + Y * O.y), (rod, M * O.z)],
+        frame=O,
+        at={h: l * sp.sin(phi)},
+        name="painleve-klein-guides",
+        presentation=presentation,
+        description="(5.1)-(5.10): Painleve-Klein system, rigid rod, deformable guides",
+    )

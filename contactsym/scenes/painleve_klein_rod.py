@@ -1,0 +1,49 @@
+"""§3, (3.5)-(3.9): Painlevé–Klein system with a deformable rod and rigid guides.
+
+Two unit masses slide to the right on parallel rigid guides and are joined by a rod
+at angle phi to the guides. The rod deforms along its length: delta is its
+shortening, x1 - x2 = (2 l - delta) cos(phi), and R (R > 0: tension) is its force.
+The guides are rigid, so their normal forces N1, N2 balance the vertical forces.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+from sympy.physics.mechanics import ReferenceFrame, dynamicsymbols
+
+from ..scene import Contact, Scene
+
+
+def build() -> Scene:
+    x1, delta = dynamicsymbols("x_1 delta")
+    phi, l = sp.symbols("phi l", positive=True)
+    mu1, mu2 = sp.symbols("mu_1 mu_2", positive=True)
+    X1, X2, Y1, Y2, R = sp.symbols("X_1 X_2 Y_1 Y_2 R", real=True)
+    N1, N2 = sp.symbols("N_1 N_2", real=True)
+    O = ReferenceFrame("O")
+    rod = sp.cos(phi) * O.x + sp.sin(phi) * O.y  # from mass 2 to mass 1
+    # Newton's law for each unit mass: loads, guide normal force, friction, rod force
+    F1 = X1 * O.x + Y1 * O.y + N1 * O.y - mu1 * sp.Abs(N1) * O.x - R * rod
+    F2 = X2 * O.x + Y2 * O.y + N2 * O.y - mu2 * sp.Abs(N2) * O.x + R * rod
+    # rigid guides: no vertical acceleration, which fixes the normal forces
+    normal = {N1: sp.solve(F1.dot(O.y), N1)[0], N2: sp.solve(F2.dot(O.y), N2)[0]}
+    a1, a2 = (F.dot(O.x).subs(normal) for F in (F1, F2))
+    # delta = 2 l - (x1 - x2)/cos(phi)
+    delta_dd = -(a1 - a2) / sp.cos(phi)
+    mu_p, mu_m = sp.symbols("mu_+ mu_-", real=True)
+    Xs, Y1s, Y2s = sp.symbols("X^* Y^*_1 Y^*_2", real=True)
+    presentation = {
+        mu1: (mu_p + mu_m) * sp.cos(phi) / (2 * sp.sin(phi)),  # mu_pm = (mu_1 +- mu_2) tan(phi)
+        mu2: (mu_p - mu_m) * sp.cos(phi) / (2 * sp.sin(phi)),
+        X2: X1 + Xs * sp.cos(phi),
+        Y1: Y1s * sp.sin(phi),
+        Y2: Y2s * sp.sin(phi),
+    }
+    return Scene.from_accelerations(
+        [x1, delta],
+        [a1, sp.expand(delta_dd)],
+        [Contact(coordinate=delta, reaction=R)],
+        name="painleve-klein-rod",
+        presentation=presentation,
+        description="(3.5)-(3.9): Painleve-Klein system, deformable rod, rigid guides",
+    )

@@ -1,0 +1,43 @@
+"""§1, (1.10)-(1.12): a point mass sliding on a rough line, pressed by a plane force.
+
+The line is y = 0; the point slides to the right (x' > 0), so Coulomb friction
+mu |N| acts along -x. The contact deforms with the Kelvin–Voigt law (1.11),
+N = -2 b c y' - c^2 y with eps = 1/c.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+from sympy.physics.mechanics import Lagrangian as lagrangian_of
+from sympy.physics.mechanics import Particle, Point, ReferenceFrame, dynamicsymbols
+
+from ..laws import Coulomb, KelvinVoigt
+from ..scene import Contact, Scene, t
+
+
+def build() -> Scene:
+    x, y = dynamicsymbols("x y")
+    m, mu, b = sp.symbols("m mu b", positive=True)
+    N = sp.Symbol("N", real=True)
+    X = sp.Function("X")(x, x.diff(t))
+    Y = sp.Function("Y")(x, x.diff(t))
+    frame = ReferenceFrame("O")
+    origin = Point("O")
+    origin.set_vel(frame, 0)
+    point = origin.locatenew("P", x * frame.x + y * frame.y)
+    point.set_vel(frame, x.diff(t) * frame.x + y.diff(t) * frame.y)
+    contact = Contact(
+        coordinate=y,
+        reaction=N,
+        compliance=KelvinVoigt(1, 2 * b),
+        friction=Coulomb(mu, direction=frame.x, point=point),
+    )
+    return Scene.from_lagrangian(
+        lagrangian_of(frame, Particle("P", point, m)),
+        [x, y],
+        [contact],
+        loads=[(point, X * frame.x + Y * frame.y)],
+        frame=frame,
+        name="sliding-point",
+        description="(1.10)-(1.12): a point sliding on a rough line, Kelvin-Voigt contact",
+    )

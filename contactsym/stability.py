@@ -1,0 +1,177 @@
+"""Stability of an equilibrium of the fast subsystem, and its robustness to the law.
+
+``hurwitz`` holds the expressions that must all be positive for asymptotic stability
+of (4.5) (Liénard–Chipart form of (4.7)). The robustness classification follows the
+paper:
+
+- k = 1: Proposition 3 (f'(u*) > 0 stable, < 0 unstable, for every law),
+  Proposition 4 (every piece has f' > 0: a unique stable reaction for every load),
+  Proposition 5 (constant Phi, Psi: no cycles);
+- k = 2: Proposition 6 with Remarks 1-2: stable for every law, unstable for every law,
+  or law-dependent (a Hopf bifurcation is possible);
+- k >= 3: Propositions 7 (A symmetric positive definite) and 8 (det A < 0 or all
+  a_ss < 0). What they do not decide is ``undecided``; ``law_dependent`` is None.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import sympy as sp
+
+from .algebra import normalize
+from .errors import SingularJacobianError
+from .hurwitz import Hurwitz
+
+__all__ = ["Stability"]
+
+
+def _gt(expr) -> sp.Basic:
+    return sp.Gt(expr, 0)
+
+
+@dataclass(frozen=True, eq=False)
+class Stability:
+    """Stability conditions of one sign pattern (or all, with sign symbols).
+
+    Attributes
+    ----------
+    hurwitz : list
+        Expressions that are all > 0 exactly when (4.5) is asymptotically stable.
+    robustly_stable, robustly_unstable : sympy Boolean
+        Stable (unstable) for every admissible law (1.5).
+    law_dependent : sympy Boolean or None
+        Stable for some laws and unstable for others (None for k >= 3: not decided).
+    undecided : sympy Boolean
+        Where the propositions say nothing (det A = 0 for k <= 2).
+    hopf : sympy Boolean
+        Delta_(n-1) = 0 with the other Hurwitz conditions positive.
+    hopf_frequency : sympy expression or None
+        omega on the Hopf set, in the stretched time tau.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> st = cs.scene("sliding-point").stability()
+    >>> st.robustly_stable
+    True
+    """
+
+    linearization: object
+
+    @cached_property
+    def A(self) -> sp.Matrix:
+        return self.linearization.A
+
+    @cached_property
+    def k(self) -> int:
+        return self.A.rows
+
+    @cached_property
+    def poly(self) -> Hurwitz:
+        """Hurwitz data of the characteristic polynomial (4.6)."""
+        if sp.expand(self.linearization.det_A) == 0:
+            raise SingularJacobianError(
+                f"det A = 0 identically for A = {self.A.tolist()}: the equilibrium is not isolated and has a "
+                "zero eigenvalue for every law; the propositions need det A != 0. Check the scene's reactions."
+            )
+        return Hurwitz(self.linearization.charpoly)
+
+    @cached_property
+    def hurwitz(self) -> list[sp.Expr]:
+        return self.poly.conditions
+
+    @cached_property
+    def _classification(self) -> tuple:
+        A, det = self.A, self.linearization.det_A
+        diagonal = [A[i, i] for i in range(self.k)]
+        if self.k == 1:
+            return _gt(A[0]), sp.Lt(A[0], 0), sp.false
+        unstable = sp.Or(sp.Lt(det, 0), sp.And(*[sp.Lt(a, 0) for a in diagonal]))
+        if self.k == 2:
+            coupling = normalize(A[0, 1] * A[1, 0])
+            stable = sp.And(*[_gt(a) for a in diagonal], _gt(det), sp.Ge(coupling, 0))
+            not_unstable = sp.Or(*[sp.Ge(a, 0) for a in diagonal])
+            not_stable = sp.Or(*[sp.Le(a, 0) for a in diagonal], sp.Lt(coupling, 0))
+            return stable, unstable, sp.And(_gt(det), not_unstable, not_stable)
+        symmetric = [sp.Eq(A[i, j], A[j, i]) for i in range(self.k) for j in range(i) if sp.expand(A[i, j] - A[j, i])]
+        leading = [_gt(normalize(A[:m, :m].det(method="berkowitz"))) for m in range(1, self.k + 1)]
+        return sp.And(*symmetric, *leading), unstable, None
+
+    @cached_property
+    def robustly_stable(self) -> sp.Basic:
+        return self._classification[0]
+
+    @cached_property
+    def robustly_unstable(self) -> sp.Basic:
+        return self._classification[1]
+
+    @cached_property
+    def law_dependent(self) -> sp.Basic | None:
+        return self._classification[2]
+
+    @cached_property
+    def undecided(self) -> sp.Basic:
+        decided = [self.robustly_stable, self.robustly_unstable]
+        if self.law_dependent is not None:
+            decided.append(self.law_dependent)
+        return sp.Not(sp.Or(*decided))
+
+    @cached_property
+    def hopf(self) -> sp.Basic:
+        if self.k == 1:
+            return sp.false  # p_1 = -a Psi and p_0 = -a Phi vanish together: no Hopf point
+        minor = self.poly.hopf_minor
+        others = [_gt(c) for c in self.hurwitz if c is not minor]
+        return sp.And(sp.Eq(minor, 0), *others)
+
+    @cached_property
+    def hopf_frequency(self) -> sp.Expr | None:
+        if self.k == 1 or self.poly.omega_squared is None:
+            return None
+        return sp.sqrt(self.poly.omega_squared)
+
+    # --- k = 1: Propositions 3, 4, 5 ------------------------------------------------
+
+    @cached_property
+    def propositions(self) -> dict[str, sp.Basic]:
+        """The propositions that apply, by name, each with its condition."""
+        if self.k == 1:
+            return {
+                "Proposition 3 (stable)": self.robustly_stable,
+                "Proposition 3 (unstable)": self.robustly_unstable,
+                "Proposition 4 (unique stable reaction for every load)": self.unique_for_every_load,
+                "Proposition 5 (no cycles)": sp.true if self.no_cycles else sp.false,
+            }
+        if self.k == 2:
+            return {
+                "Proposition 6 (stable for every law)": self.robustly_stable,
+                "Proposition 6 (unstable for every law)": self.robustly_unstable,
+                "Remarks 1-2 (law-dependent, Hopf possible)": self.law_dependent,
+            }
+        return {
+            "Proposition 7 (stable for every law)": self.robustly_stable,
+            "Proposition 8 (unstable for every law)": self.robustly_unstable,
+        }
+
+    @cached_property
+    def unique_for_every_load(self) -> sp.Basic:
+        """Proposition 4: f' > 0 on every piece of f (k = 1 only)."""
+        scene = self.linearization.scene
+        fast = scene.fast_subsystem()
+        slopes = []
+        for pattern in scene.sign_patterns():
+            slope = fast.piece(pattern).jacobian(fast.u)[0]
+            slopes.append(_gt(normalize(slope)))
+        return sp.And(*slopes)
+
+    @cached_property
+    def no_cycles(self) -> bool:
+        """Proposition 5: constant Phi and Psi exclude periodic solutions (k = 1)."""
+        return self.k == 1 and self.linearization.fast.constant_laws
+
+    def _repr_latex_(self) -> str:
+        from .latex import latex
+
+        return f"$\\displaystyle {latex(self)}$"
