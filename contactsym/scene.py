@@ -94,6 +94,18 @@ def _solve_linear(equations: list[sp.Expr], candidates: list[sp.Symbol]) -> dict
     return {}
 
 
+def _check_eps(eps) -> sp.Expr:
+    """eps is the small positive parameter of (1.6): a positive symbol or number."""
+    if eps is None:
+        return sp.Symbol("epsilon", positive=True)
+    eps = sp.sympify(eps)
+    if eps.is_positive:
+        return eps
+    if eps.is_positive is False:
+        raise SceneError(f"eps = {eps} must be > 0: it is the small time scale of the deformations (1.6).")
+    raise SceneError(f"cannot show eps = {eps} > 0; use sympy.Symbol('{eps}', positive=True) or a positive number.")
+
+
 class Scene:
     """A mechanical system with k compliant contacts.
 
@@ -131,7 +143,7 @@ class Scene:
         self.coordinates = tuple(coordinates)
         self.contacts = tuple(contacts)
         self.accelerations = dict(zip(self.coordinates, (sp.sympify(g) for g in accelerations)))
-        self.eps = eps if eps is not None else sp.Symbol("epsilon", positive=True)
+        self.eps = _check_eps(eps)
         self.at = dict(at or {})
         self.presentation = dict(presentation or {})
         self._stage_cache: dict = {}
