@@ -16,7 +16,9 @@ from functools import cached_property
 
 import sympy as sp
 
+from .algebra import normalize
 from .errors import ContactsymError
+from .fast import on_piece
 from .scene import t
 
 __all__ = ["Regularized", "ReducedSystem"]
@@ -150,13 +152,20 @@ class ReducedSystem:
 
     @cached_property
     def coordinates(self) -> tuple:
-        """Plain symbols of the coordinates that the contacts leave free."""
+        """Plain symbols of the coordinates that the contacts leave free to move."""
         fixed = set(self.scene.manifold)
-        plain = [self.scene._plain(q) for q in self.scene.coordinates]
-        return tuple(q for q in plain if q not in fixed)
+        plain = [(self.scene._plain(q), self.scene._plain(sp.diff(q, t))) for q in self.scene.coordinates]
+        return tuple(q for q, rate in plain if q not in fixed and rate not in fixed)
 
     @cached_property
     def accelerations(self) -> dict:
-        scene = self.scene
-        by_plain = {scene._plain(q): g for q, g in scene.accelerations.items()}
-        return {q: sp.cancel(scene.freeze(by_plain[q]).subs(self.reactions)) for q in self.coordinates}
+        """Accelerations on the branch's piece (|N_j| = s N_j there) with N = u*."""
+        scene, fast = self.scene, self.scene.fast_subsystem()
+        to_u = dict(zip(scene.reactions, fast.u))
+        u_star = dict(zip(fast.u, self.branch.u_star))
+        accelerations = {}
+        for q, g in scene.accelerations.items():
+            if scene._plain(q) in self.coordinates:
+                on_piece_g = on_piece(scene.freeze(g).subs(to_u), fast.switching, self.branch.signs, fast.u)
+                accelerations[scene._plain(q)] = sp.cancel(normalize(on_piece_g.subs(u_star)))
+        return accelerations

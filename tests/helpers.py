@@ -1,0 +1,40 @@
+"""Shared numerical witnesses for the tests: eigenvalues of (4.5), random samples."""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+
+def fast_matrix(A, Phi, Psi) -> np.ndarray:
+    """The linearization (4.5) [[Psi A, Phi], [A, 0]] as a float array."""
+    A = np.asarray(A, dtype=float)
+    k = A.shape[0]
+    Psi, Phi = np.diag(np.atleast_1d(Psi).astype(float)), np.diag(np.atleast_1d(Phi).astype(float))
+    return np.block([[Psi @ A, Phi], [A, np.zeros((k, k))]])
+
+
+def max_real_part(A, Phi, Psi) -> float:
+    """Largest real part of the eigenvalues of (4.5)."""
+    return float(np.max(np.linalg.eigvals(fast_matrix(A, Phi, Psi)).real))
+
+
+def numeric(expr, values: dict) -> float:
+    """Float value of a SymPy expression at a substitution."""
+    return float(sp.N(sp.sympify(expr).subs(values)))
+
+
+def truth(boolean, values: dict) -> bool:
+    """Truth value of a SymPy Boolean/Relational at numeric values."""
+    value = sp.sympify(boolean).subs(values)
+    if value in (sp.true, sp.false):
+        return bool(value)
+    return bool(sp.simplify(value))
+
+
+def same(a, b) -> bool:
+    """Exact identity of two expressions (or matrices)."""
+    difference = sp.expand(sp.sympify(a) - sp.sympify(b))
+    if isinstance(difference, sp.MatrixBase):
+        return difference.is_zero_matrix
+    return difference == 0
