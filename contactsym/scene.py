@@ -379,8 +379,12 @@ class Scene:
         from .algebra import reduce_signs
 
         expr = sp.sympify(expr)
-        if not self.presentation:
+        if not self.presentation or expr in (sp.true, sp.false):
             return expr
+        if isinstance(expr, sp.core.relational.Relational):
+            return expr.func(self.present(expr.lhs), self.present(expr.rhs))
+        if isinstance(expr, sp.logic.boolalg.BooleanFunction):
+            return expr.func(*[self.present(arg) for arg in expr.args])
         replaced = expr.subs(self.presentation)
         if isinstance(replaced, sp.MatrixBase):
             return replaced.applyfunc(lambda e: reduce_signs(sp.cancel(sp.expand(e))))

@@ -88,13 +88,15 @@ class Stability:
         diagonal = [A[i, i] for i in range(self.k)]
         if self.k == 1:
             return _gt(A[0]), sp.Lt(A[0], 0), sp.false
-        unstable = sp.Or(sp.Lt(det, 0), sp.And(*[sp.Lt(a, 0) for a in diagonal]))
         if self.k == 2:
+            # Prop. 6, with its boundary: a11, a22 <= 0 (not both 0 when det A > 0) makes p_3 <= 0
+            unstable = sp.Or(sp.Lt(det, 0), sp.And(*[sp.Le(a, 0) for a in diagonal]))
             coupling = normalize(A[0, 1] * A[1, 0])
             stable = sp.And(*[_gt(a) for a in diagonal], _gt(det), sp.Ge(coupling, 0))
-            not_unstable = sp.Or(*[sp.Ge(a, 0) for a in diagonal])
+            not_unstable = sp.Or(*[_gt(a) for a in diagonal])
             not_stable = sp.Or(*[sp.Le(a, 0) for a in diagonal], sp.Lt(coupling, 0))
             return stable, unstable, sp.And(_gt(det), not_unstable, not_stable)
+        unstable = sp.Or(sp.Lt(det, 0), sp.And(*[sp.Lt(a, 0) for a in diagonal]))
         symmetric = [sp.Eq(A[i, j], A[j, i]) for i in range(self.k) for j in range(i) if sp.expand(A[i, j] - A[j, i])]
         leading = [_gt(normalize(A[:m, :m].det(method="berkowitz"))) for m in range(1, self.k + 1)]
         return sp.And(*symmetric, *leading), unstable, None

@@ -76,8 +76,8 @@ def test_case_y1_plus_y2_zero_has_slopes_2_pm_mu_minus_3_7():
     values = {phi: 0.6, mu1: 1.3, mu2: 0.4, X1: 0.0, X2: 1.0, Y1: 0.8, Y2: -0.8}
     corner = 0.8 / math.sin(0.6)
     tan = math.tan(0.6)
-    left = (numeric(fast.f[0], {**values, u: corner - 1}) - numeric(fast.f[0], {**values, u: corner - 2}))
-    right = (numeric(fast.f[0], {**values, u: corner + 2}) - numeric(fast.f[0], {**values, u: corner + 1}))
+    left = numeric(fast.f[0], {**values, u: corner - 1}) - numeric(fast.f[0], {**values, u: corner - 2})
+    right = numeric(fast.f[0], {**values, u: corner + 2}) - numeric(fast.f[0], {**values, u: corner + 1})
     minus = (1.3 - 0.4) * tan
     assert math.isclose(left, 2 - minus) and math.isclose(right, 2 + minus)
     assert not math.isclose(left, 2 - (1.3 + 0.4) * tan)

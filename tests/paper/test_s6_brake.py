@@ -1,0 +1,103 @@
+"""§6: a disc braked by two pads (Fig. 2), (6.1)-(6.4) and the squeal frequency omega."""
+
+import math
+
+import numpy as np
+import sympy as sp
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+
+import contactsym as cs
+from tests.helpers import fast_matrix, max_real_part, same, truth
+
+scene = cs.scene("brake")
+fast = scene.fast_subsystem()
+u1, u2 = fast.u
+m, mu, alpha = sp.symbols("m mu alpha", positive=True)
+F1, F2 = sp.symbols("F_1 F_2", real=True)
+lin = scene.linearization()
+stab = scene.stability()
+Phi1, Phi2 = lin.Phi
+Psi1, Psi2 = lin.Psi
+Phi, Psi = sp.symbols("Phi Psi", negative=True)
+
+
+def test_equations_along_the_normals_are_6_1():
+    # at rest on the pads (N_j > 0): m q1'' = N1 + N2 (mu sin a - cos a) + F1, m q2'' = N2 - N1 (mu sin a + cos a) + F2
+    f = scene.present(fast.piece((1, 1)))
+    assert same(m * f[0], u1 + u2 * (mu * sp.sin(alpha) - sp.cos(alpha)) + F1)
+    assert same(m * f[1], u2 - u1 * (mu * sp.sin(alpha) + sp.cos(alpha)) + F2)
+
+
+def test_pads_only_push_so_one_sign_pattern_is_enumerated():
+    assert scene.sign_patterns() == [(1, 1)]
+    assert len(scene.equilibria()) == 1
+
+
+def test_matrix_is_6_2():
+    printed = sp.Matrix([[1, mu * sp.sin(alpha) - sp.cos(alpha)], [-mu * sp.sin(alpha) - sp.cos(alpha), 1]]) / m
+    assert same(lin.A, printed)
+    assert same(lin.det_A, (1 + mu**2) * sp.sin(alpha) ** 2 / m**2)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(0.05, 3.09), st.floats(0, 3), st.floats(0.1, 10))
+def test_robust_stability_is_6_3_with_equality_allowed(a, mu_value, m_value):
+    bound = abs(1 / math.tan(a))
+    assume(abs(mu_value - bound) > 1e-9)
+    values = {alpha: a, mu: mu_value, m: m_value}
+    assert truth(stab.robustly_stable, values) == (mu_value < bound)
+    assert truth(stab.law_dependent, values) == (mu_value > bound)
+    assert stab.robustly_unstable == sp.false
+
+
+def test_6_3_boundary_mu_equal_cot_alpha_is_stable_for_every_sampled_law():
+    rng = np.random.default_rng(63)
+    for _ in range(300):
+        a = rng.uniform(0.1, 1.5)
+        A = np.array([[1, 1 / math.tan(a) * math.sin(a) - math.cos(a)], [-2 * math.cos(a), 1]])
+        Phi_values, Psi_values = -np.exp(rng.normal(0, 2, 2)), -np.exp(rng.normal(0, 2, 2))
+        assert max_real_part(A, Phi_values, Psi_values) < 0
+    values = {alpha: sp.pi / 3, mu: sp.cot(sp.pi / 3), m: 1}
+    assert truth(stab.robustly_stable, values)  # mu = |cot alpha| is inside (4.4)
+
+
+right_angle = {alpha: sp.pi / 2, Phi1: Phi, Phi2: Phi, Psi1: Psi, Psi2: Psi}
+
+
+def test_hopf_condition_is_6_4_with_the_mass():
+    # Delta_3 = -4 Phi Psi^2 (1 + mu^2) (m mu^2 Phi + (1 + mu^2) Psi^2) / m^5: stable iff
+    # -m mu^2 Phi < Psi^2 (1 + mu^2); the print has m = 1.
+    delta3 = sp.factor(stab.hurwitz[-1].subs(right_angle))
+    assert same(delta3, -4 * Phi * Psi**2 * (1 + mu**2) * (m * mu**2 * Phi + (1 + mu**2) * Psi**2) / m**5)
+    for c in stab.hurwitz[:-1]:  # the first group of (4.7) holds for every law
+        assert sp.factor(c.subs(right_angle)).is_positive
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(0.05, 3), st.floats(0.1, 10), st.floats(-10, -0.01), st.floats(-10, -0.01))
+def test_6_4_agrees_with_eigenvalues(mu_value, m_value, phi_value, psi_value):
+    margin = psi_value**2 * (1 + mu_value**2) + m_value * mu_value**2 * phi_value
+    assume(abs(margin) > 1e-6 * (psi_value**2 * (1 + mu_value**2)))
+    A = np.array([[1, mu_value], [-mu_value, 1]]) / m_value
+    stable = max_real_part(A, [phi_value] * 2, [psi_value] * 2) < 0
+    assert stable == (margin > 0)
+
+
+def test_hopf_frequency_on_the_line_is_omega_over_m():
+    omega = sp.factor(stab.hopf_frequency.subs(right_angle))
+    on_line = {Phi: -(1 + mu**2) * Psi**2 / (m * mu**2)}
+    printed_over_m = -(mu**2 + 1) * Psi / (mu * m)
+    assert same(sp.sqrt(sp.factor(omega.subs(on_line) ** 2)), sp.Abs(printed_over_m))
+    rng = np.random.default_rng(6)
+    for _ in range(20):
+        mu_v, m_v, psi_v = rng.uniform(0.2, 3), rng.uniform(0.2, 5), -rng.uniform(0.1, 5)
+        phi_v = -(1 + mu_v**2) * psi_v**2 / (m_v * mu_v**2)
+        A = np.array([[1, mu_v], [-mu_v, 1]]) / m_v
+        eigenvalues = np.linalg.eigvals(fast_matrix(A, [phi_v] * 2, [psi_v] * 2))
+        critical = eigenvalues[np.argmax(eigenvalues.real)]
+        expected = -(1 + mu_v**2) * psi_v / (mu_v * m_v)
+        assert abs(critical.real) < 1e-8 * expected
+        assert math.isclose(abs(critical.imag), expected, rel_tol=1e-9)
+        symbolic = float(omega.subs({mu: mu_v, m: m_v, Psi: psi_v, Phi: phi_v}))
+        assert math.isclose(symbolic, expected, rel_tol=1e-9)
