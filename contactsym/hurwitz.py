@@ -70,7 +70,14 @@ def hurwitz_minors(poly: sp.Poly) -> list[sp.Expr]:
     return [m.xreplace(values) for m in _generic_minors(poly.degree())]
 
 
-def lienard_chipart(poly: sp.Poly) -> list[sp.Expr]:
+def _lienard_chipart_parts(poly: sp.Poly, minors: list[sp.Expr]) -> tuple[list, list]:
+    """(coefficients that are not positive numbers, [Delta_(n-1), Delta_(n-3), ...] down to Delta_2)."""
+    n = poly.degree()
+    coefficients = [c for c in _coefficients(poly) if not (c.is_number and c > 0)]
+    return coefficients, [minors[m - 1] for m in range(n - 1, 1, -2)]
+
+
+def lienard_chipart(poly: sp.Poly, minors: list[sp.Expr] | None = None) -> list[sp.Expr]:
     """Expressions that are all > 0 exactly when ``poly`` is Hurwitz stable.
 
     The leading coefficient must be positive; coefficients that are positive numbers
@@ -82,11 +89,8 @@ def lienard_chipart(poly: sp.Poly) -> list[sp.Expr]:
     >>> lienard_chipart(sp.Poly(x**3 + a*x**2 + b*x + c, x))
     [a, b, c, a*b - c]
     """
-    coefficients = _coefficients(poly)
-    minors = hurwitz_minors(poly)
-    n = poly.degree()
-    chosen = [minors[m - 1] for m in range(n - 1, 1, -2)]
-    return [c for c in coefficients if not (c.is_number and c > 0)] + chosen
+    coefficients, chosen = _lienard_chipart_parts(poly, minors or hurwitz_minors(poly))
+    return coefficients + chosen
 
 
 @cache
@@ -140,13 +144,22 @@ class Hurwitz:
         return hurwitz_minors(self.poly)
 
     @cached_property
-    def conditions(self) -> list[sp.Expr]:
-        return lienard_chipart(self.poly)
+    def _parts(self) -> tuple[list, list]:
+        return _lienard_chipart_parts(self.poly, self.minors)
 
     @cached_property
-    def hopf_minor(self) -> sp.Expr:
-        """Delta_(n-1): its zero set, with the rest positive, is the Hopf set."""
-        return self.minors[-2] if self.poly.degree() > 1 else self.minors[0]
+    def conditions(self) -> list[sp.Expr]:
+        coefficients, chosen = self._parts
+        return coefficients + chosen
+
+    @cached_property
+    def hopf_set(self) -> sp.Basic:
+        """Delta_(n-1) = 0 with the other Liénard–Chipart conditions positive (degree >= 3)."""
+        coefficients, chosen = self._parts
+        if not chosen:
+            return sp.false
+        others = coefficients + chosen[1:]
+        return sp.And(sp.Eq(chosen[0], 0), *[sp.Gt(c, 0) for c in others])
 
     @cached_property
     def omega_squared(self) -> sp.Expr | None:

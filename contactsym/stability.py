@@ -124,9 +124,7 @@ class Stability:
     def hopf(self) -> sp.Basic:
         if self.k == 1:
             return sp.false  # p_1 = -a Psi and p_0 = -a Phi vanish together: no Hopf point
-        minor = self.poly.hopf_minor
-        others = [_gt(c) for c in self.hurwitz if c is not minor]
-        return sp.And(sp.Eq(minor, 0), *others)
+        return self.poly.hopf_set
 
     @cached_property
     def hopf_frequency(self) -> sp.Expr | None:

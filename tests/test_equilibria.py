@@ -20,7 +20,9 @@ N, N1, N2 = sp.symbols("N N_1 N_2", real=True)
 X, Y, a = sp.symbols("X Y a", real=True)
 
 
-@pytest.mark.parametrize("name, count", [("sliding-point", 1), ("painleve-klein-rod", 4), ("painleve-klein-guides", 4), ("brake", 1)])
+@pytest.mark.parametrize(
+    "name, count", [("sliding-point", 1), ("painleve-klein-rod", 4), ("painleve-klein-guides", 4), ("brake", 1)]
+)
 def test_one_branch_per_sign_pattern(name, count):
     s = cs.scene(name)
     eq = s.equilibria()
@@ -177,7 +179,9 @@ def test_painleve_klein_rod_equilibria_are_all_the_roots_of_f(data):
     assume(abs(kinks[0] - kinks[1]) > 1e-4)
     roots = piecewise_linear_roots(lambda value: f(values, [value])[0], kinks)
     assume(all(min(abs(r - kink) for kink in kinks) > 1e-4 for r in roots))
-    true_branches = [u_star(values)[0] for branch, u_star, _ in branches if condition_value(branch.condition, params, values)]
+    true_branches = [
+        u_star(values)[0] for branch, u_star, _ in branches if condition_value(branch.condition, params, values)
+    ]
     assert len(true_branches) == len(roots) <= 3
     for found, expected in zip(sorted(true_branches), sorted(roots)):
         assert abs(found - expected) < 1e-6 * (1 + abs(expected))
@@ -279,7 +283,9 @@ def test_painleve_klein_rod_has_zero_to_three_reactions(count, values):
     """Fold (0 or 2 reactions: the impact-type catastrophe when 0) and cusp (1 or 3), values (X1, X2, Y1, Y2, mu1, mu2, phi)."""
     s, params, f, branches = numeric("painleve-klein-rod")
     assert [str(p) for p in params] == ["X_1", "X_2", "Y_1", "Y_2", "mu_1", "mu_2", "phi"]
-    true_branches = [u_star(values)[0] for branch, u_star, _ in branches if condition_value(branch.condition, params, values)]
+    true_branches = [
+        u_star(values)[0] for branch, u_star, _ in branches if condition_value(branch.condition, params, values)
+    ]
     assert len(true_branches) == count
     roots = piecewise_linear_roots(lambda value: f(values, [value])[0], rod_kinks_and_slopes()[0](values))
     assert sorted(roots) == pytest.approx(sorted(true_branches))

@@ -283,7 +283,9 @@ def test_hopf_omega_squared_recovers_the_imaginary_pair(q, w):
     if n > 2:  # x^2 + w^2 alone has a zero lam-coefficient
         assert all(c > 0 for c in p.all_coeffs())
     H = Hurwitz(p)
-    assert H.hopf_minor == minors[n - 2]
+    assert H.minors == minors
+    # one imaginary pair, the other roots in the left half-plane: on the Hopf set (degree >= 3)
+    assert H.hopf_set == (sp.true if n > 2 else sp.false)
     assert H.omega_squared == w**2
     roots = np.roots([float(c) for c in p.all_coeffs()])
     assert np.isclose(np.abs(roots - 1j * float(w)).min(), 0, atol=1e-6)
@@ -295,8 +297,20 @@ def test_hurwitz_class():
     assert H.coefficients == [1, a, b]
     assert H.minors == [a, a * b]
     assert H.conditions == [a, b]
-    assert H.hopf_minor == a  # degree 2: Delta_1
+    assert H.hopf_set == sp.false  # degree 2: no Delta_(n-1) among the conditions
     assert H.omega_squared == b
     H1 = Hurwitz(sp.Poly(2 * x + a, x))
-    assert H1.hopf_minor == a
+    assert H1.hopf_set == sp.false
     assert H1.omega_squared is None
+
+
+def test_hurwitz_hopf_set_quartic():
+    a, b, c, d = sp.symbols("a b c d")
+    H = Hurwitz(sp.Poly(x**4 + a * x**3 + b * x**2 + c * x + d, x))
+    delta3 = a * b * c - a**2 * d - c**2
+    expected = sp.And(sp.Eq(delta3, 0), a > 0, b > 0, c > 0, d > 0)
+    assert sp.simplify_logic(H.hopf_set.xreplace({}) ^ expected) == sp.false or H.hopf_set == expected
+    # (x^2 + 1)(x^2 + x + 1) = x^4 + x^3 + 2 x^2 + x + 1 is on it; (x^2 + 1)(x^2 - x + 1) is not
+    assert H.hopf_set.xreplace({a: 1, b: 2, c: 1, d: 1}) == sp.true
+    assert H.hopf_set.xreplace({a: -1, b: 2, c: -1, d: 1}) == sp.false
+    assert H.hopf_set.xreplace({a: 1, b: 3, c: 1, d: 1}) == sp.false  # stable, Delta_3 > 0

@@ -34,7 +34,11 @@ def random_values(exprs, rng: random.Random) -> dict:
     for expr in exprs:
         for atom in sp.sympify(expr).atoms(sp.Derivative) | sp.sympify(expr).atoms(sp.core.function.AppliedUndef):
             values.setdefault(atom, sp.Float(rng.uniform(-2, 2)))
-    derivatives = dict(sorted(((a, b) for a, b in values.items() if isinstance(a, sp.Derivative)), key=lambda p: -p[0].derivative_count))
+    derivatives = dict(
+        sorted(
+            ((a, b) for a, b in values.items() if isinstance(a, sp.Derivative)), key=lambda p: -p[0].derivative_count
+        )
+    )
     functions = {a: b for a, b in values.items() if not isinstance(a, sp.Derivative)}
     symbols = {}
     for expr in exprs:
@@ -107,7 +111,9 @@ def test_loads_and_torques_on_a_rigid_body():
     C.set_vel(O, x.diff() * O.x + y.diff() * O.y)
     disc = RigidBody("disc", C, D, m, (inertia(D, 0, 0, J), C))
     loads = [(C, F * O.x - m * g * O.y), (D, M * O.z)]
-    ax, ay, ath = lagrangian_accelerations(Lagrangian(O, disc), [x, y, th], [cs.Contact(coordinate=y, reaction=N)], loads, O)
+    ax, ay, ath = lagrangian_accelerations(
+        Lagrangian(O, disc), [x, y, th], [cs.Contact(coordinate=y, reaction=N)], loads, O
+    )
     assert_same(ax, F / m)
     assert_same(ay, N / m - g)
     assert_same(ath, M / J)
@@ -120,7 +126,9 @@ def test_coulomb_friction_on_a_sliding_point():
     P = Point("P")
     P.set_vel(O, x.diff() * O.x + y.diff() * O.y)
     contact = cs.Contact(coordinate=y, reaction=N, friction=cs.Coulomb(mu, direction=O.x, point=P))
-    ax, ay = lagrangian_accelerations(Lagrangian(O, Particle("P", P, m)), [x, y], [contact], [(P, X * O.x + Y * O.y)], O)
+    ax, ay = lagrangian_accelerations(
+        Lagrangian(O, Particle("P", P, m)), [x, y], [contact], [(P, X * O.x + Y * O.y)], O
+    )
     assert_same(ax, (X - mu * sp.Abs(N)) / m)
     assert_same(ay, (Y + N) / m)
 
@@ -174,7 +182,13 @@ def rod_scene(inertia_value=J, coordinates=(x, y, th), at=ON_FLOOR, unilateral=T
     )
     options = {"at": at} if at is not None else {}
     return cs.Scene.from_lagrangian(
-        Lagrangian(O, rod), list(coordinates), [contact], loads=[(C, -m * g * O.y)], frame=O, name="painleve-rod", **options
+        Lagrangian(O, rod),
+        list(coordinates),
+        [contact],
+        loads=[(C, -m * g * O.y)],
+        frame=O,
+        name="painleve-rod",
+        **options,
     )
 
 
@@ -244,7 +258,9 @@ def test_rod_normal_force_coefficient_and_centripetal_term():
     assert simplified_zero(piece.subs(u, 0) - (-g + l * sp.sin(theta) * thetadot**2))
     # the other side of the switching surface: friction reverses with the sign of N
     other = fast.piece((-1,))[0]
-    assert simplified_zero(sp.diff(other, u) - (1 / m + l**2 * sp.cos(theta) * (sp.cos(theta) + mu * sp.sin(theta)) / J))
+    assert simplified_zero(
+        sp.diff(other, u) - (1 / m + l**2 * sp.cos(theta) * (sp.cos(theta) + mu * sp.sin(theta)) / J)
+    )
 
 
 def test_rod_coordinate_order_does_not_matter_when_the_gap_is_solvable():
@@ -358,7 +374,15 @@ def test_rod_reduced_system_is_the_classical_sliding_motion():
     rng = random.Random(3)
     checked = 0
     while checked < 8:
-        values = {theta: rng.uniform(0.05, 1.5), thetadot: rng.uniform(-2, 2), mu: rng.uniform(0, 3), m: rng.uniform(0.5, 2), l: rng.uniform(0.5, 2), J: rng.uniform(0.1, 2), g: rng.uniform(0.5, 10)}
+        values = {
+            theta: rng.uniform(0.05, 1.5),
+            thetadot: rng.uniform(-2, 2),
+            mu: rng.uniform(0, 3),
+            m: rng.uniform(0.5, 2),
+            l: rng.uniform(0.5, 2),
+            J: rng.uniform(0.1, 2),
+            g: rng.uniform(0.5, 10),
+        }
         if not reduced.condition.subs(values):
             continue
         checked += 1

@@ -21,7 +21,9 @@ X, Y, mu, c = sp.symbols("X Y mu c", real=True)
 
 def point_on_line(**options) -> cs.Scene:
     """The class docstring's example: x'' = X - mu|N|, y'' = N + Y, contact y = 0."""
-    return cs.Scene.from_accelerations([x, y], [X - mu * sp.Abs(N), N + Y], [cs.Contact(coordinate=y, reaction=N)], **options)
+    return cs.Scene.from_accelerations(
+        [x, y], [X - mu * sp.Abs(N), N + Y], [cs.Contact(coordinate=y, reaction=N)], **options
+    )
 
 
 # --- built-in scenes ----------------------------------------------------------------
@@ -205,7 +207,15 @@ def test_manifold_that_cannot_be_reached_says_to_pass_at():
 # --- bad input: clear errors ---------------------------------------------------------
 
 
-@pytest.mark.parametrize("typo, meant", [("break", "brake"), ("slidingpoint", "sliding-point"), ("painleve-klein-guide", "painleve-klein-guides"), ("painleve_klein_rod", "painleve-klein-rod")])
+@pytest.mark.parametrize(
+    "typo, meant",
+    [
+        ("break", "brake"),
+        ("slidingpoint", "sliding-point"),
+        ("painleve-klein-guide", "painleve-klein-guides"),
+        ("painleve_klein_rod", "painleve-klein-rod"),
+    ],
+)
 def test_unknown_scene_name_suggests_a_close_name(typo, meant):
     with pytest.raises(SceneError) as info:
         cs.scene(typo)
@@ -355,9 +365,7 @@ def test_sign_pattern_of_the_wrong_length(signs):
 
 
 @settings(max_examples=40, deadline=None)
-@given(
-    st.tuples(st.integers(-5, 5), st.integers(-5, 5)).filter(lambda pair: any(v not in (1, -1) for v in pair))
-)
+@given(st.tuples(st.integers(-5, 5), st.integers(-5, 5)).filter(lambda pair: any(v not in (1, -1) for v in pair)))
 def test_sign_pattern_with_values_other_than_plus_minus_one(signs):
     s = cs.scene("painleve-klein-guides")
     bad = next(value for value in signs if value not in (1, -1))
