@@ -35,7 +35,8 @@ class Branch:
 
 def _solve_piece(f: sp.Matrix, u: tuple, signs: tuple) -> list[tuple]:
     """Roots of one smooth piece: a linear solve when f is affine in u."""
-    if all(sp.Poly(fj, *u).total_degree() <= 1 for fj in f):
+    polys = [fj.as_poly(*u) for fj in f]
+    if all(p is not None and p.total_degree() <= 1 for p in polys):
         A, b = sp.linear_eq_to_matrix(list(f), list(u))
         det = normalize(A.det(method="berkowitz"))
         if det == 0:
@@ -45,13 +46,16 @@ def _solve_piece(f: sp.Matrix, u: tuple, signs: tuple) -> list[tuple]:
             )
         adjugate = A.adjugate(method="berkowitz")
         return [tuple(sp.factor_terms(sp.cancel(normalize(x) / det)) for x in adjugate * b)]
-    solutions = sp.solve(list(f), list(u), dict=True)
+    try:
+        solutions = sp.solve(list(f), list(u), dict=True)
+    except NotImplementedError:
+        solutions = []
     if not solutions:
         raise ContactsymError(
             f"sympy found no closed-form root of the piece {list(f)} with signs {signs}; "
             "solve f(u) = 0 numerically (contactsym.numerics)."
         )
-    return [tuple(sol[x] for x in u) for sol in solutions]
+    return [tuple(sol[x] for x in u) for sol in solutions if all(x in sol for x in u)]
 
 
 @dataclass(frozen=True, eq=False)

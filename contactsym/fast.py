@@ -20,9 +20,10 @@ __all__ = ["FastSubsystem", "switching_functions", "on_piece"]
 
 
 def _canonical(arg: sp.Expr, u) -> tuple[sp.Expr, int]:
-    """(sigma, c) with arg = c * sigma, sigma increasing in the first u it contains."""
+    """(sigma, c) with arg = c * sigma, c a nonzero number, sigma increasing in the first u it has."""
     first = next(x for x in u if arg.has(x))
-    return (-arg, -1) if sp.diff(arg, first).could_extract_minus_sign() else (arg, 1)
+    content, sigma = sp.expand(arg).as_content_primitive()  # |2 u - 2 w| and |u - w| switch together
+    return (-sigma, -content) if sp.diff(sigma, first).could_extract_minus_sign() else (sigma, content)
 
 
 def switching_functions(exprs, u) -> tuple[sp.Expr, ...]:
@@ -62,7 +63,7 @@ def on_piece(expr, switching, signs, u) -> sp.Expr:
         sigma, c = _canonical(atom.args[0], u)
         if sigma in by_sigma:
             s = by_sigma[sigma]
-            replacements[atom] = s * sigma if atom.func is sp.Abs else c * s
+            replacements[atom] = abs(c) * s * sigma if atom.func is sp.Abs else sp.sign(c) * s
     return sp.sympify(expr).xreplace(replacements)
 
 

@@ -157,10 +157,11 @@ class Law(Compliance):
     def _scaled(self) -> sp.Expr:
         """N at q = eps^2 Q, q' = eps V in the limit eps -> 0 (the scaling (1.8))."""
         scaled = self.expr.subs({self.q: self.eps**2 * self.Q, self.qdot: self.eps * self.V})
-        scaled = sp.powsimp(sp.expand(sp.expand_power_base(scaled, force=True)), force=True)
+        scaled = sp.expand(scaled)  # eps > 0: positive powers of eps leave the bases by themselves
         if self.eps in scaled.free_symbols:
             scaled = sp.limit(scaled, self.eps, 0, "+")
-        if scaled.has(sp.oo, sp.zoo, sp.nan) or self.eps in scaled.free_symbols:
+        infinite = scaled.has(sp.oo, sp.S.NegativeInfinity, sp.zoo, sp.nan, sp.DiracDelta)
+        if infinite or self.eps in scaled.free_symbols:
             raise ComplianceError(
                 f"the law N = {self.expr} is not scaled as (1.8): N(eps^2 Q, eps V) must have a finite "
                 "limit as eps -> 0; write stiffness/eps**2 and damping/eps."
@@ -184,11 +185,6 @@ class Law(Compliance):
                 )
             )
             raise ComplianceError(f"(1.5) requires {condition}, but {name} = {value} {verdict}; {why}{hint}.")
-        if self.Phi_QV.subs({self.Q: 0, self.V: 0}).is_zero:
-            raise ComplianceError(
-                "(1.5) requires dN(0,0)/dq != 0: the stiffness vanishes at zero deformation; "
-                "pass check=False for laws such as Hertz contact that are used only under load."
-            )
 
     def _Q_of(self, u: sp.Symbol, v: sp.Symbol) -> sp.Expr:
         solutions = sp.solve(sp.Eq(self.scaled.subs(self.V, v), u), self.Q)

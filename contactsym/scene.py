@@ -79,9 +79,10 @@ def _solve_linear(equations: list[sp.Expr], candidates: list[sp.Symbol]) -> dict
     equations = [e for e in (sp.expand(e) for e in equations) if e != 0]
     for size in range(1, len(equations) + 1):
         for chosen in itertools.combinations(candidates, size):
-            if not all(sp.Poly(e, *chosen).total_degree() <= 1 for e in equations if e.has(*chosen)):
+            polys = [e.as_poly(*chosen) for e in equations]
+            if any(p is None or p.total_degree() > 1 for p in polys):
                 continue
-            if any(c.free_symbols & set(chosen) for e in equations for c in sp.Poly(e, *chosen).coeffs()):
+            if any(c.free_symbols & set(chosen) for p in polys for c in p.coeffs()):
                 continue
             solutions = sp.linsolve(equations, list(chosen))
             if not isinstance(solutions, sp.FiniteSet) or len(solutions) != 1:
@@ -135,6 +136,8 @@ class Scene:
         parameters=None,
         at: dict | None = None,
         presentation: dict | None = None,
+        positive: tuple = (),
+        solve_for: sp.Symbol | None = None,
         description: str = "",
         eps: sp.Symbol | None = None,
     ):
@@ -146,6 +149,10 @@ class Scene:
         self.eps = _check_eps(eps)
         self.at = dict(at or {})
         self.presentation = dict(presentation or {})
+        #: Expressions positive throughout the scene's domain (e.g. sin(alpha), 0 < alpha < pi).
+        self.positive_expressions = tuple(self._plain(e) for e in positive)
+        #: The parameter that closed-form regions are solved for, where possible.
+        self.solve_for = solve_for
         self._stage_cache: dict = {}
         self._check(accelerations, parameters)
 
@@ -186,6 +193,11 @@ class Scene:
             if not isinstance(law.direction, dict):
                 raise SceneError("with from_accelerations, give a friction direction as {coordinate: coefficient}.")
             for coordinate, coefficient in law.direction.items():
+                if coordinate not in coordinates:
+                    raise SceneError(
+                        f"the friction direction names {coordinate}, which is not among the coordinates "
+                        f"{list(coordinates)}; use one of them."
+                    )
                 index = list(coordinates).index(coordinate)
                 slip = sp.diff(coordinate, t)
                 accelerations[index] -= law.magnitude(contact.reaction, slip) * coefficient
@@ -205,6 +217,12 @@ class Scene:
     def _check(self, accelerations, parameters) -> None:
         if not self.contacts:
             raise SceneError("a scene needs at least one Contact.")
+        for contact in self.contacts:
+            q = contact.coordinate
+            if isinstance(q, sp.core.function.AppliedUndef) and q not in self.coordinates:
+                raise SceneError(
+                    f"contact coordinate {q} is not among the coordinates {list(self.coordinates)}; add it."
+                )
         if len(self.accelerations) != len(self.coordinates):
             raise SceneError("give each coordinate exactly one acceleration.")
         reactions = {c.reaction for c in self.contacts}
@@ -312,7 +330,7 @@ class Scene:
                 f"{len(switching)} switching functions {list(switching)}; give one sign (+1 or -1) each."
             )
         for value, s in zip(signs, switching):
-            if value not in (1, -1):
+            if isinstance(value, bool) or value not in (1, -1):
                 raise SignPatternError(f"sign {value!r} for {s} must be +1 or -1.")
             if self.fixed_signs.get(s, value) != value:
                 raise SignPatternError(f"{s} > 0 on the unilateral contact; its sign must be +1.")
@@ -356,6 +374,12 @@ class Scene:
         from .stability import Stability
 
         return self._stage(("stability", signs and tuple(signs)), lambda: Stability(self.linearization(signs)))
+
+    def regions(self, signs=None) -> dict:
+        """Named closed-form regions: stable / unstable for every law, law-dependent, Hopf line."""
+        from .regions import scene_regions
+
+        return self._stage(("regions", signs and tuple(signs)), lambda: scene_regions(self, signs))
 
     def reduced_system(self, signs=None):
         """The comparison system (2.2): slow motion with reactions from f(u*) = 0."""

@@ -258,16 +258,14 @@ def test_nonlinear_piece_without_closed_form_roots_says_so():
     assert "no closed-form root" in message and "numerically" in message
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="library bug: equilibria._solve_piece calls sp.Poly(f_j, u) to test for linearity, which raises sympy "
-    "PolynomialError ('exp(u) contains an element of the set of generators') for a non-polynomial f, instead of "
-    "falling back to sp.solve / the ContactsymError that says to solve numerically",
-)
-def test_non_polynomial_piece_says_so():
+def test_non_polynomial_piece_is_solved_in_closed_form_when_sympy_can():
     s = cs.Scene.from_accelerations([x, y], [X, N + sp.exp(N) + a], [cs.Contact(coordinate=y, reaction=N)])
-    with pytest.raises(ContactsymError, match="numerically"):
-        s.equilibria().branches  # noqa: B018
+    (branch,) = s.equilibria().branches
+    f = s.fast_subsystem().f[0]
+    for a_value in (-3, 0.5, 2):
+        u_star = complex(branch.u_star[0].subs(a, a_value))
+        assert abs(u_star.imag) < 1e-12
+        assert abs(float(f.subs({s.fast_subsystem().u[0]: u_star.real, a: a_value}))) < 1e-9
 
 
 @pytest.mark.parametrize(

@@ -201,12 +201,6 @@ def test_on_piece_evaluates_like_the_expression(terms, point):
     assert piece.subs(at) == expr.subs(at)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="library gap: switching_functions canonicalizes only the sign of an argument, so Abs(2*u - 2*w) "
-    "(sympy keeps it unevaluated) and Abs(u - w) give two switching functions for one switching surface: "
-    "sign patterns double, half of them inconsistent, and users must pass signs of length 2",
-)
 def test_scaled_copies_of_one_switching_surface_count_once():
     assert len(switching_functions([sp.Abs(2 * u1 - 2 * w) + sp.Abs(u1 - w)], [u1])) == 1
 

@@ -224,13 +224,6 @@ def test_law_scaled_as_eps_cubed_is_rejected():
         cs.Law(-k * q / eps**3 - d * qd / eps, q, qd, eps)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="library bug: Law._scaled tests scaled.has(sp.oo), which is False for -oo*sign(Q); laws that diverge "
-    "to -oo under (1.8) (-k*q/eps**3, -d*qdot/eps**2) pass the scaling check: with check=True the error blames "
-    "dN/dq (Phi = -oo*DiracDelta(_Q), or Phi = 0), with check=False -k*q/eps**3 raises NotImplementedError from "
-    "solve and -d*qdot/eps**2 is accepted with Psi = -oo*DiracDelta(v)",
-)
 @pytest.mark.parametrize("check", [True, False])
 @pytest.mark.parametrize("N", [-k * q / eps**3 - d * qd / eps, -k * q / eps**2 - d * qd / eps**2])
 def test_law_scaled_too_strongly_negative_divergence(N, check):

@@ -325,11 +325,6 @@ def test_coulomb_direction_must_be_a_dict_for_from_accelerations():
         cs.Scene.from_accelerations([x, y], [X, N + Y], [contact])
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="library bug: a Coulomb direction dict naming a coordinate that is not in the scene raises a bare "
-    "ValueError 'z(t) is not in list' (list.index) instead of a SceneError that says what to fix",
-)
 def test_coulomb_direction_on_an_unknown_coordinate():
     contact = cs.Contact(coordinate=y, reaction=N, friction=cs.Coulomb(mu, {z: 1}))
     with pytest.raises(SceneError, match=r"z\(t\)"):
@@ -409,11 +404,6 @@ def test_valid_sign_patterns_as_lists_and_sympy_integers():
     assert s.linearization(signs=(sp.Integer(1), sp.Integer(-1))).A == s.linearization(signs=(1, -1)).A
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="library bug: check_signs tests `value in (1, -1)`, so True (== 1) passes validation and the "
-    "linearization later fails with a TypeError (bool * Symbol) instead of a SignPatternError",
-)
 def test_boolean_sign_is_rejected():
     with pytest.raises(SignPatternError):
         cs.scene("painleve-klein-guides").linearization(signs=(True, 1)).A  # noqa: B018

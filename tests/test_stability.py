@@ -170,7 +170,7 @@ def as_float(A):
 
 
 @pytest.mark.parametrize("k", [1, 2, 3])
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=200, deadline=None)
 @given(data=st.data())
 def test_hurwitz_iff_eigenvalues_in_left_half_plane(k, data):
     _, stability = symbolic(k)
@@ -228,7 +228,7 @@ def test_proposition_7_spd_is_robustly_stable(A):
 
 
 def law_dependent_k2_matrices():
-    """Nonzero diagonal; biased towards det A > 0 with mixed or coupled entries."""
+    """General 2 x 2 matrices (half of them with a nonzero diagonal), and a_jj > 0 > a_12 a_21 ones."""
     general = st.one_of(general_matrices(2, nonzero_entries), general_matrices(2))
     positive = st.fractions(min_value=Fraction(1, 3), max_value=4, max_denominator=3).map(rational)
     coupled = st.builds(
@@ -292,15 +292,15 @@ def test_k2_zero_diagonal_boundary_is_robustly_unstable(A):
     stability = user_scene(A).stability()
     assert A.det() > 0 and A[0, 0] <= 0 and A[1, 1] <= 0
     P, S = law_search_k2(A)
-    top, _, _ = spectra(as_float(A), P, S)
-    assert (top > 0).all()  # numerically no law is stable
+    top, _, tol = spectra(as_float(A), P, S)
+    assert (top > -tol).all()  # numerically no law is stable
     assert stability.law_dependent == sp.false
     assert stability.robustly_unstable == sp.true
     assert stability.undecided == sp.false
 
 
 def test_k2_p3_nonpositive_means_unstable_for_every_law():
-    """The reason behind the xfail above, checked exactly on the characteristic polynomial."""
+    """The reason behind the test above, checked exactly on the characteristic polynomial."""
     A = sp.Matrix([[0, 1], [-1, -1]])
     stability = user_scene(A).stability()
     p3 = stability.poly.coefficients[1]
@@ -392,8 +392,9 @@ def test_hopf_set_and_frequency_k2(data):
     below = spectra(as_float(A), [float(P) * 0.9] * 2, [float(S)] * 2)[0][0]
     above = spectra(as_float(A), [float(P) * 1.1] * 2, [float(S)] * 2)[0][0]
     assert below < 0 < above
-    assert not on_hopf_set(stability, values_for(2, A, [-P * 2, -P], [-S, -S]))
-    assert not truth(stability.hopf, values_for(2, A, [-P * 2, -P], [-S, -S]))
+    off = values_for(2, A, [-P * 11 / 10] * 2, [-S, -S])  # Delta_3 is linear in P on this line: one zero
+    assert not on_hopf_set(stability, off)
+    assert not truth(stability.hopf, off)
 
 
 def hopf_point_k2():

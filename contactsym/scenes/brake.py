@@ -47,5 +47,7 @@ def build() -> Scene:
         frame=O,
         name="brake",
         presentation=presentation,
+        positive=(sp.sin(alpha),),  # 0 < alpha < pi
+        solve_for=mu,
         description="(6.1)-(6.4): disc braked by two pads at angle alpha",
     )

@@ -59,5 +59,6 @@ def build() -> Scene:
         at={h: l * sp.sin(phi)},
         name="painleve-klein-guides",
         presentation=presentation,
+        positive=(sp.sin(phi), sp.cos(phi)),  # 0 < phi < pi/2
         description="(5.1)-(5.10): Painleve-Klein system, rigid rod, deformable guides",
     )

@@ -45,5 +45,6 @@ def build() -> Scene:
         [Contact(coordinate=delta, reaction=R)],
         name="painleve-klein-rod",
         presentation=presentation,
+        positive=(sp.sin(phi), sp.cos(phi)),  # 0 < phi < pi/2
         description="(3.5)-(3.9): Painleve-Klein system, deformable rod, rigid guides",
     )
