@@ -188,6 +188,9 @@ class Law(Compliance):
 
     def _Q_of(self, u: sp.Symbol, v: sp.Symbol) -> sp.Expr:
         solutions = sp.solve(sp.Eq(self.scaled.subs(self.V, v), u), self.Q)
+        if len(solutions) > 1:  # keep the real branch for a compressive load u > 0 (e.g. Hertz contact)
+            load = sp.Dummy(positive=True)
+            solutions = [s for s in solutions if s.subs(u, load).is_real]
         if len(solutions) != 1:
             raise ComplianceError(
                 f"cannot invert u = N(Q, v) = {self.scaled} for the deformation (found {len(solutions)} "

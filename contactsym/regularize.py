@@ -37,7 +37,8 @@ class Regularized:
     X, Y : Matrix
         Right-hand sides; ``x' = eps X``, ``y' = Y``. The compliance law enters
         through its scaled form (exact for Kelvin–Voigt and other laws homogeneous in
-        the scaling (1.8)).
+        the scaling (1.8)). For contacts given by gap functions the coordinates that
+        the gaps fix are put on the contact manifold, which holds to O(eps).
 
     Examples
     --------
@@ -61,8 +62,8 @@ class Regularized:
 
     @cached_property
     def slow_coordinates(self) -> tuple:
-        """Coordinates that are not contact coordinates."""
-        return tuple(q for q in self.scene.coordinates if q not in self.scene.gaps)
+        """Coordinates that rigid contact leaves free; the others are fixed by (u, v) to O(eps)."""
+        return self.scene.free_coordinates
 
     @cached_property
     def _deformed(self) -> dict:
@@ -82,7 +83,8 @@ class Regularized:
         rates = {d: v for d, v in self._deformed.items() if isinstance(d, sp.Derivative)}
         positions = {d: v for d, v in self._deformed.items() if not isinstance(d, sp.Derivative)}
         expr = expr.subs(rates).subs(positions).subs(dict(zip(self.scene.reactions, fast.u)))
-        return self.scene._plain(expr)
+        # coordinates eliminated by gap functions sit on the contact manifold up to O(eps)
+        return self.scene.freeze(expr)
 
     @cached_property
     def x(self) -> sp.Matrix:
@@ -153,9 +155,7 @@ class ReducedSystem:
     @cached_property
     def coordinates(self) -> tuple:
         """Plain symbols of the coordinates that the contacts leave free to move."""
-        fixed = set(self.scene.manifold)
-        plain = [(self.scene._plain(q), self.scene._plain(sp.diff(q, t))) for q in self.scene.coordinates]
-        return tuple(q for q, rate in plain if q not in fixed and rate not in fixed)
+        return tuple(self.scene._plain(q) for q in self.scene.free_coordinates)
 
     @cached_property
     def accelerations(self) -> dict:

@@ -292,11 +292,21 @@ class Scene:
                 "pass at={...} giving coordinates or parameters at contact."
             )
         rates = [self._plain(sp.diff(g, t)).subs(at) for g in self.gaps]
-        velocities = [self.frozen_symbols[sp.diff(q, t)] for q in reversed(self.coordinates)]
+        # eliminate first the rates of the coordinates whose positions the gaps fixed
+        order = sorted(reversed(self.coordinates), key=lambda q: self.frozen_symbols[q] not in at)
+        velocities = [self.frozen_symbols[sp.diff(q, t)] for q in order]
         at.update(_solve_linear(rates, velocities))
         if any(sp.expand(r.subs(at)) != 0 for r in rates):
             raise SceneError("the contact rates g_j' cannot all vanish: the contacts are redundant or inconsistent.")
         return at
+
+    @cached_property
+    def free_coordinates(self) -> tuple:
+        """The coordinates (dynamicsymbols) that rigid contact leaves free to move."""
+        fixed = set(self.manifold)
+        return tuple(
+            q for q in self.coordinates if self._plain(q) not in fixed and self._plain(sp.diff(q, t)) not in fixed
+        )
 
     def freeze(self, expr: sp.Expr) -> sp.Expr:
         """Evaluate on the contact manifold with the slow state frozen (plain symbols)."""

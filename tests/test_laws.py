@@ -243,12 +243,6 @@ def test_hertz_law_is_refused_by_the_sign_check():
     assert "check=False" in message
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="library bug: Law._scaled uses expand_power_base(force=True), which rewrites (-eps**2*Q)**(3/2) as "
-    "-I*eps**3*Q**(3/2) (wrong sign for Q < 0: -eps**3 instead of eps**3 at Q = -1), so with check=False the "
-    "Hertz law cannot be inverted ('found 3 solutions') instead of giving Phi(u) = -(3/2) c**(2/3) u**(1/3)",
-)
 def test_hertz_law_with_check_false_gives_phi_of_u():
     law = cs.Law(HERTZ, q, qd, eps, check=False)
     Phi, Psi = law.phi_psi(u, v, None)

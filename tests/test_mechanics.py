@@ -269,12 +269,6 @@ def test_rod_coordinate_order_does_not_matter_when_the_gap_is_solvable():
     assert simplified_zero(s.fast_subsystem().f[0] - rod().fast_subsystem().f[0])
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="library bug: Scene.manifold -> _solve_linear tries sp.Poly(gap, theta) for the gap y - l*sin(theta) "
-    "and raises sympy PolynomialError ('sin(theta) contains an element of the set of generators') when theta "
-    "is the last coordinate, instead of solving for y (or raising a SceneError that suggests at=)",
-)
 def test_rod_with_coordinates_x_y_theta_needs_no_at():
     s = rod_scene(coordinates=(x, y, th), at=None)
     assert simplified_zero(s.fast_subsystem().f[0] - rod().fast_subsystem().f[0])

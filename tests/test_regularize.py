@@ -125,13 +125,6 @@ def test_regularized_brake_is_the_fast_subsystem_at_eps_zero():
     assert numeric_difference(reg.Y.subs(reg.eps, 0), s.fast_subsystem().rhs) < 1e-9
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="library bug: Regularized only deforms contacts whose coordinate is a scene coordinate; for gap "
-    "functions (Lagrangian scenes) the gaps and rates are never written through (u, v, eps), so the fixed "
-    "coordinates y, phi stay among the slow variables x and Y(eps=0) keeps l*phidot**2*sin(phi) terms that the "
-    "fast subsystem (state frozen on the manifold, phidot = 0) does not have",
-)
 def test_regularized_guides_is_the_fast_subsystem_at_eps_zero():
     s = cs.scene("painleve-klein-guides")
     reg = s.regularized()
