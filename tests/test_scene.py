@@ -407,3 +407,19 @@ def test_valid_sign_patterns_as_lists_and_sympy_integers():
 def test_boolean_sign_is_rejected():
     with pytest.raises(SignPatternError):
         cs.scene("painleve-klein-guides").linearization(signs=(True, 1)).A  # noqa: B018
+
+
+def test_a_scene_pays_only_for_what_it_asks():
+    from contactsym.scenes import brake, painleve_klein_rod
+
+    rod = painleve_klein_rod.build()  # fresh: nothing cached
+    rod.fast_subsystem()
+    assert [key for key in rod._stage_cache if key != "fast"] == []
+    stability = rod.stability()
+    assert stability.poly.poly.degree() == 2  # k = 1: a quadratic, never a quartic
+    assert not any(isinstance(key, tuple) and key[0] == "equilibria" for key in rod._stage_cache)
+
+    disc = brake.build()
+    assert disc.sign_patterns() == [(1, 1)]  # unilateral pads: the only pattern
+    assert disc.linearization().sign_values == (1, 1)  # no sign symbols to carry
+    assert disc.equilibria().patterns == [(1, 1)]
