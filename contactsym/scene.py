@@ -111,7 +111,31 @@ class Scene:
     """A mechanical system with k compliant contacts.
 
     Build one with :meth:`from_accelerations` or :meth:`from_lagrangian`, or take a
-    built-in one with :func:`contactsym.scene`.
+    built-in one with :func:`contactsym.scene`. Treat a scene as immutable: each stage
+    (``fast_subsystem()``, ``linearization()``, ...) is computed on first request and cached.
+
+    Parameters
+    ----------
+    coordinates : sequence of dynamicsymbols
+        The generalized coordinates q.
+    accelerations : sequence of sympy expressions
+        q'' for each coordinate (1.4), in q, q', the reactions and parameters.
+    contacts : sequence of Contact
+    name, description : str
+        For listings and reports.
+    parameters : sequence of Symbol, optional
+        If given, every free symbol of the accelerations must be among them (catches typos).
+    at : dict, optional
+        Coordinates or parameters at rigid contact that the gaps do not fix by themselves
+        (e.g. ``{h: l*sin(phi)}`` for the guides of §5).
+    presentation : dict, optional
+        Substitutions into the variables a reader uses (kappa, v_j, mu_pm, ...).
+    positive : tuple, optional
+        Expressions positive in the scene's domain (e.g. ``sin(alpha)`` for 0 < alpha < pi).
+    solve_for : Symbol, optional
+        The parameter that closed-form regions are solved for where possible.
+    eps : Symbol or number, optional
+        The small parameter of (1.6); a positive symbol ``epsilon`` by default.
 
     Examples
     --------
