@@ -11,10 +11,11 @@ from __future__ import annotations
 
 import sympy as sp
 from sympy.physics.mechanics import Lagrangian as lagrangian_of
-from sympy.physics.mechanics import Point, ReferenceFrame, RigidBody, dynamicsymbols, inertia
+from sympy.physics.mechanics import RigidBody, dynamicsymbols, inertia
 
 from ..laws import Coulomb
 from ..scene import Contact, Scene
+from ._planar import planar_body
 
 
 def build() -> Scene:
@@ -22,19 +23,14 @@ def build() -> Scene:
     m, J, r, mu, alpha = sp.symbols("m J r mu alpha", positive=True)
     Fx, Fy = sp.symbols("F_x F_y", real=True)
     N1, N2 = sp.symbols("N_1 N_2", real=True)
-    O = ReferenceFrame("O")
-    disc = O.orientnew("D", "Axis", [theta, O.z])
-    origin = Point("O")
-    origin.set_vel(O, 0)
-    centre = origin.locatenew("C", x * O.x + y * O.y)
-    centre.set_vel(O, centre.pos_from(origin).dt(O))
+    O, disc, centre = planar_body(x, y, theta, "D")
     normals = [O.y, -sp.sin(alpha) * O.x - sp.cos(alpha) * O.y]  # n1 . n2 = -cos(alpha)
     contacts = []
     for j, (n, N) in enumerate(zip(normals, (N1, N2)), 1):
         spot = centre.locatenew(f"P_{j}", -r * n)
         spot.v2pt_theory(centre, O, disc)
         sliding = O.z.cross(n)  # surface velocity direction for a clockwise disc
-        gap = n.dot(centre.pos_from(origin))
+        gap = n.dot(x * O.x + y * O.y)
         contacts.append(Contact(coordinate=gap, reaction=N, friction=Coulomb(mu, sliding, spot), unilateral=True))
     body = RigidBody("disc", centre, disc, m, (inertia(disc, 0, 0, J), centre))
     F1, F2 = sp.symbols("F_1 F_2", real=True)

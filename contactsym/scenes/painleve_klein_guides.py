@@ -10,11 +10,12 @@ from __future__ import annotations
 
 import sympy as sp
 from sympy.physics.mechanics import Lagrangian as lagrangian_of
-from sympy.physics.mechanics import Particle, Point, ReferenceFrame, dynamicsymbols
+from sympy.physics.mechanics import Particle, dynamicsymbols
 
 from ..algebra import SignSymbol
 from ..laws import Coulomb
 from ..scene import Contact, Scene
+from ._planar import planar_body
 
 
 def build() -> Scene:
@@ -23,12 +24,7 @@ def build() -> Scene:
     mu1, mu2 = sp.symbols("mu_1 mu_2", positive=True)
     X, Y, M = sp.symbols("X Y M", real=True)
     N1, N2 = sp.symbols("N_1 N_2", real=True)
-    O = ReferenceFrame("O")
-    rod = O.orientnew("B", "Axis", [phi, O.z])
-    origin = Point("O")
-    origin.set_vel(O, 0)
-    centre = origin.locatenew("C", x * O.x + y * O.y)
-    centre.set_vel(O, centre.pos_from(origin).dt(O))
+    O, rod, centre = planar_body(x, y, phi)
     ends = []
     for name, side in (("P_1", 1), ("P_2", -1)):
         end = centre.locatenew(name, side * l * rod.x)
