@@ -32,6 +32,11 @@ class Branch:
     u_star: tuple
     condition: sp.Basic
 
+    def _repr_latex_(self) -> str:
+        from .latex import _repr_latex
+
+        return _repr_latex(self)
+
 
 def _solve_piece(f: sp.Matrix, u: tuple, signs: tuple) -> list[tuple]:
     """Roots of one smooth piece: a linear solve when f is affine in u."""
@@ -93,3 +98,8 @@ class Equilibria:
 
     def __len__(self) -> int:
         return len(self.branches)
+
+    def _repr_latex_(self) -> str:
+        from .latex import _repr_latex
+
+        return _repr_latex(self)

@@ -163,6 +163,6 @@ class FastSubsystem:
         return [sp.Eq(sp.Symbol(f"{x}'"), r) for x, r in zip(self.state, self.rhs)]
 
     def _repr_latex_(self) -> str:
-        from .latex import latex
+        from .latex import _repr_latex
 
-        return f"$\\displaystyle {latex(self)}$"
+        return _repr_latex(self)

@@ -131,6 +131,6 @@ class Linearization:
         return charpoly(self.A, self.Phi, self.Psi)
 
     def _repr_latex_(self) -> str:
-        from .latex import latex
+        from .latex import _repr_latex
 
-        return f"$\\displaystyle {latex(self)}$"
+        return _repr_latex(self)

@@ -109,6 +109,11 @@ class Regularized:
         du = [fast.Phi[j] * fast.v[j] + fast.Psi[j] * G[j] for j in range(self.scene.k)]
         return sp.Matrix(du + G)
 
+    def _repr_latex_(self) -> str:
+        from .latex import _repr_latex
+
+        return _repr_latex(self)
+
 
 @dataclass(frozen=True, eq=False)
 class ReducedSystem:
@@ -169,3 +174,8 @@ class ReducedSystem:
                 on_piece_g = on_piece(scene.freeze(g).subs(to_u), fast.switching, self.branch.signs, fast.u)
                 accelerations[scene._plain(q)] = sp.cancel(normalize(on_piece_g.subs(u_star)))
         return accelerations
+
+    def _repr_latex_(self) -> str:
+        from .latex import _repr_latex
+
+        return _repr_latex(self)

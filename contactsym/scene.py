@@ -452,6 +452,6 @@ class Scene:
         return f"<Scene '{self.name}': {len(self.coordinates)} coordinates, k = {self.k} contacts>"
 
     def _repr_latex_(self) -> str:
-        from .latex import latex
+        from .latex import _repr_latex
 
-        return f"$\\displaystyle {latex(self)}$"
+        return _repr_latex(self)

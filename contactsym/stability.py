@@ -172,6 +172,6 @@ class Stability:
         return self.k == 1 and self.linearization.fast.constant_laws
 
     def _repr_latex_(self) -> str:
-        from .latex import latex
+        from .latex import _repr_latex
 
-        return f"$\\displaystyle {latex(self)}$"
+        return _repr_latex(self)
