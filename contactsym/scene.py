@@ -415,6 +415,12 @@ class Scene:
 
         return self._stage(("regions", signs and tuple(signs)), lambda: scene_regions(self, signs))
 
+    def equilibrium_counts(self) -> dict:
+        """Named closed-form regions by the number of equilibria (see :mod:`contactsym.counts`)."""
+        from .counts import count_regions
+
+        return self._stage("counts", lambda: count_regions(self))
+
     def reduced_system(self, signs=None):
         """The comparison system (2.2): slow motion with reactions from f(u*) = 0."""
         from .regularize import ReducedSystem
