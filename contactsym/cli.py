@@ -1,18 +1,45 @@
-"""Command line: ``contactsym [show] [SCENE]``, ``contactsym list``."""
+"""Command line.
+
+``contactsym [show] [SCENE]``            the derivation chain of a scene, as text
+``contactsym list``                      the built-in scenes
+``contactsym conditions SCENE --format text|latex|json [--signs +1,-1]``
+``contactsym report [SCENE ...] --out DIR [--no-pdf]``
+                                         a LaTeX/PDF report per scene, figures and conditions.json
+
+Errors print one line to stderr and give a non-zero exit code: 2 for a bad command
+line (an unknown scene, a bad option), 1 for a failure while working (an unwritable
+directory, a pdflatex error).
+"""
 
 from __future__ import annotations
 
 import argparse
+import json
+import os
 import sys
+import tempfile
+import time
+from pathlib import Path
 
 import sympy as sp
 
-from .errors import ContactsymError
+from .errors import ContactsymError, SceneError, SignPatternError
 from .scenes import DEFAULT_SCENE, scene, scene_names
+
+__all__ = ["derivation_chain", "main"]
+
+#: Exit codes.
+USAGE, FAILURE = 2, 1
 
 
 def derivation_chain(name: str) -> str:
-    """The derivation chain of a scene, as plain text, stage by stage."""
+    """The derivation chain of a scene, as plain text, stage by stage.
+
+    Examples
+    --------
+    >>> print(derivation_chain("sliding-point").splitlines()[0])
+    scene sliding-point: (1.10)-(1.12): a point sliding on a rough line, Kelvin-Voigt contact
+    """
     s = scene(name)
     fast = s.fast_subsystem()
     lin = s.linearization()
@@ -45,25 +72,213 @@ def derivation_chain(name: str) -> str:
     return "\n".join(lines)
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="contactsym", description="Exact stability of frictional compliant contacts.")
-    sub = parser.add_subparsers(dest="command")
+# --- conditions -------------------------------------------------------------------------------
+
+
+def parse_signs(text: str) -> tuple[int, ...]:
+    """A sign pattern from the command line: ``+1,-1`` or ``+,-`` (no expression is evaluated).
+
+    Examples
+    --------
+    >>> parse_signs("+1,-1"), parse_signs("+ -"), parse_signs("1")
+    ((1, -1), (1, -1), (1,))
+    >>> parse_signs("1,x")
+    Traceback (most recent call last):
+    ...
+    contactsym.errors.SignPatternError: --signs: 'x' is not a sign; write e.g. --signs +1,-1.
+    """
+    values = {"+1": 1, "1": 1, "+": 1, "-1": -1, "-": -1}
+    tokens = text.replace(",", " ").split()
+    if not tokens:
+        raise SignPatternError("--signs is empty; write e.g. --signs +1,-1.")
+    for token in tokens:
+        if token not in values:
+            raise SignPatternError(f"--signs: '{token}' is not a sign; write e.g. --signs +1,-1.")
+    return tuple(values[token] for token in tokens)
+
+
+def conditions_text(data: dict) -> str:
+    """The conditions of :func:`contactsym.report.conditions` as plain text, in full."""
+    lines = [f"{data['scene']}: {data['description']}"]
+    if data.get("signs"):
+        lines.append(f"sign pattern {tuple(data['signs'])}")
+    lines.append("closed-form regions:")
+    for name, entry in data["regions"].items():
+        cite = ", ".join(entry.get("paper", []))
+        lines.append(f"  {name}: {entry['sympy']}" + (f"   {cite}" if cite else ""))
+    if data.get("equilibrium_counts"):
+        lines.append("number of equilibria:")
+        for name, entry in data["equilibrium_counts"].items():
+            cite = ", ".join(entry.get("paper", []))
+            lines.append(f"  {name}: {entry['sympy']}" + (f"   {cite}" if cite else ""))
+    lines.append("Routh-Hurwitz conditions (4.7), all > 0:")
+    for entry in data["hurwitz"]:
+        name = entry["name"].replace("\\", "").replace("{", "").replace("}", "")
+        lines.append(f"  {name} = {entry['sympy']}")
+    if data.get("hopf_frequency"):
+        lines.append(f"Hopf frequency omega (stretched time tau) = {data['hopf_frequency']['sympy']}")
+    return "\n".join(lines)
+
+
+def conditions_latex(data: dict) -> str:
+    r"""The conditions as a LaTeX fragment (amsmath ``align*``), one numbered line each.
+
+    Examples
+    --------
+    >>> from contactsym.report import conditions
+    >>> print(conditions_latex(conditions(scene("brake"))).splitlines()[2])
+    \text{stable for every law:} &\quad \mu \leq \left|{\cot{\left(\alpha \right)}}\right| \tag*{(4.4), (6.3)} \\
+    """
+    lines = [f"% contactsym conditions: {data['scene']}", r"\begin{align*}"]
+    rows = []
+    for name, entry in data["regions"].items():
+        rows.append((name, entry))
+    for name, entry in (data.get("equilibrium_counts") or {}).items():
+        rows.append((f"equilibria, {name}", entry))
+    for entry in data["hurwitz"]:
+        rows.append((None, {**entry, "latex": f"{entry['name']} = {entry['latex']}"}))
+    if data.get("hopf_frequency"):
+        rows.append((None, {**data["hopf_frequency"], "latex": r"\omega = " + data["hopf_frequency"]["latex"]}))
+    body = []
+    for name, entry in rows:
+        label = r"\text{" + name.replace("_", r"\_") + r":} " if name else ""
+        tag = r" \tag*{" + ", ".join(entry["paper"]) + "}" if entry.get("paper") else ""
+        body.append(f"{label}&\\quad {entry['latex']}{tag}")
+    lines.append(" \\\\\n".join(body) + " \\\\")
+    lines.append(r"\end{align*}")
+    return "\n".join(lines)
+
+
+# --- the command line ----------------------------------------------------------------------------
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse with one-line errors."""
+
+    def error(self, message: str):
+        self.exit(USAGE, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
+def _parser() -> argparse.ArgumentParser:
+    names = ", ".join(scene_names())
+    parser = _Parser(prog="contactsym", description="Exact stability of frictional compliant contacts.")
+    sub = parser.add_subparsers(dest="command", parser_class=_Parser)
     show = sub.add_parser("show", help="print the derivation chain of a scene")
-    show.add_argument("scene", nargs="?", default=DEFAULT_SCENE, help=f"one of {', '.join(scene_names())}")
+    show.add_argument("scene", nargs="?", default=DEFAULT_SCENE, help=f"one of {names}")
     sub.add_parser("list", help="list the built-in scenes")
-    args = parser.parse_args(argv)
+    cond = sub.add_parser("conditions", help="print a scene's stability conditions and regions")
+    cond.add_argument("scene", help=f"one of {names}")
+    cond.add_argument("--format", choices=("text", "latex", "json"), default="text", help="output format")
+    cond.add_argument("--signs", help="one sign pattern of the switching functions, e.g. +1,-1")
+    report = sub.add_parser("report", help="write a LaTeX/PDF report per scene, with figures and conditions.json")
+    report.add_argument("scenes", nargs="*", metavar="SCENE", help=f"scenes to report (default: all of {names})")
+    report.add_argument("--out", default="contactsym-report", help="output directory (default: contactsym-report)")
+    report.add_argument("--no-pdf", action="store_true", help="write report.tex but do not run pdflatex")
+    return parser
+
+
+def _progress(message: str) -> None:
+    print(f"contactsym: {message}", file=sys.stderr, flush=True)
+
+
+def _report(names: list[str], out: str, pdf: bool) -> int:
+    from .report import FigureSource, ReportError, conditions, summary_text, write_report
+
+    names = names or scene_names()
+    scenes = [scene(name) for name in names]  # unknown names fail before any work
+    root = Path(out)
     try:
-        if args.command == "list":
-            for name in scene_names():
-                print(f"{name:24s}{scene(name).description}")
-            return 0
-        name = getattr(args, "scene", DEFAULT_SCENE)
+        root.mkdir(parents=True, exist_ok=True)
+        probe = root / ".contactsym-write-test"
+        probe.write_text("")
+        probe.unlink()
+    except OSError as error:
+        raise ReportError(f"cannot write to --out {root}: {error.strerror or error}.") from error
+    summaries, started = [], time.perf_counter()
+    with tempfile.TemporaryDirectory(prefix="contactsym-figures-") as scratch:
+        figures = FigureSource(Path(scratch))
+        for index, s in enumerate(scenes, 1):
+            clock = time.perf_counter()
+
+            def say(step: str, index=index, name=s.name) -> None:
+                _progress(f"[{index}/{len(scenes)}] {name}: {step}")
+
+            result = write_report(s, root / s.name, pdf=pdf, figures=figures, progress=say)
+            for note in result.notes:
+                _progress(f"[{index}/{len(scenes)}] {s.name}: note: {note}")
+            made = ", ".join(p.name for p in (result.tex, result.pdf, result.conditions) if p is not None)
+            _progress(
+                f"[{index}/{len(scenes)}] {s.name}: wrote {made} and {len(result.figures)} figures "
+                f"in {time.perf_counter() - clock:.1f} s"
+            )
+            summaries.append(summary_text(conditions(s)))
+    print("\n\n".join(summaries))
+    print(f"\nreports in {root}/<scene>/ ({time.perf_counter() - started:.1f} s)")
+    return 0
+
+
+def _conditions(name: str, fmt: str, signs: str | None) -> int:
+    from .report import conditions
+
+    s = scene(name)
+    pattern = None if signs is None else s.check_signs(parse_signs(signs))
+    data = conditions(s, pattern)
+    if fmt == "json":
+        print(json.dumps(data, indent=2, ensure_ascii=False))
+    elif fmt == "latex":
+        print(conditions_latex(data))
+    else:
+        print(conditions_text(data))
+    return 0
+
+
+def _silence_stdout() -> None:
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):  # stdout without a file descriptor (tests)
+        pass
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the command line; returns the exit code (0 on success)."""
+    try:
+        args = _parser().parse_args(argv)
+    except SystemExit as stop:  # --help, or a usage error already printed in one line
+        return int(stop.code or 0)
+    try:
         with sp.evaluate(True):
-            print(derivation_chain(name))
-        return 0
+            code = _run(args)
+        sys.stdout.flush()
+        return code
+    except BrokenPipeError:  # the reader went away (contactsym ... | head): stop quietly
+        _silence_stdout()
+        return FAILURE
+    except (SceneError, SignPatternError) as error:
+        print(f"contactsym: error: {error}", file=sys.stderr)
+        return USAGE
     except ContactsymError as error:
         print(f"contactsym: error: {error}", file=sys.stderr)
-        return 2
+        return FAILURE
+    except OSError as error:
+        print(f"contactsym: error: {error.strerror or error}: {error.filename or ''}".rstrip(": "), file=sys.stderr)
+        return FAILURE
+    except KeyboardInterrupt:
+        print("contactsym: interrupted", file=sys.stderr)
+        return 130
+
+
+def _run(args) -> int:
+    if args.command == "list":
+        for name in scene_names():
+            print(f"{name:24s}{scene(name).description}")
+        return 0
+    if args.command == "report":
+        return _report(args.scenes, args.out, pdf=not args.no_pdf)
+    if args.command == "conditions":
+        return _conditions(args.scene, args.format, args.signs)
+    print(derivation_chain(getattr(args, "scene", DEFAULT_SCENE)))
+    return 0
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -328,6 +328,12 @@ def _unmatched(run: list[tuple[str, str]]) -> int | None:
     return stack[0] if stack else None
 
 
+def _depth(run: list[tuple[str, str]]) -> int:
+    """Brackets opened and not closed in ``run``."""
+    values = [value for kind, value in run if kind == "n"]
+    return sum(value in _OPEN for value in values) - sum(value in _CLOSE for value in values)
+
+
 def _math(run: list[tuple[str, str]]) -> str:
     parts = []
     for i, (kind, value) in enumerate(run):
@@ -346,11 +352,20 @@ def _render(run: list[tuple[str, str]]) -> str:
     cut = _unmatched(run)
     if cut is not None:
         return _render(run[:cut]) + run[cut][1] + _render(run[cut + 1 :])
-    start, end = 0, len(run)
+    start = 0
     while run[start][0] == "n" and (run[start][1].isspace() or run[start][1] in ",;."):
         start += 1
-    while run[end - 1][0] == "n" and (run[end - 1][1].isspace() or run[end - 1][1] in ",;."):
-        end -= 1
+    # after the last mathematics: keep numbers and brackets that close, up to a comma or semicolon
+    end = max(i for i, (kind, _) in enumerate(run) if kind == "m") + 1
+    depth = _depth(run[start:end])
+    for i in range(end, len(run)):
+        value = run[i][1]
+        if value in _CLOSE and depth > 0:
+            depth -= 1
+        elif not (value.isspace() or value[0].isdigit()):
+            break
+        if not value.isspace():
+            end = i + 1
     lead = "".join(value for _, value in run[:start])
     tail = "".join(value for _, value in run[end:])
     return lead + _math(run[start:end]) + tail

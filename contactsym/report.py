@@ -572,15 +572,21 @@ def _counts(scene) -> tuple[dict, str]:
 
 #: Paper numbers of count regions, by scene and a word in the region's name.
 COUNT_EQUATIONS = {
-    "painleve-klein-rod": (("unique", "3.8"), ("cusp", "3.9"), ("three", "3.9"), ("fold", "3.8"), ("none", "3.8")),
-    "painleve-klein-guides": (("unique", "5.8"), ("none", "5.10"), ("two", "5.10")),
+    "painleve-klein-rod": (
+        ("unique", ("3.8", "3.9")),
+        ("three", ("3.9",)),
+        ("cusp", ("3.9",)),
+        ("none", ("3.8",)),
+        ("fold", ("3.8",)),
+    ),
+    "painleve-klein-guides": (("unique", ("5.8",)), ("none", ("5.10",)), ("two", ("5.10",))),
 }
 
 
 def _count_tag(scene, name: str) -> tuple:
-    for word, number in COUNT_EQUATIONS.get(scene.name, ()):
+    for word, numbers in COUNT_EQUATIONS.get(scene.name, ()):
         if word in name.lower():
-            return (number,)
+            return numbers
     return ()
 
 
@@ -752,11 +758,11 @@ def _entry(expr, paper=(), note="") -> dict:
     return entry
 
 
-def conditions(scene) -> dict:
+def conditions(scene, signs=None) -> dict:
     """The scene's conditions as JSON-ready data: regions, Hurwitz conditions, A, branches.
 
     Each expression is given as SymPy text (``sympy``) and LaTeX (``latex``), with the
-    paper's equation numbers where it has them.
+    paper's equation numbers where it has them. ``signs`` selects one sign pattern.
 
     Examples
     --------
@@ -765,10 +771,11 @@ def conditions(scene) -> dict:
     >>> data["regions"]["stable for every law"]["sympy"], data["regions"]["stable for every law"]["paper"]
     ('mu <= Abs(cot(alpha))', ['(4.4)', '(6.3)'])
     """
-    st = scene.stability()
-    lin = scene.linearization()
+    st = scene.stability(signs)
+    lin = scene.linearization(signs)
     data = {
         "scene": scene.name,
+        "signs": None if signs is None else list(signs),
         "description": scene.description,
         "k": scene.k,
         "parameters": [
@@ -786,7 +793,7 @@ def conditions(scene) -> dict:
     }
     if scene.presentation:
         data["presentation"] = {sp.sstr(k): sp.sstr(v) for k, v in scene.presentation.items()}
-    for name, region in scene.regions().items():
+    for name, region in scene.regions(signs).items():
         data["regions"][name] = _entry(region.condition, *paper_equations(scene, name))
     for name, condition in zip(hurwitz_names(st), st.hurwitz):
         key = "coefficient" if name.startswith("p") else "hurwitz"
@@ -794,7 +801,7 @@ def conditions(scene) -> dict:
     if st.hopf_frequency is not None:
         data["hopf_frequency"] = _entry(st.hopf_frequency)
     try:
-        for branch in scene.equilibria().branches:
+        for branch in scene.equilibria(signs).branches:
             data["equilibria"].append(
                 {
                     "signs": list(branch.signs),

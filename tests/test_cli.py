@@ -1,0 +1,152 @@
+"""The command line, run in-process: files written, exit codes, one-line errors, JSON contents."""
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import contactsym as cs
+from contactsym.cli import main, parse_signs
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def one_line_error(err: str) -> str:
+    lines = [line for line in err.splitlines() if line.strip()]
+    assert len(lines) == 1, err
+    assert "error" in lines[0] and "Traceback" not in err
+    return lines[0]
+
+
+def test_list(capsys):
+    code, out, err = run(capsys, "list")
+    assert code == 0 and err == ""
+    assert [line.split()[0] for line in out.splitlines()] == cs.scene_names()
+
+
+def test_help_exits_zero(capsys):
+    code, out, _ = run(capsys, "report", "--help")
+    assert code == 0 and "--out" in out
+
+
+def test_conditions_json(capsys):
+    code, out, err = run(capsys, "conditions", "brake", "--format", "json")
+    assert code == 0, err
+    data = json.loads(out)
+    assert data["scene"] == "brake" and data["k"] == 2
+    stable = data["regions"]["stable for every law"]
+    assert stable["sympy"] == "mu <= Abs(cot(alpha))"
+    assert stable["paper"] == ["(4.4)", "(6.3)"]
+    assert data["regions"]["law-dependent"]["sympy"] == "mu > Abs(cot(alpha))"
+    assert [entry["name"] for entry in data["hurwitz"]] == ["p_{3}", "p_{2}", "p_{1}", "p_{0}", r"\Delta_{3}"]
+    assert data["A"]["paper"] == ["(4.3)", "(6.2)"]
+    assert "Phi_1" in data["hopf_frequency"]["sympy"]
+
+
+def test_conditions_text_and_latex(capsys):
+    code, out, _ = run(capsys, "conditions", "painleve-klein-guides")
+    assert code == 0
+    assert "unstable for every law: v_1 + v_2 > 2*kappa**2   (5.7)" in out
+    code, out, _ = run(capsys, "conditions", "brake", "--format", "latex")
+    assert code == 0
+    assert out.startswith("% contactsym conditions: brake\n\\begin{align*}")
+    assert r"\mu \leq \left|{\cot{\left(\alpha \right)}}\right| \tag*{(4.4), (6.3)}" in out
+    assert out.rstrip().endswith(r"\end{align*}")
+
+
+def test_conditions_for_one_sign_pattern(capsys):
+    code, out, _ = run(capsys, "conditions", "painleve-klein-guides", "--signs", "+1,-1", "--format", "json")
+    assert code == 0
+    assert json.loads(out)["signs"] == [1, -1]
+
+
+def test_parse_signs_never_evaluates_text():
+    assert parse_signs("+1, -1") == (1, -1)
+    for bad in ("__import__('os')", "2", "1,,x", ""):
+        with pytest.raises(cs.SignPatternError):
+            parse_signs(bad)
+
+
+@pytest.mark.parametrize(
+    "argv, code, words",
+    [
+        (("conditions", "brak"), 2, "did you mean 'brake'"),
+        (("report", "nope", "--out", "X"), 2, "unknown scene 'nope'"),
+        (("conditions", "brake", "--format", "xml"), 2, "invalid choice"),
+        (("conditions", "brake", "--signs", "1,x"), 2, "'x' is not a sign"),
+        (("conditions", "painleve-klein-guides", "--signs", "1"), 2, "has length 1"),
+        (("conditions", "brake", "--signs=-1,1"), 2, "must be +1"),
+        (("frobnicate",), 2, "invalid choice"),
+    ],
+)
+def test_errors_are_one_line_with_nonzero_exit(capsys, argv, code, words):
+    got, out, err = run(capsys, *argv)
+    assert got == code
+    assert words in one_line_error(err)
+
+
+def test_report_to_an_unwritable_directory(capsys, tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("not a directory")
+    code, _, err = run(capsys, "report", "brake", "--out", str(blocker / "reports"))
+    assert code == 1
+    assert "cannot write to --out" in one_line_error(err)
+
+
+def test_report_all_scenes_writes_tex_json_figures_and_summary(capfd, tmp_path):
+    all_reports = tmp_path
+    code = main(["report", "--out", str(all_reports), "--no-pdf"])
+    out, err = capfd.readouterr()
+    assert code == 0, err
+    for name in cs.scene_names():
+        directory = all_reports / name
+        tex = (directory / "report.tex").read_text()
+        assert tex.startswith(r"\documentclass") and tex.rstrip().endswith(r"\end{document}")
+        assert (directory / "figures").is_dir()
+        assert not (directory / "report.pdf").exists()  # --no-pdf
+        data = json.loads((directory / "conditions.json").read_text())
+        assert data["scene"] == name
+        assert set(data["regions"]) >= {"stable for every law", "unstable for every law", "Hopf line"}
+        assert f"{name}: " in out  # the summary names each scene
+        assert f"] {name}: " in err  # progress on stderr
+    assert "[1/4]" in err and "[4/4]" in err
+    guides = json.loads((all_reports / "painleve-klein-guides" / "conditions.json").read_text())
+    assert guides["regions"]["unstable for every law"]["sympy"] == "v_1 + v_2 > 2*kappa**2"
+    assert guides["regions"]["unstable for every law"]["paper"] == ["(5.7)"]
+    assert "stable for every law: mu <= Abs(cot(alpha))" in out
+
+
+@pytest.mark.skipif(
+    shutil.which("pdflatex") is None, reason="pdflatex is not installed (apt-get install texlive-latex-base)"
+)
+def test_report_one_scene_makes_the_pdf(capfd, tmp_path):
+    code = main(["report", "sliding-point", "--out", str(tmp_path)])
+    out, err = capfd.readouterr()
+    assert code == 0, err
+    pdf = tmp_path / "sliding-point" / "report.pdf"
+    assert pdf.read_bytes().startswith(b"%PDF")
+    assert "wrote report.tex, report.pdf, conditions.json" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["sliding-point"]
+
+
+def test_python_dash_m_contactsym_works():
+    env = {**os.environ, "PYTHONPATH": str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", "")}
+    run = subprocess.run(
+        [sys.executable, "-m", "contactsym", "list"], capture_output=True, text=True, env=env, timeout=120
+    )
+    assert run.returncode == 0, run.stderr
+    assert "brake" in run.stdout
+    bad = subprocess.run(
+        [sys.executable, "-m", "contactsym", "show", "nope"], capture_output=True, text=True, env=env, timeout=120
+    )
+    assert bad.returncode == 2 and len(bad.stderr.strip().splitlines()) == 1
