@@ -95,9 +95,6 @@ PAPER_EQUATIONS: dict[str, dict[str, tuple[tuple, str]]] = {
         "accelerations:x_1": (("3.5",), ""),
         "accelerations:delta": (("3.6",), "corrected: Y*_j = Y_j / sin(phi), erratum 1"),
         "f": (("3.6", "3.7"), "erratum 1"),
-        "stable for every law": (("3.2",), "Proposition 3"),
-        "unstable for every law": (("3.2",), "Proposition 3, reversed"),
-        "unique for every load": (("3.3", "3.8"), "Proposition 4"),
     },
     "painleve-klein-guides": {
         "accelerations": (("5.1",), "with the moment M, erratum 10"),

@@ -904,16 +904,20 @@ class FigureSource:
         plotting, note = self._plotting()
         if plotting is None:
             return [], [note]
-        if hasattr(plotting, "scene_figures"):
-            directory = self.workdir / scene.name
-            directory.mkdir(parents=True, exist_ok=True)
-            return _paths(plotting.scene_figures(scene, directory), directory), []
-        if not hasattr(plotting, "paper_figures"):
-            return [], ["No figures: contactsym.plotting has no paper_figures function in this version."]
-        if self._paper is None:
-            directory = self.workdir / "paper"
-            directory.mkdir(parents=True, exist_ok=True)
-            self._paper = _paths(plotting.paper_figures(directory), directory)
+        try:
+            if hasattr(plotting, "scene_figures"):
+                directory = self.workdir / scene.name
+                directory.mkdir(parents=True, exist_ok=True)
+                return _paths(plotting.scene_figures(scene, directory), directory), []
+            if not hasattr(plotting, "paper_figures"):
+                return [], ["No figures: contactsym.plotting has no paper_figures function in this version."]
+            if self._paper is None:
+                directory = self.workdir / "paper"
+                directory.mkdir(parents=True, exist_ok=True)
+                self._paper = []  # drawn once, even when drawing fails
+                self._paper = _paths(plotting.paper_figures(directory), directory)
+        except Exception as error:  # a figure that fails must not cost the rest of the report
+            return [], [f"No figures: drawing them failed with {type(error).__name__}: {error}"]
         chosen = [(p, c) for p, c in self._paper if _scene_of(p) in (scene.name, None)]
         return chosen, [] if chosen else ["No figure of contactsym.plotting.paper_figures belongs to this scene."]
 

@@ -114,6 +114,19 @@ def test_figure_source_shares_figures_out_by_scene(tmp_path, monkeypatch):
     assert rod == [] and "belongs to this scene" in notes[0]
 
 
+def test_a_failing_figure_function_becomes_a_note(tmp_path, monkeypatch):
+    import contactsym
+
+    class Broken:
+        @staticmethod
+        def paper_figures(directory):
+            raise RuntimeError("no display")
+
+    monkeypatch.setattr(contactsym, "plotting", Broken, raising=False)
+    figures, notes = FigureSource(tmp_path).for_scene(cs.scene("brake"))
+    assert figures == [] and notes == ["No figures: drawing them failed with RuntimeError: no display"]
+
+
 @needs_pdflatex
 def test_report_with_a_figure_compiles_and_includes_it(tmp_path):
     (tmp_path / "figures").mkdir()
