@@ -1,0 +1,858 @@
+"""Figures drawn from the derived regions, never by hand.
+
+Every figure is a pair: a ``*_data`` function (pure computation: grids, masks, roots,
+closed-form regions) and a ``*_plot(data, ax=None)`` that draws the data on a given
+matplotlib Axes and returns the artists it added. Regions are hatched (single hatching:
+stable for every contact law; double hatching: unstable for every law; none: the
+stability depends on the law), as in the paper's Fig. 1.
+
+- :func:`region_data`, :func:`region_plot`: any :class:`~contactsym.regions.Region` in
+  a plane of two of its symbols (``Region.plot`` calls :func:`region_plot`);
+- :func:`fig1_data`, :func:`fig1_plot`: Fig. 1a/1b, the (v1, v2) plane of the guides;
+- :func:`rod_f_data`, :func:`rod_f_plot`: f(u) of the rod in the three cases of §3;
+- :func:`brake_map_data`, :func:`brake_map_plot`: the brake's (alpha, mu) map;
+- :func:`brake_hopf_data`, :func:`brake_hopf_plot`: its Hopf line at alpha = 90 deg;
+- :func:`phase_portrait_data`, :func:`phase_portrait_plot`: the fast subsystem (2.1).
+
+:func:`paper_figures` ``(directory)`` writes all of them as PNG files and returns their
+paths (``fig1a_guides.png``, ``fig1b_guides.png``, ``rod_f_cases.png``,
+``brake_alpha_mu.png``, ``brake_hopf.png``, ``rod_phase_portrait.png``).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import sympy as sp
+
+from .regions import Region, closed_form
+
+__all__ = [
+    "ROD_CASES",
+    "brake_hopf_data",
+    "brake_hopf_plot",
+    "brake_map_data",
+    "brake_map_plot",
+    "fig1_data",
+    "fig1_plot",
+    "paper_figures",
+    "phase_portrait_data",
+    "phase_portrait_plot",
+    "region_data",
+    "region_plot",
+    "rod_f_data",
+    "rod_f_plot",
+]
+
+#: Hatches: stable for every law (single), unstable for every law (double), as in Fig. 1.
+STABLE_HATCH = "///"
+UNSTABLE_HATCH = "xxx"
+
+
+def _axes(ax):
+    if ax is None:
+        import matplotlib.pyplot as plt
+
+        ax = plt.gca()
+    return ax
+
+
+def _name(symbol) -> str:
+    return symbol if isinstance(symbol, str) else str(symbol)
+
+
+def _float(value) -> float:
+    return float(sp.N(value)) if isinstance(value, sp.Basic) else float(value)
+
+
+def _values_for(region: Region, values: dict, shape) -> np.ndarray:
+    """Evaluate a region with the values it depends on (others ignored), broadcast to shape."""
+    needed = {name for name in region._by_name}
+    missing = needed - set(values)
+    if missing:
+        raise ValueError(f"give values for {sorted(missing)} (in fixed=...); the region depends on them.")
+    mask = region.evaluate(**{name: values[name] for name in needed})
+    return np.broadcast_to(mask, shape)
+
+
+def _relational_fields(condition, values: dict, shape) -> list[np.ndarray]:
+    """lhs - rhs of every inequality/equation in a condition, on a grid (zero sets = boundaries)."""
+    fields = []
+    seen = []
+    for atom in sorted(sp.sympify(condition).atoms(sp.core.relational.Relational), key=sp.default_sort_key):
+        expr = sp.expand(atom.lhs - atom.rhs)
+        if any(sp.expand(expr - e) == 0 or sp.expand(expr + e) == 0 for e in seen):
+            continue
+        seen.append(expr)
+        symbols = sorted(expr.free_symbols, key=str)
+        function = sp.lambdify(symbols, expr, "numpy")
+        fields.append(np.broadcast_to(np.asarray(function(*[values[str(s)] for s in symbols]), float), shape))
+    return fields
+
+
+# --- any region ------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class RegionData:
+    """A region on a grid: ``mask[i, j]`` is membership at ``(X[i, j], Y[i, j])``."""
+
+    x: str
+    y: str
+    X: np.ndarray
+    Y: np.ndarray
+    mask: np.ndarray
+    region: Region
+
+
+def region_data(region: Region, *, x, y, fixed=None, xlim=(-1.0, 1.0), ylim=(-1.0, 1.0), resolution=300):
+    """Evaluate a region on a grid of the (x, y) plane.
+
+    Parameters
+    ----------
+    region : Region
+    x, y : str or Symbol
+        The plane's symbols.
+    fixed : dict, optional
+        Values of the region's other symbols (by name or symbol); extra entries are ignored.
+    xlim, ylim : pair of float
+    resolution : int
+        Grid points per axis.
+
+    Returns
+    -------
+    RegionData
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> a, b = sp.symbols("a b", real=True)
+    >>> data = region_data(Region(a + b < 1), x="a", y="b", resolution=3)
+    >>> data.mask.tolist()
+    [[True, True, True], [True, True, False], [True, False, False]]
+    """
+    xs = np.linspace(*map(float, xlim), resolution)
+    ys = np.linspace(*map(float, ylim), resolution)
+    X, Y = np.meshgrid(xs, ys)
+    values = {_name(k): _float(v) for k, v in (fixed or {}).items()}
+    values.update({_name(x): X, _name(y): Y})
+    return RegionData(_name(x), _name(y), X, Y, _values_for(region, values, X.shape).copy(), region)
+
+
+def region_plot(
+    region: Region,
+    ax=None,
+    *,
+    x,
+    y,
+    fixed=None,
+    xlim=(-1.0, 1.0),
+    ylim=(-1.0, 1.0),
+    resolution=300,
+    hatch=STABLE_HATCH,
+    color="black",
+    label=None,
+    data: RegionData | None = None,
+):
+    """Hatch a region in the (x, y) plane.
+
+    Parameters
+    ----------
+    region : Region
+    ax : matplotlib Axes, optional
+        Default: the current Axes.
+    x, y, fixed, xlim, ylim, resolution
+        As in :func:`region_data` (unused when ``data`` is given).
+    hatch : str
+        A matplotlib hatch pattern ('///' single, 'xxx' double).
+    color : str
+        Hatch colour.
+    label : str, optional
+        Legend entry (an empty hatched patch is added for it).
+    data : RegionData, optional
+        A grid already computed by :func:`region_data`.
+
+    Returns
+    -------
+    list of Artist
+        The filled contour set, and the legend proxy when ``label`` is given.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> a, b = sp.symbols("a b", real=True)
+    >>> fig, ax = plt.subplots()
+    >>> artists = Region(a + b < 1).plot(ax=ax, x="a", y="b", resolution=20, label="a + b < 1")
+    >>> len(artists), ax.get_legend_handles_labels()[1]
+    (2, ['a + b < 1'])
+    >>> plt.close(fig)
+    """
+    ax = _axes(ax)
+    if data is None:
+        data = region_data(region, x=x, y=y, fixed=fixed, xlim=xlim, ylim=ylim, resolution=resolution)
+    artists = []
+    if data.mask.any():
+        filled = ax.contourf(data.X, data.Y, data.mask.astype(float), levels=[0.5, 1.5], colors="none", hatches=[hatch])
+        if hasattr(filled, "set_hatchcolor"):
+            filled.set_hatchcolor(color)
+        filled.set_edgecolor(color)
+        filled.set_linewidth(0)
+        artists.append(filled)
+    if label is not None:
+        (proxy,) = ax.fill([], [], facecolor="none", edgecolor=color, hatch=hatch, label=label)
+        artists.append(proxy)
+    return artists
+
+
+def _boundary_plot(ax, X, Y, fields, **style):
+    artists = []
+    for values in fields:
+        if np.nanmin(values) < 0 < np.nanmax(values):
+            artists.append(ax.contour(X, Y, values, levels=[0.0], **style))
+    return artists
+
+
+# --- Fig. 1: the guides in the (v1, v2) plane ---------------------------------------------------
+
+
+def _angle_parameter(scene, angle):
+    """The presentation parameter p for a scene angle theta, from sin(theta), cos(theta) -> f(p)."""
+    for key, value in scene.presentation.items():
+        if isinstance(key, sp.sin):
+            theta = key.args[0]
+            tangent = sp.cancel(value / scene.presentation[sp.cos(theta)])
+            (parameter,) = tangent.free_symbols
+            solutions = [s for s in sp.solve(sp.Eq(tangent, sp.tan(angle)), parameter) if s.is_positive]
+            return theta, parameter, solutions[0]
+    raise ValueError(f"scene '{scene.name}' presents no angle.")
+
+
+def _degrees(angle) -> str:
+    value = math.degrees(_float(angle))
+    return f"{value:.0f}" if abs(value - round(value)) < 1e-9 else f"{value:.1f}"
+
+
+@dataclass(frozen=True)
+class Fig1Data:
+    """The (v1, v2) plane of the guides at one angle phi (Fig. 1)."""
+
+    phi: sp.Expr
+    kappa: sp.Expr
+    panel: str
+    threshold: sp.Expr
+    V1: np.ndarray
+    V2: np.ndarray
+    masks: dict  # stability region name -> mask
+    counts: dict  # count region name -> mask
+    lines: list  # fields whose zero sets are the dashed lines
+    regions: dict = field(repr=False)
+    count_regions: dict = field(repr=False)
+
+
+def fig1_data(phi, *, extent=4.0, resolution=400) -> Fig1Data:
+    """Fig. 1: stability and count regions of the guides in the (v1, v2) plane at angle phi.
+
+    Parameters
+    ----------
+    phi : sympy expression or float
+        The rod's angle, in radians (e.g. ``sp.pi/3``).
+    extent : float
+        The plane shown is ``[-extent, extent]^2``.
+    resolution : int
+        Grid points per axis.
+
+    Returns
+    -------
+    Fig1Data
+        Masks of "stable for every law", "unstable for every law", "law-dependent" and
+        of the count regions; ``panel`` is "a" when phi >= the derived threshold (5.9).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> data = fig1_data(sp.pi / 3, resolution=41)
+    >>> data.kappa, data.panel, data.threshold
+    (sqrt(3)/3, 'a', atan(sqrt(2)))
+    >>> sorted(data.counts)
+    ['one or three', 'two or none', 'unique']
+    """
+    from .counts import square_threshold
+    from .scenes import scene
+
+    guides = scene("painleve-klein-guides")
+    phi = sp.nsimplify(phi) if not isinstance(phi, sp.Basic) else phi
+    theta, parameter, value = _angle_parameter(guides, phi)
+    threshold = guides._stage("square threshold", lambda: square_threshold(guides))
+    panel = "a" if threshold.inside.subs(theta, phi) == sp.true else "b"
+    grid = np.linspace(-extent, extent, resolution)
+    V1, V2 = np.meshgrid(grid, grid)
+    values = {"v_1": V1, "v_2": V2, str(parameter): _float(value)}
+    regions = guides.regions()
+    names = ("stable for every law", "unstable for every law", "law-dependent")
+    masks = {name: _values_for(regions[name], values, V1.shape).copy() for name in names}
+    count_regions = guides.equilibrium_counts()
+    counts = {name: _values_for(r, values, V1.shape).copy() for name, r in count_regions.items()}
+    lines = _relational_fields(sp.Or(*[r.condition for r in count_regions.values()]), values, V1.shape)
+    return Fig1Data(phi, value, panel, threshold.angle, V1, V2, masks, counts, lines, regions, count_regions)
+
+
+_COUNT_LABELS = {"unique": "1", "two or none": "0 or 2", "one or three": "1 or 3"}
+
+
+def _label_points(mask) -> list[tuple[int, int]]:
+    """One grid index per connected piece of a mask, as far from its edges as possible.
+
+    Pieces that touch only at a corner (the half-strips at the square's vertices) are
+    separated by eroding one grid step first.
+    """
+    from scipy import ndimage
+
+    core = ndimage.binary_erosion(mask)
+    labels, count = ndimage.label(core)
+    distance = ndimage.distance_transform_edt(core)
+    points = []
+    for piece in range(1, count + 1):
+        inside = np.where(labels == piece, distance, -1.0)
+        points.append(np.unravel_index(int(np.argmax(inside)), mask.shape))
+    return points
+
+
+def fig1_plot(data: Fig1Data, ax=None, *, legend=True):
+    """Draw Fig. 1 on an Axes: stability hatched, the four dashed lines, the counts written in.
+
+    Returns
+    -------
+    list of Artist
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> artists = fig1_plot(fig1_data(sp.pi / 4, resolution=41), ax=ax)
+    >>> ax.get_xlabel(), ax.get_ylabel()
+    ('$v_1$', '$v_2$')
+    >>> plt.close(fig)
+    """
+    ax = _axes(ax)
+    artists = []
+    X, Y = data.V1, data.V2
+    styles = {
+        "stable for every law": (STABLE_HATCH, "tab:blue", "stable for every law (5.6)"),
+        "unstable for every law": (UNSTABLE_HATCH, "tab:red", "unstable for every law (5.7)"),
+    }
+    for name, (hatch, color, label) in styles.items():
+        region = data.regions[name]
+        grid = RegionData("v_1", "v_2", X, Y, data.masks[name], region)
+        artists += region_plot(region, ax, x="v_1", y="v_2", data=grid, hatch=hatch, color=color, label=label)
+    (proxy,) = ax.fill([], [], facecolor="white", edgecolor="0.5", label="depends on the contact law")
+    artists.append(proxy)
+    artists += _boundary_plot(ax, X, Y, data.lines, colors="black", linestyles="dashed", linewidths=1.2)
+    (line_proxy,) = ax.plot([], [], "k--", lw=1.2, label=r"$\pm v_1 \pm v_2 = 2\kappa^2$")
+    artists.append(line_proxy)
+    for name, mask in data.counts.items():
+        for i, j in _label_points(mask):
+            text = ax.text(
+                X[i, j],
+                Y[i, j],
+                _COUNT_LABELS.get(name, name),
+                ha="center",
+                va="center",
+                fontsize=9,
+                bbox={"boxstyle": "round,pad=0.2", "facecolor": "white", "edgecolor": "0.6"},
+            )
+            artists.append(text)
+    ax.set_xlabel("$v_1$")
+    ax.set_ylabel("$v_2$")
+    ax.set_aspect("equal")
+    ax.set_xlim(X.min(), X.max())
+    ax.set_ylim(Y.min(), Y.max())
+    side = r"\geq" if data.panel == "a" else "<"
+    ax.set_title(
+        f"Fig. 1{data.panel}: $\\varphi = {_degrees(data.phi)}^\\circ {side} \\arctan\\sqrt{{2}} "
+        f"\\approx {_degrees(data.threshold)}^\\circ$, $\\kappa = \\cot\\varphi = {_float(data.kappa):.3g}$",
+        fontsize=10,
+    )
+    if legend:
+        artists.append(ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=2, fontsize=8))
+    return artists
+
+
+# --- §3: f(u) of the rod ----------------------------------------------------------------------
+
+#: Parameter choices for the three cases of §3, in the paper's symbols (phi in radians).
+ROD_CASES = {
+    "unique": {"phi": sp.pi / 4, "mu_+": 1.2, "mu_-": 0.4, "Y^*_1": 1.0, "Y^*_2": 1.0, "loads": (-1.0,)},
+    "fold": {"phi": sp.pi / 4, "mu_+": 3.2, "mu_-": 2.8, "Y^*_1": 1.0, "Y^*_2": -1.0, "loads": (-4.0, 0.0)},
+    "cusp": {"phi": sp.pi / 4, "mu_+": 2.7, "mu_-": 0.3, "Y^*_1": 2.0, "Y^*_2": 2.0, "loads": (-0.6, 2.0)},
+}
+
+
+def _piece_roots(f, corners):
+    """Roots of a continuous f, affine between the sorted corners, with the slope at each."""
+    edges = [-math.inf, *sorted(corners), math.inf]
+    roots = []
+    for a, b in zip(edges, edges[1:]):
+        if b - a < 1e-12:
+            continue
+        if a == -math.inf:
+            t1, t2 = b - 2.0, b - 1.0
+        elif b == math.inf:
+            t1, t2 = a + 1.0, a + 2.0
+        else:
+            t1, t2 = a + (b - a) / 3, b - (b - a) / 3
+        slope = (f(t2) - f(t1)) / (t2 - t1)
+        if abs(slope) > 1e-12:
+            root = t1 - f(t1) / slope
+            if a < root < b:
+                roots.append((root, slope))
+    return roots
+
+
+@dataclass(frozen=True)
+class RodFData:
+    """f(u) of the Painlevé–Klein rod for one parameter choice and several loads X*."""
+
+    case: str
+    values: dict
+    count: str
+    condition: sp.Basic
+    ordering: sp.Basic
+    corners: tuple
+    corner_labels: tuple
+    u: np.ndarray
+    curves: list  # (X*, f(u) array, [(u*, slope), ...])
+
+
+def rod_f_data(case="cusp", *, values=None, points=400) -> RodFData:
+    """f(u) (3.6) of the rod with the classification of its count region.
+
+    Parameters
+    ----------
+    case : str
+        A key of :data:`ROD_CASES` (or a label when ``values`` is given).
+    values : dict, optional
+        Values of phi, mu_+, mu_-, Y^*_1, Y^*_2 and ``loads`` (values of X^*).
+    points : int
+        Samples of u.
+
+    Returns
+    -------
+    RodFData
+        ``count`` is the name of the count region that holds (derived), ``condition``
+        its closed form within the corner ordering ``ordering``.
+
+    Examples
+    --------
+    >>> data = rod_f_data("cusp", points=50)
+    >>> data.count, str(data.condition), str(data.ordering)
+    ('one or three', '(mu_+ > 2) & (Abs(mu_-) < 2)', 'Y^*_1 + Y^*_2 > 0')
+    >>> [len(roots) for _, _, roots in data.curves]
+    [3, 1]
+    """
+    from .counts import corner_cases
+    from .scenes import scene
+
+    rod = scene("painleve-klein-rod")
+    values = dict(values or ROD_CASES[case])
+    loads = values.pop("loads")
+    numeric = {k: _float(v) for k, v in values.items()}
+    fast = rod.fast_subsystem()
+    (u,) = fast.u
+    f = rod.present(fast.f[0])
+    symbols = sorted(f.free_symbols - {u}, key=str)
+    function = sp.lambdify([u, *symbols], f, "numpy")
+    counts = rod.equilibrium_counts()
+    (count,) = [n for n, r in counts.items() if bool(r.evaluate(**{s: numeric[s] for s in r._by_name}))]
+    for candidate in corner_cases(rod):
+        if bool(
+            Region(candidate.ordering).evaluate(**{str(s): numeric[str(s)] for s in candidate.ordering.free_symbols})
+        ):
+            chosen = candidate
+            break
+    corners = tuple(_float(c.subs({sp.Symbol(k, real=True): v for k, v in numeric.items()})) for c in chosen.corners)
+    low, high = min(corners) - 4.0, max(corners) + 4.0
+    grid = np.linspace(low, high, points)
+    curves = []
+    for load in loads:
+        args = [load if str(s) == "X^*" else numeric[str(s)] for s in symbols]
+
+        def g(t, args=args):
+            return function(t, *args)
+
+        roots = _piece_roots(g, corners)
+        curves.append((load, np.asarray(g(grid), float), roots))
+    return RodFData(
+        case,
+        {**values, "loads": loads},
+        count,
+        chosen.regions[count],
+        chosen.ordering,
+        corners,
+        tuple(sp.latex(c) for c in chosen.corners),
+        grid,
+        curves,
+    )
+
+
+_CASE_TITLES = {
+    "unique stable": "unique stable root",
+    "two or none": "fold: two roots or none",
+    "one or three": "cusp: one root or three",
+}
+
+
+def rod_f_plot(data: RodFData, ax=None, *, legend=True):
+    """Draw f(u) for each load, roots marked (filled: stable, f' > 0; open: unstable).
+
+    Returns
+    -------
+    list of Artist
+    """
+    ax = _axes(ax)
+    artists = [ax.axhline(0.0, color="0.4", lw=0.8)]
+    styles = ["-", "--", ":", "-."]
+    for (load, values, roots), style in zip(data.curves, styles):
+        word = {0: "no root", 1: "1 root"}.get(len(roots), f"{len(roots)} roots")
+        (line,) = ax.plot(data.u, values, style, color="black", lw=1.5, label=f"$X^* = {load:g}$: {word}")
+        artists.append(line)
+        for root, slope in roots:
+            marker = {"marker": "o", "ms": 7, "mec": "black", "mfc": "black" if slope > 0 else "white"}
+            artists += ax.plot([root], [0.0], ls="none", **marker)
+    for corner, label in zip(data.corners, data.corner_labels):
+        artists.append(ax.axvline(corner, color="0.6", lw=0.8, ls=":"))
+        artists.append(
+            ax.annotate(
+                f"$u = {label}$",
+                (corner, 0.97),
+                xycoords=("data", "axes fraction"),
+                ha="center",
+                va="top",
+                fontsize=8,
+                bbox={"boxstyle": "round,pad=0.15", "facecolor": "white", "edgecolor": "none"},
+            )
+        )
+    kinds = {slope > 0 for _, _, roots in data.curves for _, slope in roots}
+    for stable in sorted(kinds, reverse=True):
+        face, word = ("black", "stable root, $f' > 0$") if stable else ("white", "unstable root, $f' < 0$")
+        artists += ax.plot([], [], "o", ms=7, mec="black", mfc=face, label=word)
+    ax.set_xlabel("$u = R$")
+    ax.set_ylabel("$f(u)$")
+    condition = sp.latex(data.condition)
+    ordering = sp.latex(data.ordering)
+    ax.set_title(f"{_CASE_TITLES.get(data.count, data.count)}\n${condition}$, ${ordering}$", fontsize=10)
+    if legend:
+        artists.append(ax.legend(fontsize=8, loc="best"))
+    return artists
+
+
+# --- §6: the brake ----------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class BrakeMapData:
+    """The brake's (alpha, mu) plane: stable for every law, law-dependent, mu = |cot alpha|."""
+
+    alpha: np.ndarray  # radians
+    mu: np.ndarray
+    masks: dict
+    boundary: list
+    regions: dict = field(repr=False)
+
+
+def brake_map_data(*, mu_max=2.0, resolution=300) -> BrakeMapData:
+    """Regions of the brake in the (alpha, mu) plane (6.3), from ``scene("brake").regions()``.
+
+    Examples
+    --------
+    >>> data = brake_map_data(resolution=30)
+    >>> sorted(data.masks), str(data.regions["stable for every law"].condition)
+    (['law-dependent', 'stable for every law'], 'mu <= Abs(cot(alpha))')
+    """
+    from .scenes import scene
+
+    regions = scene("brake").regions()
+    alphas = np.linspace(0.02, math.pi - 0.02, resolution)
+    mus = np.linspace(0.0, mu_max, resolution)
+    A, M = np.meshgrid(alphas, mus)
+    values = {"alpha": A, "mu": M}
+    names = ("stable for every law", "law-dependent")
+    masks = {name: _values_for(regions[name], values, A.shape).copy() for name in names}
+    boundary = _relational_fields(regions["stable for every law"].condition, values, A.shape)
+    return BrakeMapData(A, M, masks, boundary, {name: regions[name] for name in names})
+
+
+def brake_map_plot(data: BrakeMapData, ax=None, *, legend=True):
+    """Draw the (alpha, mu) map; alpha in degrees.
+
+    Returns
+    -------
+    list of Artist
+    """
+    ax = _axes(ax)
+    X = np.degrees(data.alpha)
+    region = data.regions["stable for every law"]
+    grid = RegionData("alpha", "mu", X, data.mu, data.masks["stable for every law"], region)
+    label = f"stable for every law (6.3): ${sp.latex(region.condition)}$"
+    artists = region_plot(region, ax, x="alpha", y="mu", data=grid, hatch=STABLE_HATCH, color="tab:blue", label=label)
+    (proxy,) = ax.fill([], [], facecolor="white", edgecolor="0.5", label="depends on the law (Hopf possible)")
+    artists.append(proxy)
+    artists += _boundary_plot(ax, X, data.mu, data.boundary, colors="black", linewidths=1.5)
+    (line,) = ax.plot([], [], "k-", lw=1.5, label=r"$\mu = |\cot\alpha|$")
+    artists.append(line)
+    ax.set_xlabel(r"$\alpha$ (degrees)")
+    ax.set_ylabel(r"$\mu$")
+    ax.set_xticks([0, 45, 90, 135, 180])
+    ax.set_title("brake (§6): robustness with respect to the contact law", fontsize=10)
+    if legend:
+        artists.append(ax.legend(loc="upper center", fontsize=8, framealpha=0.95))
+    return artists
+
+
+@dataclass(frozen=True)
+class BrakeHopfData:
+    """The brake at alpha = 90 deg, Phi_j = Phi, Psi_j = Psi: (mu, Phi) plane at fixed Psi, m."""
+
+    mu: np.ndarray
+    Phi: np.ndarray
+    fixed: dict
+    stable: Region
+    hopf: Region
+    frequency: sp.Expr  # omega on the Hopf line, in the stretched time
+    masks: dict
+    hopf_field: list
+
+
+def brake_hopf_data(*, Psi=-1.0, m=1.0, mu_max=3.0, Phi_min=-10.0, resolution=300) -> BrakeHopfData:
+    """Hurwitz stability (6.4) and the Hopf line of the brake at alpha = 90 deg, equal laws.
+
+    The closed forms come from ``scene("brake").stability()`` with alpha = pi/2,
+    Phi_1 = Phi_2 = Phi, Psi_1 = Psi_2 = Psi substituted.
+
+    Examples
+    --------
+    >>> data = brake_hopf_data(resolution=30)
+    >>> data.stable.condition
+    -Phi*m*mu**2 < Psi**2*(mu**2 + 1)
+    >>> data.hopf.condition
+    Eq(Phi*m*mu**2 + Psi**2*mu**2 + Psi**2, 0)
+    >>> data.frequency
+    -Psi*(mu**2 + 1)/(m*mu)
+    """
+    from .scenes import scene
+
+    brake = scene("brake")
+    stability, lin = brake.stability(), brake.linearization()
+    Phi_, Psi_ = sp.symbols("Phi Psi", negative=True)
+    alpha = next(s for s in brake.parameters if str(s) == "alpha")
+    equal = {alpha: sp.pi / 2, **dict.fromkeys(lin.Phi, Phi_), **dict.fromkeys(lin.Psi, Psi_)}
+    stable = closed_form(sp.And(*[sp.Gt(h, 0) for h in stability.hurwitz]).subs(equal), brake)
+    hopf = closed_form(stability.hopf.subs(equal), brake)
+    (on_line,) = sp.solve(hopf.lhs - hopf.rhs, Phi_)  # the Hopf line as Phi(mu); small expressions
+    frequency = sp.powsimp(sp.factor(stability.hopf_frequency.subs(equal).subs(Phi_, on_line)))
+    mus = np.linspace(0.02, mu_max, resolution)
+    Phis = np.linspace(Phi_min, -1e-3, resolution)
+    MU, PHI = np.meshgrid(mus, Phis)
+    values = {"mu": MU, "Phi": PHI, "Psi": Psi, "m": m}
+    stable_region = Region(stable, name="asymptotically stable (6.4)")
+    hopf_region = Region(hopf, name="Hopf line")
+    mask = _values_for(stable_region, values, MU.shape).copy()
+    masks = {"stable": mask, "unstable": ~mask}
+    field_ = _relational_fields(hopf, values, MU.shape)
+    return BrakeHopfData(MU, PHI, {"Psi": Psi, "m": m}, stable_region, hopf_region, frequency, masks, field_)
+
+
+def brake_hopf_plot(data: BrakeHopfData, ax=None, *, legend=True):
+    """Draw the (mu, Phi) plane: stable single-hatched, unstable double-hatched, the Hopf line.
+
+    Returns
+    -------
+    list of Artist
+    """
+    ax = _axes(ax)
+    grid = RegionData("mu", "Phi", data.mu, data.Phi, data.masks["stable"], data.stable)
+    stable_label = f"stable: ${sp.latex(data.stable.condition)}$"
+    artists = region_plot(
+        data.stable, ax, x="mu", y="Phi", data=grid, hatch=STABLE_HATCH, color="tab:blue", label=stable_label
+    )
+    unstable = RegionData("mu", "Phi", data.mu, data.Phi, data.masks["unstable"], ~data.stable)
+    artists += region_plot(
+        ~data.stable, ax, x="mu", y="Phi", data=unstable, hatch=UNSTABLE_HATCH, color="tab:red", label="unstable"
+    )
+    artists += _boundary_plot(ax, data.mu, data.Phi, data.hopf_field, colors="black", linewidths=2)
+    hopf = sp.latex(data.hopf.condition)
+    (line,) = ax.plot([], [], "k-", lw=2, label=f"Hopf line: ${hopf}$")
+    artists.append(line)
+    ax.set_xlabel(r"$\mu$")
+    ax.set_ylabel(r"$\Phi$")
+    fixed = ", ".join(f"${sp.latex(sp.Symbol(k))} = {v:g}$" for k, v in data.fixed.items())
+    ax.set_title(
+        f"brake at $\\alpha = 90^\\circ$, $\\Phi_j = \\Phi$, $\\Psi_j = \\Psi$ ({fixed})\n"
+        f"squeal frequency on the Hopf line: $\\omega = {sp.latex(data.frequency)}$",
+        fontsize=9,
+    )
+    if legend:
+        artists.append(ax.legend(loc="lower right", fontsize=8, framealpha=0.95))
+    return artists
+
+
+# --- (2.1): a phase portrait -------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class PhasePortraitData:
+    """The fast subsystem (2.1) of a k = 1 scene on a (u, v) grid, with its equilibria."""
+
+    title: str
+    u: np.ndarray
+    v: np.ndarray
+    du: np.ndarray
+    dv: np.ndarray
+    equilibria: list  # (u*, stable)
+    values: dict
+
+
+def phase_portrait_data(
+    case="cusp", *, values=None, Phi=-1.0, Psi=-0.5, extent=(6.0, 6.0), resolution=60
+) -> PhasePortraitData:
+    """The rod's fast subsystem u' = Phi v + Psi f(u), v' = f(u) (3.1) with constant Phi, Psi.
+
+    Parameters
+    ----------
+    case : str
+        A key of :data:`ROD_CASES`; its first load is used.
+    values : dict, optional
+        Values of phi, mu_+, mu_-, Y^*_1, Y^*_2 and X^* instead of a case.
+    Phi, Psi : float
+        The contact law's constants (negative).
+    extent : pair of float
+        Half-widths of the (u, v) window, centred on the equilibria.
+    resolution : int
+        Grid points per axis.
+
+    Examples
+    --------
+    >>> data = phase_portrait_data(resolution=10)
+    >>> [stable for _, stable in data.equilibria]
+    [True, False, True]
+    """
+    from .scenes import scene
+
+    if values is None:
+        values = dict(ROD_CASES[case])
+        values["X^*"] = values.pop("loads")[0]
+    numeric = {k: _float(v) for k, v in values.items()}
+    rod = scene("painleve-klein-rod")
+    fast = rod.fast_subsystem()
+    (u,), (v,) = fast.u, fast.v
+    rhs = rod.present(fast.rhs)
+    laws = {fast.Phi[0]: Phi, fast.Psi[0]: Psi}
+    rhs = rhs.subs(laws)
+    symbols = sorted(rhs.free_symbols - {u, v}, key=str)
+    function = sp.lambdify([u, v, *symbols], list(rhs), "numpy")
+    args = [numeric[str(s)] for s in symbols]
+    data = rod_f_data(case, values={**values, "loads": (numeric["X^*"],)}, points=10)
+    roots = data.curves[0][2]
+    centre = float(np.mean([r for r, _ in roots])) if roots else 0.0
+    us = np.linspace(centre - extent[0], centre + extent[0], resolution)
+    vs = np.linspace(-extent[1], extent[1], resolution)
+    U, V = np.meshgrid(us, vs)
+    du, dv = (np.broadcast_to(np.asarray(c, float), U.shape) for c in function(U, V, *args))
+    title = (
+        f"fast subsystem (2.1) of the rod, {_CASE_TITLES.get(data.count, data.count)}: "
+        f"$\\Phi = {Phi:g}$, $\\Psi = {Psi:g}$, $X^* = {numeric['X^*']:g}$"
+    )
+    return PhasePortraitData(title, U, V, du, dv, [(float(r), bool(s > 0)) for r, s in roots], numeric)
+
+
+def phase_portrait_plot(data: PhasePortraitData, ax=None, *, legend=True):
+    """Stream lines of (u', v'), equilibria (u*, 0) marked: filled stable, open unstable.
+
+    Returns
+    -------
+    list of Artist
+    """
+    ax = _axes(ax)
+    before = set(ax.patches)
+    speed = np.hypot(data.du, data.dv)
+    stream = ax.streamplot(
+        data.u[0],
+        data.v[:, 0],
+        data.du,
+        data.dv,
+        color="0.35",
+        density=1.2,
+        linewidth=0.5 + np.tanh(speed / speed.mean()),
+    )
+    arrows = [p for p in ax.patches if p not in before]  # StreamplotSet.arrows is never added to the Axes
+    artists = [stream.lines, *arrows]
+    for stable in (True, False):
+        points = [r for r, s in data.equilibria if s == stable]
+        if points:
+            label = "stable equilibrium ($f' > 0$)" if stable else "unstable equilibrium ($f' < 0$)"
+            face = "black" if stable else "white"
+            artists += ax.plot(points, [0.0] * len(points), "o", ms=9, mec="tab:red", mfc=face, mew=2, label=label)
+    ax.set_xlabel("$u$")
+    ax.set_ylabel("$v$")
+    ax.set_title(data.title, fontsize=9)
+    if legend and data.equilibria:
+        artists.append(ax.legend(loc="upper right", fontsize=8, framealpha=0.95))
+    return artists
+
+
+# --- all figures --------------------------------------------------------------------------------
+
+
+def paper_figures(directory, *, resolution=400, dpi=150) -> list[Path]:
+    """Write every figure as a PNG into ``directory``; returns the paths.
+
+    Parameters
+    ----------
+    directory : str or Path
+        Created when missing.
+    resolution : int
+        Grid points per axis for the region plots (lower is faster).
+    dpi : int
+
+    Returns
+    -------
+    list of Path
+        ``fig1a_guides.png``, ``fig1b_guides.png``, ``rod_f_cases.png``,
+        ``brake_alpha_mu.png``, ``brake_hopf.png``, ``rod_phase_portrait.png``.
+    """
+    from matplotlib.figure import Figure
+
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    paths = []
+
+    def save(figure, name):
+        path = directory / name
+        figure.savefig(path, dpi=dpi, bbox_inches="tight")
+        paths.append(path)
+
+    for name, phi in (("fig1a_guides.png", sp.pi / 3), ("fig1b_guides.png", sp.pi / 4)):
+        figure = Figure(figsize=(6.0, 6.0))
+        fig1_plot(fig1_data(phi, resolution=resolution), ax=figure.add_subplot())
+        save(figure, name)
+    figure = Figure(figsize=(15.0, 4.6))
+    for i, case in enumerate(ROD_CASES, 1):
+        rod_f_plot(rod_f_data(case, points=max(50, resolution)), ax=figure.add_subplot(1, 3, i))
+    figure.subplots_adjust(wspace=0.3)
+    save(figure, "rod_f_cases.png")
+    figure = Figure(figsize=(6.5, 4.5))
+    brake_map_plot(brake_map_data(resolution=resolution), ax=figure.add_subplot())
+    save(figure, "brake_alpha_mu.png")
+    figure = Figure(figsize=(6.5, 4.8))
+    brake_hopf_plot(brake_hopf_data(resolution=resolution), ax=figure.add_subplot())
+    save(figure, "brake_hopf.png")
+    figure = Figure(figsize=(7.0, 5.0))
+    phase_portrait_plot(phase_portrait_data(resolution=max(20, resolution // 8)), ax=figure.add_subplot())
+    save(figure, "rod_phase_portrait.png")
+    return paths
