@@ -32,7 +32,8 @@ or a determinant equal to 0, two corners meeting where the scene leaves that ope
 to no region.
 
 :func:`square_threshold` finds where the unique region stops lying inside the region
-"stable for every law": for the guides, phi = arctan(sqrt(2)) (5.9).
+"stable for every law": for the guides, phi = arctan(sqrt(2)) (5.9);
+:func:`threshold_angle` returns that angle.
 """
 
 from __future__ import annotations
@@ -48,7 +49,15 @@ from .algebra import normalize, reduce_signs
 from .errors import ContactsymError
 from .regions import Region, _as_positive_relation, closed_form, known_sign
 
-__all__ = ["COUNT_DESCRIPTIONS", "CountCase", "Threshold", "corner_cases", "count_regions", "square_threshold"]
+__all__ = [
+    "COUNT_DESCRIPTIONS",
+    "CountCase",
+    "Threshold",
+    "corner_cases",
+    "count_regions",
+    "square_threshold",
+    "threshold_angle",
+]
 
 #: What each count region means.
 COUNT_DESCRIPTIONS = {
@@ -680,6 +689,25 @@ def square_threshold(scene, unique: str = "unique", stable: str = "stable for ev
     >>> th.value, th.angle, th.inside
     (sqrt(2)/2, atan(sqrt(2)), phi >= atan(sqrt(2)))
     """
+    return scene._stage(("square threshold", unique, stable), lambda: _square_threshold(scene, unique, stable))
+
+
+def threshold_angle(scene, unique: str = "unique", stable: str = "stable for every law") -> sp.Expr:
+    """The angle at which the unique region leaves the region stable for every law (5.9).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> threshold_angle(cs.scene("painleve-klein-guides"))
+    atan(sqrt(2))
+    """
+    angle = square_threshold(scene, unique, stable).angle
+    if angle is None:
+        raise ContactsymError(f"scene '{scene.name}' presents no angle; use square_threshold(...).value.")
+    return angle
+
+
+def _square_threshold(scene, unique: str, stable: str) -> Threshold:
     inner = scene.equilibrium_counts()[unique]
     outer = scene.regions()[stable]
     plane = sorted({s for a in inner.condition.atoms(sp.Abs) for s in a.free_symbols}, key=str)

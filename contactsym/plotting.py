@@ -287,7 +287,7 @@ def fig1_data(phi, *, extent=4.0, resolution=400) -> Fig1Data:
     guides = scene("painleve-klein-guides")
     phi = sp.nsimplify(phi) if not isinstance(phi, sp.Basic) else phi
     theta, parameter, value = _angle_parameter(guides, phi)
-    threshold = guides._stage("square threshold", lambda: square_threshold(guides))
+    threshold = square_threshold(guides)
     panel = "a" if threshold.inside.subs(theta, phi) == sp.true else "b"
     grid = np.linspace(-extent, extent, resolution)
     V1, V2 = np.meshgrid(grid, grid)

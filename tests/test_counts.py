@@ -13,7 +13,7 @@ import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
 import contactsym as cs
-from contactsym.counts import _merge_or, corner_cases, count_regions, square_threshold
+from contactsym.counts import _merge_or, corner_cases, count_regions, square_threshold, threshold_angle
 from contactsym.errors import ContactsymError
 
 rod = cs.scene("painleve-klein-rod")
@@ -100,6 +100,9 @@ def test_threshold_5_9_comes_out_of_the_machinery():
     assert th.inside == sp.Ge(phi_g, sp.atan(sp.sqrt(2)))  # (5.9), equality included
     assert th.vertex in {(0, -2 * kappa**2), (-2 * kappa**2, 0)}
     assert math.isclose(math.degrees(float(th.angle)), 54.7356, abs_tol=1e-3)
+    assert threshold_angle(guides) == sp.atan(sp.sqrt(2))
+    with pytest.raises(ContactsymError, match="plane of two variables"):
+        square_threshold(rod, unique="unique stable")  # the rod's regions live in no (v1, v2) plane
 
 
 def test_threshold_agrees_with_a_grid_either_side():
