@@ -16,7 +16,9 @@ stability depends on the law), as in the paper's Fig. 1.
 
 :func:`paper_figures` ``(directory)`` writes all of them as PNG files and returns their
 paths (``fig1a_guides.png``, ``fig1b_guides.png``, ``rod_f_cases.png``,
-``brake_alpha_mu.png``, ``brake_hopf.png``, ``rod_phase_portrait.png``).
+``rod_phase_portrait.png``, ``brake_alpha_mu.png``, ``brake_hopf.png``,
+``sliding_point_phase_portrait.png``); :func:`scene_figures` ``(scene, directory)``
+writes one scene's figures and returns ``{caption: path}``.
 """
 
 from __future__ import annotations
@@ -39,6 +41,7 @@ __all__ = [
     "fig1_data",
     "fig1_plot",
     "paper_figures",
+    "scene_figures",
     "phase_portrait_data",
     "phase_portrait_plot",
     "region_data",
@@ -709,6 +712,8 @@ def brake_hopf_plot(data: BrakeHopfData, ax=None, *, legend=True):
 class PhasePortraitData:
     """The fast subsystem (2.1) of a k = 1 scene on a (u, v) grid, with its equilibria."""
 
+    scene: str
+    count: str
     title: str
     u: np.ndarray
     v: np.ndarray
@@ -718,57 +723,90 @@ class PhasePortraitData:
     values: dict
 
 
+#: Numeric values for the phase portraits, in each scene's presentation symbols.
+PORTRAIT_VALUES = {
+    "painleve-klein-rod": {
+        **{k: v for k, v in ROD_CASES["cusp"].items() if k != "loads"},
+        "X^*": ROD_CASES["cusp"]["loads"][0],
+    },
+    "sliding-point": {"m": 1.0, "b": 0.25, "Y": -1.0},
+}
+
+
+def _by_name(expr, values: dict):
+    """Substitute numbers by name for symbols and for applied functions such as Y(x, xdot)."""
+    expr = sp.sympify(expr)
+    mapping = {s: values[str(s)] for s in expr.free_symbols if str(s) in values}
+    for applied in expr.atoms(sp.core.function.AppliedUndef):
+        if applied.func.__name__ in values:
+            mapping[applied] = values[applied.func.__name__]
+    return expr.xreplace({k: sp.Float(_float(v)) for k, v in mapping.items()})
+
+
 def phase_portrait_data(
-    case="cusp", *, values=None, Phi=-1.0, Psi=-0.5, extent=(6.0, 6.0), resolution=60
+    scene="painleve-klein-rod", values=None, *, Phi=-1.0, Psi=-0.5, extent=(6.0, 6.0), resolution=60
 ) -> PhasePortraitData:
-    """The rod's fast subsystem u' = Phi v + Psi f(u), v' = f(u) (3.1) with constant Phi, Psi.
+    """The fast subsystem u' = Phi v + Psi f(u), v' = f(u) (3.1) of a k = 1 scene on a grid.
 
     Parameters
     ----------
-    case : str
-        A key of :data:`ROD_CASES`; its first load is used.
+    scene : str
+        A built-in scene with one contact.
     values : dict, optional
-        Values of phi, mu_+, mu_-, Y^*_1, Y^*_2 and X^* instead of a case.
+        Numbers for its presentation symbols (by name; a load such as ``Y(x, xdot)`` by
+        its function name); default :data:`PORTRAIT_VALUES`.
     Phi, Psi : float
-        The contact law's constants (negative).
+        The law's constants, where the law is generic (a Kelvin–Voigt law fixes its own).
     extent : pair of float
         Half-widths of the (u, v) window, centred on the equilibria.
     resolution : int
         Grid points per axis.
 
+    Returns
+    -------
+    PhasePortraitData
+        The field (u', v') on the grid and the equilibria (u*, stable), from the scene's
+        equilibrium branches; stable when f'(u*) > 0 (Proposition 3, for every law).
+
     Examples
     --------
     >>> data = phase_portrait_data(resolution=10)
-    >>> [stable for _, stable in data.equilibria]
-    [True, False, True]
+    >>> data.count, [stable for _, stable in data.equilibria]
+    ('one or three', [True, False, True])
+    >>> phase_portrait_data("sliding-point", resolution=10).equilibria
+    [(1.0, True)]
     """
-    from .scenes import scene
+    from .scenes import scene as built_in
 
-    if values is None:
-        values = dict(ROD_CASES[case])
-        values["X^*"] = values.pop("loads")[0]
-    numeric = {k: _float(v) for k, v in values.items()}
-    rod = scene("painleve-klein-rod")
-    fast = rod.fast_subsystem()
+    name = scene
+    scene = built_in(name)
+    values = dict(PORTRAIT_VALUES[name] if values is None else values)
+    fast = scene.fast_subsystem()
+    if scene.k != 1:
+        raise ValueError(f"phase portraits are for one contact; '{name}' has k = {scene.k}.")
     (u,), (v,) = fast.u, fast.v
-    rhs = rod.present(fast.rhs)
-    laws = {fast.Phi[0]: Phi, fast.Psi[0]: Psi}
-    rhs = rhs.subs(laws)
-    symbols = sorted(rhs.free_symbols - {u, v}, key=str)
-    function = sp.lambdify([u, v, *symbols], list(rhs), "numpy")
-    args = [numeric[str(s)] for s in symbols]
-    data = rod_f_data(case, values={**values, "loads": (numeric["X^*"],)}, points=10)
-    roots = data.curves[0][2]
-    centre = float(np.mean([r for r, _ in roots])) if roots else 0.0
+    laws = {law: value for law, value in ((fast.Phi[0], Phi), (fast.Psi[0], Psi)) if isinstance(law, sp.Symbol)}
+    rhs = _by_name(scene.present(fast.rhs.subs(laws)), values)
+    function = sp.lambdify([u, v], list(rhs), "numpy")
+    equilibria = []
+    for branch in scene.equilibria():
+        if _by_name(scene.present(branch.condition), values) != sp.true:
+            continue
+        root = float(_by_name(scene.present(branch.u_star[0]), values))
+        slope = float(_by_name(scene.present(scene.linearization(signs=branch.signs).A[0]), values))
+        equilibria.append((root, slope > 0))
+    equilibria.sort()
+    counts = scene.equilibrium_counts()
+    count = next((n for n, r in counts.items() if bool(r.evaluate(**{k: values[k] for k in r._by_name}))), "undecided")
+    centre = float(np.mean([r for r, _ in equilibria])) if equilibria else 0.0
     us = np.linspace(centre - extent[0], centre + extent[0], resolution)
     vs = np.linspace(-extent[1], extent[1], resolution)
     U, V = np.meshgrid(us, vs)
-    du, dv = (np.broadcast_to(np.asarray(c, float), U.shape) for c in function(U, V, *args))
-    title = (
-        f"fast subsystem (2.1) of the rod, {_CASE_TITLES.get(data.count, data.count)}: "
-        f"$\\Phi = {Phi:g}$, $\\Psi = {Psi:g}$, $X^* = {numeric['X^*']:g}$"
-    )
-    return PhasePortraitData(title, U, V, du, dv, [(float(r), bool(s > 0)) for r, s in roots], numeric)
+    du, dv = (np.broadcast_to(np.asarray(c, float), U.shape) for c in function(U, V))
+    shown = [f"${sp.latex(law)} = {value:g}$" for law, value in laws.items()]
+    shown += [f"${sp.latex(sp.Symbol(k))} = {value:g}$" for k, value in values.items() if k in ("X^*", "b", "Y")]
+    title = f"fast subsystem (2.1), {name} ({_CASE_TITLES.get(count, count)}): " + ", ".join(shown)
+    return PhasePortraitData(name, count, title, U, V, du, dv, equilibria, values)
 
 
 def phase_portrait_plot(data: PhasePortraitData, ax=None, *, legend=True):
@@ -809,6 +847,128 @@ def phase_portrait_plot(data: PhasePortraitData, ax=None, *, legend=True):
 # --- all figures --------------------------------------------------------------------------------
 
 
+def _fig1_caption(data: Fig1Data) -> str:
+    where = (
+        "the unique square (5.8) lies inside the region stable for every law (5.9)"
+        if data.panel == "a"
+        else "part of the unique square (5.8) lies where stability depends on the contact law"
+    )
+    return (
+        f"Fig. 1{data.panel}: the (v1, v2) plane of the guides at phi = {_degrees(data.phi)} deg "
+        f"(threshold arctan sqrt(2) = {_degrees(data.threshold)} deg). Single hatching: stable for every "
+        "contact law (5.6); double hatching: unstable for every law (5.7); dashed: the lines "
+        "+-v1 +- v2 = 2 kappa^2 bounding the unique square (5.8), the sectors with two solutions or none "
+        f"(5.10) and the half-strips with one or three. Here {where}."
+    )
+
+
+def _portrait_caption(data: PhasePortraitData) -> str:
+    stable = sum(1 for _, s in data.equilibria if s)
+    unstable = len(data.equilibria) - stable
+    return (
+        f"Phase portrait of the fast subsystem (2.1) of {data.scene} ({_CASE_TITLES.get(data.count, data.count)}): "
+        f"{stable} stable and {unstable} unstable equilibria (u*, 0); filled markers stable (f' > 0), "
+        "open markers unstable (Proposition 3)."
+    )
+
+
+def _figures_of(name: str, resolution: int):
+    """(file name, caption, draw(figure)) for one scene's figures."""
+    from matplotlib.figure import Figure
+
+    def single(size, data, plot):
+        def draw():
+            figure = Figure(figsize=size)
+            plot(data, ax=figure.add_subplot())
+            return figure
+
+        return draw
+
+    if name == "painleve-klein-guides":
+        out = []
+        for file, phi in (("fig1a_guides.png", sp.pi / 3), ("fig1b_guides.png", sp.pi / 4)):
+            data = fig1_data(phi, resolution=resolution)
+            out.append((file, _fig1_caption(data), single((6.0, 6.6), data, fig1_plot)))
+        return out
+    if name == "painleve-klein-rod":
+
+        def rod_cases():
+            figure = Figure(figsize=(15.0, 4.6))
+            for i, case in enumerate(ROD_CASES, 1):
+                rod_f_plot(rod_f_data(case, points=max(50, resolution)), ax=figure.add_subplot(1, 3, i))
+            figure.subplots_adjust(wspace=0.3)
+            return figure
+
+        caption = (
+            "f(u) of the Painleve-Klein rod (3.6) in the three cases of section 3: a unique stable root "
+            "((3.8), (3.9)), a fold with two roots or none (impact-type catastrophe), a cusp with one root or "
+            "three; each panel's condition is its derived count region. Filled dots: stable roots (f' > 0); "
+            "open dots: unstable."
+        )
+        portrait = phase_portrait_data(name, resolution=max(20, resolution // 8))
+        return [
+            ("rod_f_cases.png", caption, rod_cases),
+            ("rod_phase_portrait.png", _portrait_caption(portrait), single((7.0, 5.0), portrait, phase_portrait_plot)),
+        ]
+    if name == "brake":
+        hopf = brake_hopf_data(resolution=resolution)
+        return [
+            (
+                "brake_alpha_mu.png",
+                "The brake in the (alpha, mu) plane: stable for every contact law where mu <= |cot alpha| (6.3); "
+                "above the curve mu = |cot alpha| stability depends on the contact law (a Hopf bifurcation, "
+                "brake squeal, is possible).",
+                single((6.5, 4.5), brake_map_data(resolution=resolution), brake_map_plot),
+            ),
+            (
+                "brake_hopf.png",
+                f"The brake at alpha = 90 deg with Phi_j = Phi, Psi_j = Psi: asymptotically stable where "
+                f"{sp.sstr(hopf.stable.condition)} ((6.4) with the mass m), unstable beyond the Hopf line "
+                f"{sp.sstr(hopf.hopf.condition.lhs)} = 0, on which the squeal frequency is "
+                f"omega = {sp.sstr(hopf.frequency)} (stretched time).",
+                single((6.5, 4.8), hopf, brake_hopf_plot),
+            ),
+        ]
+    if name == "sliding-point":
+        portrait = phase_portrait_data(name, extent=(3.0, 3.0), resolution=max(20, resolution // 8))
+        return [
+            (
+                "sliding_point_phase_portrait.png",
+                _portrait_caption(portrait),
+                single((7.0, 5.0), portrait, phase_portrait_plot),
+            )
+        ]
+    return []
+
+
+def scene_figures(scene, directory, *, resolution=400, dpi=150) -> dict[str, Path]:
+    """Write one scene's figures as PNGs into ``directory``; returns {caption: path}.
+
+    Parameters
+    ----------
+    scene : Scene or str
+        A built-in scene (others have no figures: an empty dict).
+    directory : str or Path
+        Created when missing.
+    resolution : int
+        Grid points per axis for the region plots (lower is faster).
+    dpi : int
+    """
+    name = scene if isinstance(scene, str) else scene.name
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    written = {}
+    for file, caption, draw in _figures_of(name, resolution):
+        path = directory / file
+        draw().savefig(path, dpi=dpi, bbox_inches="tight")
+        written[caption] = path
+    return written
+
+
+#: The order of :func:`paper_figures`.
+FIGURE_SCENES = ("painleve-klein-guides", "painleve-klein-rod", "brake", "sliding-point")
+
+
 def paper_figures(directory, *, resolution=400, dpi=150) -> list[Path]:
     """Write every figure as a PNG into ``directory``; returns the paths.
 
@@ -824,35 +984,10 @@ def paper_figures(directory, *, resolution=400, dpi=150) -> list[Path]:
     -------
     list of Path
         ``fig1a_guides.png``, ``fig1b_guides.png``, ``rod_f_cases.png``,
-        ``brake_alpha_mu.png``, ``brake_hopf.png``, ``rod_phase_portrait.png``.
+        ``rod_phase_portrait.png``, ``brake_alpha_mu.png``, ``brake_hopf.png``,
+        ``sliding_point_phase_portrait.png``.
     """
-    from matplotlib.figure import Figure
-
-    directory = Path(directory)
-    directory.mkdir(parents=True, exist_ok=True)
     paths = []
-
-    def save(figure, name):
-        path = directory / name
-        figure.savefig(path, dpi=dpi, bbox_inches="tight")
-        paths.append(path)
-
-    for name, phi in (("fig1a_guides.png", sp.pi / 3), ("fig1b_guides.png", sp.pi / 4)):
-        figure = Figure(figsize=(6.0, 6.0))
-        fig1_plot(fig1_data(phi, resolution=resolution), ax=figure.add_subplot())
-        save(figure, name)
-    figure = Figure(figsize=(15.0, 4.6))
-    for i, case in enumerate(ROD_CASES, 1):
-        rod_f_plot(rod_f_data(case, points=max(50, resolution)), ax=figure.add_subplot(1, 3, i))
-    figure.subplots_adjust(wspace=0.3)
-    save(figure, "rod_f_cases.png")
-    figure = Figure(figsize=(6.5, 4.5))
-    brake_map_plot(brake_map_data(resolution=resolution), ax=figure.add_subplot())
-    save(figure, "brake_alpha_mu.png")
-    figure = Figure(figsize=(6.5, 4.8))
-    brake_hopf_plot(brake_hopf_data(resolution=resolution), ax=figure.add_subplot())
-    save(figure, "brake_hopf.png")
-    figure = Figure(figsize=(7.0, 5.0))
-    phase_portrait_plot(phase_portrait_data(resolution=max(20, resolution // 8)), ax=figure.add_subplot())
-    save(figure, "rod_phase_portrait.png")
+    for name in FIGURE_SCENES:
+        paths.extend(scene_figures(name, directory, resolution=resolution, dpi=dpi).values())
     return paths

@@ -26,6 +26,7 @@ from contactsym.plotting import (  # noqa: E402
     region_plot,
     rod_f_data,
     rod_f_plot,
+    scene_figures,
 )
 from contactsym.regions import Region  # noqa: E402
 from tests.helpers import max_real_part  # noqa: E402
@@ -228,18 +229,26 @@ def test_brake_plots(ax):
 
 
 def test_phase_portrait_is_3_1_with_the_equilibria():
-    values = {**ROD_CASES["cusp"]}
-    load = values.pop("loads")[0]
-    data = phase_portrait_data("cusp", Phi=-1.0, Psi=-0.5, resolution=15)
+    load = ROD_CASES["cusp"]["loads"][0]
+    data = phase_portrait_data("painleve-klein-rod", Phi=-1.0, Psi=-0.5, resolution=15)
     f = f_3_6(data.u, ROD_CASES["cusp"], load)
     assert np.allclose(data.dv, f)
     assert np.allclose(data.du, -1.0 * data.v - 0.5 * f)
-    assert len(data.equilibria) == 3
+    assert data.count == "one or three" and len(data.equilibria) == 3
     for root, stable in data.equilibria:
+        assert abs(f_3_6(root, ROD_CASES["cusp"], load)) < 1e-9
         h = 1e-6
         slope = (f_3_6(root + h, ROD_CASES["cusp"], load) - f_3_6(root - h, ROD_CASES["cusp"], load)) / (2 * h)
         J = np.array([[-0.5 * slope, -1.0], [slope, 0.0]])
         assert stable == (np.linalg.eigvals(J).real.max() < 0)
+
+
+def test_phase_portrait_of_the_sliding_point_is_1_10_with_kelvin_voigt():
+    # m u'' ... : u' = -v - 2 b f, v' = f with f = (u + Y)/m (1.10)-(1.12); u* = -Y
+    data = phase_portrait_data("sliding-point", values={"m": 2.0, "b": 0.25, "Y": -1.0}, resolution=9)
+    f = (data.u - 1.0) / 2.0
+    assert np.allclose(data.dv, f) and np.allclose(data.du, -data.v - 0.5 * f)
+    assert data.equilibria == [(1.0, True)]
 
 
 def test_phase_portrait_plot(ax):
@@ -257,9 +266,21 @@ def test_paper_figures_writes_non_empty_pngs(tmp_path):
         "fig1a_guides.png",
         "fig1b_guides.png",
         "rod_f_cases.png",
+        "rod_phase_portrait.png",
         "brake_alpha_mu.png",
         "brake_hopf.png",
-        "rod_phase_portrait.png",
+        "sliding_point_phase_portrait.png",
     ]
     for path in paths:
         assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and path.stat().st_size > 1000
+
+
+def test_scene_figures_have_captions_from_the_data(tmp_path):
+    import contactsym as cs
+
+    written = scene_figures(cs.scene("painleve-klein-guides"), tmp_path, resolution=30, dpi=30)
+    captions = list(written)
+    assert [p.name for p in written.values()] == ["fig1a_guides.png", "fig1b_guides.png"]
+    assert captions[0].startswith("Fig. 1a") and "inside the region stable for every law" in captions[0]
+    assert captions[1].startswith("Fig. 1b") and "depends on the contact law" in captions[1]
+    assert scene_figures("no-such-scene", tmp_path / "none") == {}
