@@ -58,7 +58,7 @@ class ReportError(ContactsymError):
 
 @dataclass(frozen=True)
 class Figure:
-    """A PNG for the report: its path and caption (plain text)."""
+    """A PNG for the report: its path and caption (LaTeX)."""
 
     path: Path
     caption: str
@@ -646,7 +646,7 @@ def _figures_section(figures: list[Figure], notes: list[str]) -> str:
         text.append(
             "\\begin{figure}[htbp]\n\\centering\n"
             f"\\includegraphics[width=0.85\\textwidth]{{figures/{figure.path.name}}}\n"
-            f"\\caption{{{_escape(figure.caption)}}}\n\\end{{figure}}"
+            f"\\caption{{{figure.caption}}}\n\\end{{figure}}"
         )
     if not figures:
         text.append("No figures for this scene.")
@@ -851,10 +851,23 @@ def summary_text(data: dict) -> str:
 
 #: Words in a figure's file name that tie it to a scene.
 FIGURE_WORDS = {
-    "sliding-point": ("sliding", "point"),
-    "painleve-klein-rod": ("rod", "f_u", "fu", "section3", "s3", "fold", "cusp", "three"),
-    "painleve-klein-guides": ("guides", "fig1", "fig_1", "v1", "square"),
-    "brake": ("brake", "squeal", "alpha_mu", "disc"),
+    "sliding-point": ("sliding",),
+    "painleve-klein-rod": ("rod",),
+    "painleve-klein-guides": ("guides", "fig1"),
+    "brake": ("brake",),
+}
+
+#: Captions (LaTeX) of the figures of ``contactsym.plotting.paper_figures``, by file name.
+CAPTIONS = {
+    "fig1a_guides": r"Fig.~1a of the paper, derived: the $(v_1, v_2)$ plane at $\varphi = 60^\circ \ge \arctan\sqrt{2}$, "
+    r"where the square (5.8) lies in the stability region (5.6).",
+    "fig1b_guides": r"Fig.~1b of the paper, derived: the $(v_1, v_2)$ plane at $\varphi = 45^\circ < \arctan\sqrt{2}$, "
+    r"where part of the square (5.8) is law-dependent.",
+    "rod_f_cases": r"$f(u)$ of the deformable rod (3.7) in the three cases of \S3: a unique stable root, a fold, a cusp.",
+    "rod_phase_portrait": r"Phase portrait of the fast subsystem (2.1) of the rod.",
+    "brake_alpha_mu": r"The brake's $(\alpha, \mu)$ plane: stable for every law where $\mu \le |\cot\alpha|$ (6.3), "
+    r"law-dependent above.",
+    "brake_hopf": r"The brake's Hopf line (6.4) and its frequency $\omega$.",
 }
 
 
@@ -863,12 +876,12 @@ def _paths(result, directory: Path) -> list[tuple[Path, str]]:
     if isinstance(result, dict):
         items = [(Path(p), str(k)) for k, p in result.items() if isinstance(p, (str, Path))]
     elif isinstance(result, (list, tuple)):
-        items = [(Path(p), Path(p).stem) for p in result if isinstance(p, (str, Path))]
+        items = [(Path(p), Path(p).stem.replace("_", " ")) for p in result if isinstance(p, (str, Path))]
     else:
         items = []
     if not items:
-        items = [(p, p.stem) for p in sorted(directory.glob("*.png"))]
-    return [(p, caption.replace("_", " ")) for p, caption in items if p.suffix == ".png" and p.exists()]
+        items = [(p, p.stem.replace("_", " ")) for p in sorted(directory.glob("*.png"))]
+    return [(p, CAPTIONS.get(p.stem) or _escape(caption)) for p, caption in items if p.suffix == ".png" and p.exists()]
 
 
 def _scene_of(path: Path) -> str | None:
@@ -919,7 +932,30 @@ class FigureSource:
         except Exception as error:  # a figure that fails must not cost the rest of the report
             return [], [f"No figures: drawing them failed with {type(error).__name__}: {error}"]
         chosen = [(p, c) for p, c in self._paper if _scene_of(p) in (scene.name, None)]
-        return chosen, [] if chosen else ["No figure of contactsym.plotting.paper_figures belongs to this scene."]
+        notes = []
+        if scene.k == 1 and not any("phase" in p.stem for p, _ in chosen):
+            portrait, note = self._phase_portrait(plotting, scene)
+            chosen += portrait
+            notes += [note] if note else []
+        if not chosen:
+            notes.append("No figure of contactsym.plotting.paper_figures belongs to this scene.")
+        return chosen, notes
+
+    def _phase_portrait(self, plotting, scene) -> tuple[list[tuple[Path, str]], str]:
+        """A phase portrait of the fast subsystem (2.1) of a one-contact scene."""
+        if not (hasattr(plotting, "phase_portrait_data") and hasattr(plotting, "phase_portrait_plot")):
+            return [], ""
+        from matplotlib.figure import Figure as MplFigure
+
+        try:
+            data = plotting.phase_portrait_data(scene.name)
+            figure = MplFigure(figsize=(7.0, 5.0))
+            plotting.phase_portrait_plot(data, ax=figure.add_subplot())
+            path = self.workdir / f"{scene.name.replace('-', '_')}_phase_portrait.png"
+            figure.savefig(path, dpi=150, bbox_inches="tight")
+        except Exception as error:  # a figure that fails must not cost the rest of the report
+            return [], f"No phase portrait: drawing it failed with {type(error).__name__}: {error}"
+        return [(path, r"Phase portrait of the fast subsystem (2.1) of this scene.")], ""
 
 
 # --- files ----------------------------------------------------------------------------------------

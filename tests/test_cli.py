@@ -112,7 +112,10 @@ def test_report_all_scenes_writes_tex_json_figures_and_summary(capfd, tmp_path):
         directory = all_reports / name
         tex = (directory / "report.tex").read_text()
         assert tex.startswith(r"\documentclass") and tex.rstrip().endswith(r"\end{document}")
-        assert (directory / "figures").is_dir()
+        pngs = sorted((directory / "figures").glob("*.png"))
+        assert pngs, f"no figures for {name}"  # every scene has its figures
+        for png in pngs:
+            assert f"\\includegraphics[width=0.85\\textwidth]{{figures/{png.name}}}" in tex
         assert not (directory / "report.pdf").exists()  # --no-pdf
         data = json.loads((directory / "conditions.json").read_text())
         assert data["scene"] == name
@@ -136,6 +139,8 @@ def test_report_one_scene_makes_the_pdf(capfd, tmp_path):
     pdf = tmp_path / "sliding-point" / "report.pdf"
     assert pdf.read_bytes().startswith(b"%PDF")
     assert "wrote report.tex, report.pdf, conditions.json" in err
+    log = (tmp_path / "sliding-point" / "report.log").read_text(errors="replace")
+    assert "figures/sliding_point_phase_portrait.png" in log  # the PDF has its figure
     assert sorted(p.name for p in tmp_path.iterdir()) == ["sliding-point"]
 
 

@@ -97,7 +97,7 @@ class _FakePlotting:
     def paper_figures(directory):
         return {
             "brake map": a_png(Path(directory) / "brake_alpha_mu.png"),
-            "Fig. 1a": a_png(Path(directory) / "fig1a_guides.png"),
+            "Extra_1 & more": a_png(Path(directory) / "guides_extra.png"),
         }
 
 
@@ -109,7 +109,7 @@ def test_figure_source_shares_figures_out_by_scene(tmp_path, monkeypatch):
     brake, notes = source.for_scene(cs.scene("brake"))
     assert [p.name for p, _ in brake] == ["brake_alpha_mu.png"] and notes == []
     guides, _ = source.for_scene(cs.scene("painleve-klein-guides"))
-    assert [c for _, c in guides] == ["Fig. 1a"]
+    assert [c for _, c in guides] == [r"Extra\_1 \& more"]  # a caption from the plotting module, escaped
     rod, notes = source.for_scene(cs.scene("painleve-klein-rod"))
     assert rod == [] and "belongs to this scene" in notes[0]
 
@@ -132,7 +132,9 @@ def test_report_with_a_figure_compiles_and_includes_it(tmp_path):
     (tmp_path / "figures").mkdir()
     png = a_png(tmp_path / "figures" / "test_plane.png")
     tex = tmp_path / "report.tex"
-    tex.write_text(report_tex(cs.scene("brake"), [Figure(png, "a test figure (v_1, v_2)")], ["a note: 100% & done"]))
+    tex.write_text(
+        report_tex(cs.scene("brake"), [Figure(png, r"a test figure, $(v_1, v_2)$")], ["a note: 100% & done"])
+    )
     pdf = compile_pdf(tex)
     assert pdf is not None and pdf.read_bytes().startswith(b"%PDF")
     log = tex.with_suffix(".log").read_text(errors="replace")
