@@ -751,7 +751,8 @@ def phase_portrait_data(
     Parameters
     ----------
     scene : str
-        A built-in scene with one contact.
+        A built-in scene with one contact, or a key of :data:`ROD_CASES` (the rod in that
+        case, at its first load).
     values : dict, optional
         Numbers for its presentation symbols (by name; a load such as ``Y(x, xdot)`` by
         its function name); default :data:`PORTRAIT_VALUES`.
@@ -775,12 +776,19 @@ def phase_portrait_data(
     ('one or three', [True, False, True])
     >>> phase_portrait_data("sliding-point", resolution=10).equilibria
     [(1.0, True)]
+    >>> len(phase_portrait_data("fold", resolution=10).equilibria)
+    2
     """
     from .scenes import scene as built_in
 
     name = scene
+    if name in ROD_CASES:
+        case = {k: v for k, v in ROD_CASES[name].items() if k != "loads"}
+        defaults, name = {**case, "X^*": ROD_CASES[name]["loads"][0]}, "painleve-klein-rod"
+    else:
+        defaults = PORTRAIT_VALUES.get(name, {})
     scene = built_in(name)
-    values = dict(PORTRAIT_VALUES[name] if values is None else values)
+    values = dict(defaults if values is None else values)
     fast = scene.fast_subsystem()
     if scene.k != 1:
         raise ValueError(f"phase portraits are for one contact; '{name}' has k = {scene.k}.")

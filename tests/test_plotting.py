@@ -251,6 +251,12 @@ def test_phase_portrait_of_the_sliding_point_is_1_10_with_kelvin_voigt():
     assert data.equilibria == [(1.0, True)]
 
 
+def test_phase_portrait_of_a_rod_case_by_name():
+    data = phase_portrait_data("cusp", resolution=9)
+    assert data.scene == "painleve-klein-rod" and data.values["X^*"] == ROD_CASES["cusp"]["loads"][0]
+    assert data.equilibria == phase_portrait_data("painleve-klein-rod", resolution=9).equilibria
+
+
 def test_phase_portrait_plot(ax):
     artists = phase_portrait_plot(phase_portrait_data(resolution=12), ax=ax)
     assert drawn_on(artists, ax)
