@@ -514,9 +514,29 @@ _CASE_TITLES = {
 def rod_f_plot(data: RodFData, ax=None, *, legend=True):
     """Draw f(u) for each load, roots marked (filled: stable, f' > 0; open: unstable).
 
+    Parameters
+    ----------
+    data : RodFData
+        From :func:`rod_f_data`.
+    ax : matplotlib Axes, optional
+        Default: the current Axes.
+    legend : bool
+        Add a legend.
+
     Returns
     -------
     list of Artist
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> artists = rod_f_plot(rod_f_data("fold", points=20), ax=ax)
+    >>> ax.get_xlabel(), ax.get_ylabel()
+    ('$u = R$', '$f(u)$')
+    >>> plt.close(fig)
     """
     ax = _axes(ax)
     artists = [ax.axhline(0.0, color="0.4", lw=0.8)]
@@ -594,9 +614,29 @@ def brake_map_data(*, mu_max=2.0, resolution=300) -> BrakeMapData:
 def brake_map_plot(data: BrakeMapData, ax=None, *, legend=True):
     """Draw the (alpha, mu) map; alpha in degrees.
 
+    Parameters
+    ----------
+    data : BrakeMapData
+        From :func:`brake_map_data`.
+    ax : matplotlib Axes, optional
+        Default: the current Axes.
+    legend : bool
+        Add a legend.
+
     Returns
     -------
     list of Artist
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> artists = brake_map_plot(brake_map_data(resolution=20), ax=ax)
+    >>> print(ax.get_ylabel())
+    $\\mu$
+    >>> plt.close(fig)
     """
     ax = _axes(ax)
     X = np.degrees(data.alpha)
@@ -674,9 +714,29 @@ def brake_hopf_data(*, Psi=-1.0, m=1.0, mu_max=3.0, Phi_min=-10.0, resolution=30
 def brake_hopf_plot(data: BrakeHopfData, ax=None, *, legend=True):
     """Draw the (mu, Phi) plane: stable single-hatched, unstable double-hatched, the Hopf line.
 
+    Parameters
+    ----------
+    data : BrakeHopfData
+        From :func:`brake_hopf_data`.
+    ax : matplotlib Axes, optional
+        Default: the current Axes.
+    legend : bool
+        Add a legend.
+
     Returns
     -------
     list of Artist
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> artists = brake_hopf_plot(brake_hopf_data(resolution=20), ax=ax)
+    >>> print(ax.get_xlabel(), ax.get_ylabel())
+    $\\mu$ $\\Phi$
+    >>> plt.close(fig)
     """
     ax = _axes(ax)
     grid = RegionData("mu", "Phi", data.mu, data.Phi, data.masks["stable"], data.stable)
@@ -820,9 +880,29 @@ def phase_portrait_data(
 def phase_portrait_plot(data: PhasePortraitData, ax=None, *, legend=True):
     """Stream lines of (u', v'), equilibria (u*, 0) marked: filled stable, open unstable.
 
+    Parameters
+    ----------
+    data : PhasePortraitData
+        From :func:`phase_portrait_data`.
+    ax : matplotlib Axes, optional
+        Default: the current Axes.
+    legend : bool
+        Add a legend.
+
     Returns
     -------
     list of Artist
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> artists = phase_portrait_plot(phase_portrait_data("sliding-point", resolution=10), ax=ax)
+    >>> ax.get_xlabel(), ax.get_ylabel()
+    ('$u$', '$v$')
+    >>> plt.close(fig)
     """
     ax = _axes(ax)
     before = set(ax.patches)
@@ -961,6 +1041,19 @@ def scene_figures(scene, directory, *, resolution=400, dpi=150) -> dict[str, Pat
     resolution : int
         Grid points per axis for the region plots (lower is faster).
     dpi : int
+
+    Returns
+    -------
+    dict of str to Path
+        Caption (plain text, from the computed data) -> PNG file.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as directory:
+    ...     written = scene_figures("brake", directory, resolution=20, dpi=20)
+    ...     sorted(p.name for p in written.values())
+    ['brake_alpha_mu.png', 'brake_hopf.png']
     """
     name = scene if isinstance(scene, str) else scene.name
     directory = Path(directory)
