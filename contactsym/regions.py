@@ -204,7 +204,7 @@ def _univariate(condition: sp.Basic) -> sp.Basic:
         return condition
 
 
-def closed_form(condition, scene=None, solve_for: sp.Symbol | None = None) -> sp.Basic:
+def closed_form(condition, scene=None, solve_for: sp.Symbol | None = None, signs=None) -> sp.Basic:
     """The simplest equivalent form of a condition, in the scene's presentation variables.
 
     Examples
@@ -220,7 +220,7 @@ def closed_form(condition, scene=None, solve_for: sp.Symbol | None = None) -> sp
     ((v_1 + 1)*(v_2 + 1) >= 0) & (v_1 < 2*kappa**2 + 1) & (v_2 < 2*kappa**2 + 1) & (v_1 + v_2 < 2*kappa**2)
     """
     positive = tuple(getattr(scene, "positive_expressions", ()))
-    condition = scene.present(condition) if scene is not None else sp.sympify(condition)
+    condition = scene.present(condition, signs) if scene is not None else sp.sympify(condition)
     reduced = _reduce(condition, positive, solve_for)
     if len(reduced.free_symbols) == 1 and isinstance(reduced, BooleanFunction):
         return _univariate(reduced)
@@ -251,7 +251,7 @@ def scene_regions(scene, signs=None) -> dict[str, Region]:
         raw = getattr(stability, attribute)
         if raw is None:
             continue
-        condition = closed_form(raw, scene, solve_for=getattr(scene, "solve_for", None))
+        condition = closed_form(raw, scene, solve_for=getattr(scene, "solve_for", None), signs=signs)
         regions[name] = Region(condition, name=name, description=f"{scene.name}: {attribute}")
     return regions
 

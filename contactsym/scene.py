@@ -438,18 +438,26 @@ class Scene:
         free = set().union(*(e.free_symbols for e in exprs)) - set(fast.u) - set(fast.v)
         return tuple(sorted(free, key=str))
 
-    def present(self, expr: sp.Expr) -> sp.Expr:
-        """Rewrite in the scene's presentation variables (e.g. kappa, v_j, mu_pm)."""
-        from .algebra import reduce_signs
+    def present(self, expr: sp.Expr, signs=None) -> sp.Expr:
+        """Rewrite in the scene's presentation variables (e.g. kappa, v_j, mu_pm).
+
+        ``signs`` gives the sign pattern of ``expr`` when it belongs to one piece, so
+        that the presentation's sign symbols (v_j = kappa s_j mu_j) take its values.
+        """
+        from .algebra import reduce_signs, sign_symbols
 
         expr = sp.sympify(expr)
         if not self.presentation or expr in (sp.true, sp.false):
             return expr
         if isinstance(expr, sp.core.relational.Relational):
-            return expr.func(self.present(expr.lhs), self.present(expr.rhs))
+            return expr.func(self.present(expr.lhs, signs), self.present(expr.rhs, signs))
         if isinstance(expr, sp.logic.boolalg.BooleanFunction):
-            return expr.func(*[self.present(arg) for arg in expr.args])
-        replaced = expr.subs(self.presentation)
+            return expr.func(*[self.present(arg, signs) for arg in expr.args])
+        presentation = self.presentation
+        if signs is not None:
+            values = dict(zip(sign_symbols(len(signs)), signs))
+            presentation = {k: sp.sympify(v).subs(values) for k, v in presentation.items()}
+        replaced = expr.subs(presentation)
         if isinstance(replaced, sp.MatrixBase):
             return replaced.applyfunc(lambda e: reduce_signs(sp.cancel(sp.expand(e))))
         return reduce_signs(sp.cancel(sp.expand(replaced)))
