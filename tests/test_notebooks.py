@@ -60,9 +60,21 @@ def _execute(nb, path: Path):
     return client.execute()
 
 
+EXPECTED = (
+    "00_quickstart",
+    "01_sliding_point",
+    "02_separation_of_motions",
+    "03_painleve_klein_rod",
+    "04_two_contacts",
+    "05_painleve_klein_guides",
+    "06_brake_squeal",
+    "07_errata",
+)
+
+
 def test_there_are_notebooks():
     names = {p.stem for p in NOTEBOOK_DIR.glob("*.ipynb")}
-    assert {"00_quickstart"} <= names
+    assert set(EXPECTED) <= names, f"missing notebooks: {sorted(set(EXPECTED) - names)}"
 
 
 def test_the_kernel_is_this_interpreter(kernel_env):
