@@ -788,7 +788,13 @@ def _build_fast(scene, vals: _Values, laws, unilateral, form: str) -> OdeSystem:
         _check_free(rhs, set(fast.u) | set(fast.v), f"the fast subsystem of '{scene.name}'")
         names = [str(s) for s in (*fast.u, *fast.v)]
         return _first_order(
-            tau, [*fast.u, *fast.v], rhs, list(fast.u), names=names, reaction_names=names[: scene.k], time="tau",
+            tau,
+            [*fast.u, *fast.v],
+            rhs,
+            list(fast.u),
+            names=names,
+            reaction_names=names[: scene.k],
+            time="tau",
             description=description,
         )
     suffix = [""] if scene.k == 1 else [f"_{j}" for j in range(1, scene.k + 1)]
@@ -800,11 +806,26 @@ def _build_fast(scene, vals: _Values, laws, unilateral, form: str) -> OdeSystem:
     _check_free(laws_QV, set(Q) | set(V), f"the compliance laws of '{scene.name}'")
     names = [str(s) for s in Q + V]
     system = _second_order(
-        tau, Q, V, accelerations, list(scene.reactions), laws_QV, Q, _clamps(scene, unilateral),
-        names=names, time="tau", description=description,
+        tau,
+        Q,
+        V,
+        accelerations,
+        list(scene.reactions),
+        laws_QV,
+        Q,
+        _clamps(scene, unilateral),
+        names=names,
+        time="tau",
+        description=description,
     )
     return OdeSystem(
-        system.names, system.fun, system.jac, system.reactions, tuple(str(u) for u in fast.u), "tau", description,
+        system.names,
+        system.fun,
+        system.jac,
+        system.reactions,
+        tuple(str(u) for u in fast.u),
+        "tau",
+        description,
         system.extra,
     )
 
@@ -936,7 +957,9 @@ def integrate(
     start, end = _check_span(span, "span")
     z0 = np.asarray(z0, dtype=float).ravel()
     if z0.shape != (len(system.names),):
-        raise NumericsError(f"the initial state has {z0.size} components; {system.description} has {len(system.names)}.")
+        raise NumericsError(
+            f"the initial state has {z0.size} components; {system.description} has {len(system.names)}."
+        )
     if not np.all(np.isfinite(z0)):
         raise NumericsError(f"the initial state {z0.tolist()} is not finite.")
     rtol = _positive(rtol, "rtol", "it is the relative tolerance")
@@ -973,8 +996,16 @@ def integrate(
     status, message, result = "ok", "integrated to the end", None
     try:
         result = solve_ivp(
-            fun, (start, end), z0, method=method, t_eval=t_eval, dense_output=dense_output,
-            events=solver_events or None, rtol=rtol, atol=atol, **options,
+            fun,
+            (start, end),
+            z0,
+            method=method,
+            t_eval=t_eval,
+            dense_output=dense_output,
+            events=solver_events or None,
+            rtol=rtol,
+            atol=atol,
+            **options,
         )
         if result.status == -1:
             status, message = "failed", f"{method} failed: {result.message}"
@@ -998,8 +1029,21 @@ def integrate(
     if result is None:
         empty = np.empty((len(system.names), 0))
         return Simulation(
-            np.empty(0), empty, system.names, np.empty((len(system.reaction_names), 0)), system.reaction_names,
-            status, message, method, analytic, counter["n"], 0, 0, cpu, wall, system.time,
+            np.empty(0),
+            empty,
+            system.names,
+            np.empty((len(system.reaction_names), 0)),
+            system.reaction_names,
+            status,
+            message,
+            method,
+            analytic,
+            counter["n"],
+            0,
+            0,
+            cpu,
+            wall,
+            system.time,
         )
     if status == "impact" and (t_eval is not None):
         # keep the state where the catastrophe was detected
@@ -1007,14 +1051,30 @@ def integrate(
         states = np.column_stack([result.y, result.y_events[-1][0]])
     else:
         times, states = result.t, result.y
-    reactions = np.column_stack([system.reactions(ti, states[:, i]) for i, ti in enumerate(times)]) if times.size else (
-        np.empty((len(system.reaction_names), 0))
+    reactions = (
+        np.column_stack([system.reactions(ti, states[:, i]) for i, ti in enumerate(times)])
+        if times.size
+        else (np.empty((len(system.reaction_names), 0)))
     )
     if status == "ok" and not (np.all(np.isfinite(states)) and np.all(np.isfinite(reactions))):
         status, message = "failed", "the solution is not finite; check the parameters."
     return Simulation(
-        times, states, system.names, reactions, system.reaction_names, status, message, method, analytic,
-        counter["n"], int(result.njev), int(result.nlu), cpu, wall, system.time, result.sol,
+        times,
+        states,
+        system.names,
+        reactions,
+        system.reaction_names,
+        status,
+        message,
+        method,
+        analytic,
+        counter["n"],
+        int(result.njev),
+        int(result.nlu),
+        cpu,
+        wall,
+        system.time,
+        result.sol,
         {"t_events": result.t_events, "y_events": result.y_events},
     )
 
@@ -1198,7 +1258,9 @@ def simulate_full(
         for j in range(k):
             law = _contact_law(scene, j, laws)
             N_of_Q = lambdify_cse([Qv], _law_scaled(scene, j, law, vals, Qv, sp.S.Zero))
-            targets.append(eps**2 * _invert_law(lambda Q, f=N_of_Q: float(f(Q)), u_star[j], abs(u_star[j]) / (S[j] * eps**2)))
+            targets.append(
+                eps**2 * _invert_law(lambda Q, f=N_of_Q: float(f(Q)), u_star[j], abs(u_star[j]) / (S[j] * eps**2))
+            )
         z0 = _place_gaps(z0, n, determined, gap_function, gap_jacobian, np.array(targets))
     acc_jac = system.extra["acc_jac"]
     _, dGdN = acc_jac(span[0], *z0, *system.reactions(span[0], z0))
@@ -1212,8 +1274,12 @@ def simulate_full(
             scale[i] = max(scale[i], float(inverse[row] @ gap_scale))
             scale[n + i] = max(scale[n + i], float(inverse[row] @ rate_scale))
     duration = span[1] - span[0]
-    acceleration = np.abs(system.fun(span[0], z0)[n:]) if branch is None else np.abs(
-        np.asarray(system.extra["acc_value"](span[0], *z0, *[float(substitute(u, frozen)) for u in branch.u_star]))
+    acceleration = (
+        np.abs(system.fun(span[0], z0)[n:])
+        if branch is None
+        else np.abs(
+            np.asarray(system.extra["acc_value"](span[0], *z0, *[float(substitute(u, frozen)) for u in branch.u_star]))
+        )
     )
     for i in range(n):
         if i not in determined:
@@ -1225,11 +1291,25 @@ def simulate_full(
         atol = rtol * scale
     bound = reaction_bound if reaction_bound is not None else bound_factor * N_scale
     run = integrate(
-        system, span, z0, method=method, jacobian=jacobian, rtol=rtol, atol=atol, t_eval=t_eval,
-        dense_output=dense_output, max_rhs=max_rhs, reaction_bound=bound,
+        system,
+        span,
+        z0,
+        method=method,
+        jacobian=jacobian,
+        rtol=rtol,
+        atol=atol,
+        t_eval=t_eval,
+        dense_output=dense_output,
+        max_rhs=max_rhs,
+        reaction_bound=bound,
     )
-    extra = {"eps": eps, "reaction_scale": N_scale, "reaction_bound": bound, "atol": atol,
-             "equilibrium": None if branch is None else branch.signs}
+    extra = {
+        "eps": eps,
+        "reaction_scale": N_scale,
+        "reaction_bound": bound,
+        "atol": atol,
+        "equilibrium": None if branch is None else branch.signs,
+    }
     if branch is None and run.status == "impact":
         extra["no_equilibrium"] = True
     return _replace(run, extra={**run.extra, **extra})
@@ -1304,8 +1384,12 @@ def simulate_reduced(
     if missing:
         raise NumericsError(f"give the initial values of {missing} for the reduced system.")
     fixed_values = {s: v for s, v in given.items() if s not in free_state}
-    system = reduced_system(scene, _Values(dict(with_state.numbers), vals.functions), signs=signs,
-                            state={**fixed_values, **{s: given[s] for s in free_state}})
+    system = reduced_system(
+        scene,
+        _Values(dict(with_state.numbers), vals.functions),
+        signs=signs,
+        state={**fixed_values, **{s: given[s] for s in free_state}},
+    )
     z0 = np.array([given[s] for s in free_state], dtype=float)
     if atol is None:
         duration = span[1] - span[0]
@@ -1316,8 +1400,9 @@ def simulate_reduced(
         scale[m:] = np.maximum(scale[m:], rhs[m:] * duration)
         top = float(scale.max(initial=0.0))
         atol = rtol * np.maximum(scale, 1e-12 * top if top > 0 else 1.0)
-    return integrate(system, span, z0, method=method, rtol=rtol, atol=atol, t_eval=t_eval,
-                     dense_output=dense_output, max_rhs=max_rhs)
+    return integrate(
+        system, span, z0, method=method, rtol=rtol, atol=atol, t_eval=t_eval, dense_output=dense_output, max_rhs=max_rhs
+    )
 
 
 def _fast_scales(scene, system: OdeSystem, z_ref, N_scale: float, form: str) -> np.ndarray:
@@ -1398,15 +1483,34 @@ def simulate_fast(
     if atol is None:
         reference = z0
         if branch is not None:
-            reference = _equilibrium_state(scene, system, chosen, [float(substitute(u, vals)) for u in branch.u_star],
-                                           vals, laws)
+            reference = _equilibrium_state(
+                scene, system, chosen, [float(substitute(u, vals)) for u in branch.u_star], vals, laws
+            )
         scale = np.maximum(np.abs(z0), _fast_scales(scene, system, reference, N_scale, chosen))
         atol = rtol * scale
     bound = reaction_bound if reaction_bound is not None else bound_factor * N_scale
-    run = integrate(system, span, z0, method=method, rtol=rtol, atol=atol, t_eval=t_eval, dense_output=dense_output,
-                    max_rhs=max_rhs, reaction_bound=bound)
-    return _replace(run, extra={**run.extra, "reaction_scale": N_scale, "reaction_bound": bound, "form": chosen,
-                                "equilibrium": None if branch is None else branch.signs})
+    run = integrate(
+        system,
+        span,
+        z0,
+        method=method,
+        rtol=rtol,
+        atol=atol,
+        t_eval=t_eval,
+        dense_output=dense_output,
+        max_rhs=max_rhs,
+        reaction_bound=bound,
+    )
+    return _replace(
+        run,
+        extra={
+            **run.extra,
+            "reaction_scale": N_scale,
+            "reaction_bound": bound,
+            "form": chosen,
+            "equilibrium": None if branch is None else branch.signs,
+        },
+    )
 
 
 # --- certified decisions: floats with an error bound, rationals inside the band ----------
@@ -1428,8 +1532,12 @@ def _exact_float(x: float, value) -> bool:
         return False
 
 
-def _bounded(expr: sp.Expr, env: dict, memo: dict) -> tuple[float, float]:
-    """(value, bound on its floating-point error) by running error analysis."""
+def _bounded(expr: sp.Expr, env: dict, memo: dict) -> tuple[float, float, float]:
+    """(value, bound on its floating-point error, magnitude) by running error analysis.
+
+    The magnitude is the value the expression would have with every sum replaced by the
+    sum of absolute values: the scale against which cancellation is measured.
+    """
     if expr in memo:
         return memo[expr]
     result = _bounded_node(expr, env, memo)
@@ -1437,75 +1545,79 @@ def _bounded(expr: sp.Expr, env: dict, memo: dict) -> tuple[float, float]:
     return result
 
 
-def _bounded_node(expr, env, memo) -> tuple[float, float]:
+def _bounded_node(expr, env, memo) -> tuple[float, float, float]:
     if expr.is_Symbol:
         if expr not in env:
             raise NumericsError(f"no value for {expr}; add it to values.")
-        return env[expr]
+        v, e = env[expr]
+        return v, e, abs(v)
     if expr.is_Integer or expr.is_Rational:
         v = float(expr)
-        return v, 0.0 if _exact_float(v, Fraction(int(expr.p), int(expr.q))) else _UNIT * abs(v)
+        return v, 0.0 if _exact_float(v, Fraction(int(expr.p), int(expr.q))) else _UNIT * abs(v), abs(v)
     if expr.is_Float:
         v = float(expr)
-        return v, 0.0 if expr._prec <= 53 else _UNIT * abs(v)
+        return v, 0.0 if expr._prec <= 53 else _UNIT * abs(v), abs(v)
     if expr.is_NumberSymbol:
         v = float(expr)
-        return v, _UNIT * abs(v)
+        return v, _UNIT * abs(v), abs(v)
     if expr.is_Add:
         parts = [_bounded(a, env, memo) for a in expr.args]
         v = math.fsum(p[0] for p in parts)  # correctly rounded sum
-        return v, math.fsum(p[1] for p in parts) + _UNIT * abs(v)
+        return v, math.fsum(p[1] for p in parts) + _UNIT * abs(v), math.fsum(p[2] for p in parts)
     if expr.is_Mul:
         parts = [_bounded(a, env, memo) for a in expr.args]
-        v, exact, widened = 1.0, 1.0, 1.0
-        for value, error in parts:
+        v, exact, widened, magnitude = 1.0, 1.0, 1.0, 1.0
+        for value, error, size in parts:
             v *= value
             exact *= abs(value)
             widened *= abs(value) + error
-        return v, (widened - exact) * (1 + 4 * _UNIT * len(parts)) + _gamma(len(parts)) * abs(v)
+            magnitude *= size
+        return v, (widened - exact) * (1 + 4 * _UNIT * len(parts)) + _gamma(len(parts)) * abs(v), magnitude
     if expr.is_Pow:
         base, exponent = expr.args
-        b, eb = _bounded(base, env, memo)
+        b, eb, mb = _bounded(base, env, memo)
         if exponent.is_Integer:
             n = int(exponent)
             v = b**n
             if n >= 0:
                 spread = (abs(b) + eb) ** n - abs(b) ** n
+                magnitude = mb**n
             else:
                 if abs(b) <= eb:
                     raise _Unbounded
                 spread = (abs(b) - eb) ** n - abs(b) ** n
-            return v, spread * (1 + 8 * _UNIT * abs(n)) + 2 * _gamma(abs(n) + 1) * abs(v)
+                magnitude = abs(v)
+            return v, spread * (1 + 8 * _UNIT * abs(n)) + 2 * _gamma(abs(n) + 1) * abs(v), magnitude
         if exponent.is_Rational:
             r = float(exponent)
             if b - eb <= 0:
                 raise _Unbounded
             v = b**r
             spread = max(abs((b + eb) ** r - v), abs((b - eb) ** r - v))
-            return v, spread * (1 + 8 * _UNIT) + 4 * _UNIT * abs(v)
+            return v, spread * (1 + 8 * _UNIT) + 4 * _UNIT * abs(v), abs(v)
         raise _Unbounded
     if isinstance(expr, (sp.sin, sp.cos)):
-        x, ex = _bounded(expr.args[0], env, memo)
+        x, ex, _ = _bounded(expr.args[0], env, memo)
         v = math.sin(x) if isinstance(expr, sp.sin) else math.cos(x)
-        return v, ex + 2 * _UNIT * abs(v) + _UNIT * 1e-3
+        return v, ex + 2 * _UNIT * abs(v) + _UNIT * 1e-3, abs(v)
     if isinstance(expr, sp.exp):
-        x, ex = _bounded(expr.args[0], env, memo)
+        x, ex, _ = _bounded(expr.args[0], env, memo)
         v = math.exp(x)
-        return v, (math.exp(x + ex) - v) * (1 + 8 * _UNIT) + 2 * _UNIT * v
+        return v, (math.exp(x + ex) - v) * (1 + 8 * _UNIT) + 2 * _UNIT * v, v
     if isinstance(expr, sp.log):
-        x, ex = _bounded(expr.args[0], env, memo)
+        x, ex, _ = _bounded(expr.args[0], env, memo)
         if x - ex <= 0:
             raise _Unbounded
         v = math.log(x)
-        return v, (v - math.log(x - ex)) * (1 + 8 * _UNIT) + 2 * _UNIT * abs(v)
+        return v, (v - math.log(x - ex)) * (1 + 8 * _UNIT) + 2 * _UNIT * abs(v), abs(v)
     if isinstance(expr, sp.Abs):
-        x, ex = _bounded(expr.args[0], env, memo)
-        return abs(x), ex
+        x, ex, mx = _bounded(expr.args[0], env, memo)
+        return abs(x), ex, mx
     if isinstance(expr, sp.sign):
-        x, ex = _bounded(expr.args[0], env, memo)
+        x, ex, _ = _bounded(expr.args[0], env, memo)
         if abs(x) <= ex:
             raise _Unbounded
-        return math.copysign(1.0, x) if x else 0.0, 0.0
+        return math.copysign(1.0, x) if x else 0.0, 0.0, 1.0
     raise _Unbounded
 
 
@@ -1521,8 +1633,12 @@ def _environment(values: Mapping) -> tuple[dict, dict]:
             env[symbol] = (v, 0.0 if number._prec <= 53 else _UNIT * abs(v))
         else:
             exact[symbol] = number
-            env[symbol] = (v, 0.0 if number.is_Rational and _exact_float(v, Fraction(int(number.p), int(number.q)))
-                           else _UNIT * abs(v))
+            env[symbol] = (
+                v,
+                0.0
+                if number.is_Rational and _exact_float(v, Fraction(int(number.p), int(number.q)))
+                else _UNIT * abs(v),
+            )
     return env, exact
 
 
@@ -1533,7 +1649,9 @@ def _exact_sign(expr: sp.Expr) -> int:
     if expr.is_Rational:
         return int(sp.sign(expr))
     if expr.free_symbols:
-        raise NumericsError(f"cannot decide the sign of {expr}: values are missing for {sorted(map(str, expr.free_symbols))}.")
+        raise NumericsError(
+            f"cannot decide the sign of {expr}: values are missing for {sorted(map(str, expr.free_symbols))}."
+        )
     for precision in (30, 100, 300):
         try:
             value = expr.evalf(precision, strict=True)
@@ -1552,7 +1670,9 @@ def certified_sign(expr, values: Mapping | None = None, *, band: float = 0.0) ->
     The expression is evaluated in floating point with a rigorous running error bound;
     when the value is not clearly outside ``max(band * magnitude, 2 * error bound)`` it
     is recomputed exactly, with the float inputs converted to the rationals they
-    represent.
+    represent. The magnitude is the expression's value with every sum replaced by the
+    sum of the absolute values of its terms, so ``band`` is relative to the size of the
+    terms that cancel at a boundary.
 
     Examples
     --------
@@ -1568,8 +1688,7 @@ def certified_sign(expr, values: Mapping | None = None, *, band: float = 0.0) ->
     expr = sp.sympify(expr)
     env, exact = _environment(values or {})
     try:
-        v, e = _bounded(expr, env, {})
-        magnitude = abs(v) + e
+        v, e, magnitude = _bounded(expr, env, {})
         if math.isfinite(v) and math.isfinite(e) and abs(v) > max(2 * e, band * magnitude):
             return (1 if v > 0 else -1), False
     except _Unbounded:
@@ -1774,7 +1893,9 @@ class PointClassifier:
 
     def _check(self, arrays) -> list[np.ndarray]:
         if len(arrays) != len(self.parameters):
-            raise NumericsError(f"give {len(self.parameters)} arrays, one per parameter {list(map(str, self.parameters))}.")
+            raise NumericsError(
+                f"give {len(self.parameters)} arrays, one per parameter {list(map(str, self.parameters))}."
+            )
         out = []
         for symbol, array in zip(self.parameters, arrays):
             a = np.asarray(array, dtype=float)
@@ -1799,7 +1920,9 @@ class PointClassifier:
         in_band = np.zeros(shape, dtype=bool)
         band_fraction = []
         for position, (index, sign, _) in enumerate(self.factors):
-            P, M, U, Ua = (np.broadcast_to(np.asarray(g, dtype=float), shape) for g in groups[4 * position: 4 * position + 4])
+            P, M, U, Ua = (
+                np.broadcast_to(np.asarray(g, dtype=float), shape) for g in groups[4 * position : 4 * position + 4]
+            )
             value = P - M + U
             magnitude = P + M + Ua
             width = max(self.band, 2 * self.gammas[position]) * magnitude
@@ -1886,8 +2009,19 @@ class Cycle:
 
 def _no_cycle(system: OdeSystem, message: str) -> Cycle:
     empty = np.empty((len(system.names), 0))
-    return Cycle(False, math.nan, math.nan, np.empty(0), empty, np.empty((len(system.reaction_names), 0)),
-                 np.full(len(system.reaction_names), math.nan), system.names, system.reaction_names, False, message)
+    return Cycle(
+        False,
+        math.nan,
+        math.nan,
+        np.empty(0),
+        empty,
+        np.empty((len(system.reaction_names), 0)),
+        np.full(len(system.reaction_names), math.nan),
+        system.names,
+        system.reaction_names,
+        False,
+        message,
+    )
 
 
 def fast_cycle(
@@ -1956,8 +2090,16 @@ def fast_cycle(
     elapsed = 0.0
     while elapsed < periods * T0:
         block = 50 * T0
-        run = integrate(system, (elapsed, elapsed + block), z, method=method, rtol=rtol, atol=atol,
-                        reaction_bound=1e6 * N_scale, events=[section])
+        run = integrate(
+            system,
+            (elapsed, elapsed + block),
+            z,
+            method=method,
+            rtol=rtol,
+            atol=atol,
+            reaction_bound=1e6 * N_scale,
+            events=[section],
+        )
         if run.status == "impact":
             return _no_cycle(system, "the fast motion escapes: " + run.message)
         if run.status != "ok":
@@ -1976,8 +2118,9 @@ def fast_cycle(
     else:
         return _no_cycle(system, f"no convergence to a cycle within {periods} linear periods.")
     period = times[-1] - times[-2]
-    final = integrate(system, (0.0, 1.25 * period), hits[-1], method=method, rtol=rtol, atol=atol,
-                      dense_output=True, events=[section])
+    final = integrate(
+        system, (0.0, 1.25 * period), hits[-1], method=method, rtol=rtol, atol=atol, dense_output=True, events=[section]
+    )
     crossings = [t for t in final.extra["t_events"][0] if t > 0.5 * period]
     if crossings:
         period = float(crossings[0])
@@ -1985,8 +2128,19 @@ def fast_cycle(
     states = final.sol(tau)
     reactions = np.column_stack([system.reactions(ti, states[:, i]) for i, ti in enumerate(tau)])
     loss = bool(np.any(np.abs(reactions) <= 1e-12 * N_scale))
-    return Cycle(True, period, 2 * math.pi / period, tau, states, reactions, reactions.mean(axis=1),
-                 system.names, system.reaction_names, loss, f"cycle of period {period:.6g} in tau")
+    return Cycle(
+        True,
+        period,
+        2 * math.pi / period,
+        tau,
+        states,
+        reactions,
+        reactions.mean(axis=1),
+        system.names,
+        system.reaction_names,
+        loss,
+        f"cycle of period {period:.6g} in tau",
+    )
 
 
 def simulate_averaged(
@@ -2054,7 +2208,9 @@ def simulate_averaged(
             frozen = _with(base, dict(zip(free_state, y))) if depends else base
             found = fast_cycle(scene, frozen, laws=laws, unilateral=unilateral, form=form, **options)
             if not found.converged:
-                raise NumericsError(f"no stable cycle of the fast subsystem at the slow state {list(y)}: {found.message}")
+                raise NumericsError(
+                    f"no stable cycle of the fast subsystem at the slow state {list(y)}: {found.message}"
+                )
             cache[key] = found
         return cache[key]
 
@@ -2070,10 +2226,18 @@ def simulate_averaged(
         return cycle_at(y).mean_reactions
 
     z0 = np.array([given[s] for s in free_state], dtype=float)
-    system = OdeSystem(tuple(str(s) for s in free_state), averaged, lambda t, y: None, reactions_out,
-                       tuple(str(r) for r in reactions), "t", f"averaged system (2.7) of '{scene.name}'")
-    run = integrate(system, span, z0, method=method, jacobian=False, rtol=rtol, atol=atol, t_eval=t_eval,
-                    dense_output=True)
+    system = OdeSystem(
+        tuple(str(s) for s in free_state),
+        averaged,
+        lambda t, y: None,
+        reactions_out,
+        tuple(str(r) for r in reactions),
+        "t",
+        f"averaged system (2.7) of '{scene.name}'",
+    )
+    run = integrate(
+        system, span, z0, method=method, jacobian=False, rtol=rtol, atol=atol, t_eval=t_eval, dense_output=True
+    )
     return _replace(run, extra={**run.extra, "cycle": cache.get(()) if not depends else None})
 
 
@@ -2128,8 +2292,18 @@ def phase_portrait_data(
     trajectories, impacts = [], []
     samples = np.linspace(span[0], span[1], 600)
     for z0 in starts:
-        run = simulate_fast(scene, vals, span, np.asarray(z0, dtype=float), laws=laws, unilateral=unilateral,
-                            form=chosen, t_eval=samples, reaction_bound=50 * N_scale, dense_output=False)
+        run = simulate_fast(
+            scene,
+            vals,
+            span,
+            np.asarray(z0, dtype=float),
+            laws=laws,
+            unilateral=unilateral,
+            form=chosen,
+            t_eval=samples,
+            reaction_bound=50 * N_scale,
+            dense_output=False,
+        )
         if k == 1:
             trajectories.append(run.y[[0, 1]])
         else:
@@ -2150,8 +2324,14 @@ def phase_portrait_data(
     else:
         labels = system.reaction_names[:2]
         points = [tuple(system.reactions(0.0, e)[:2]) for e in equilibria]
-    return {"labels": labels, "trajectories": trajectories, "impact": impacts, "field": field_data,
-            "equilibria": points, "title": system.description}
+    return {
+        "labels": labels,
+        "trajectories": trajectories,
+        "impact": impacts,
+        "field": field_data,
+        "equilibria": points,
+        "title": system.description,
+    }
 
 
 def _axes(ax):
