@@ -5,6 +5,7 @@
 ``contactsym conditions SCENE --format text|latex|json [--signs +1,-1]``
 ``contactsym report [SCENE ...] --out DIR [--no-pdf]``
                                          a LaTeX/PDF report per scene, figures and conditions.json
+``contactsym bench [--quick] [--json FILE]`` the benchmarks (from a source checkout)
 
 Errors print one line to stderr and give a non-zero exit code: 2 for a bad command
 line (an unknown scene, a bad option), 1 for a failure while working (an unwritable
@@ -174,6 +175,9 @@ def _parser() -> argparse.ArgumentParser:
     report.add_argument("scenes", nargs="*", metavar="SCENE", help=f"scenes to report (default: all of {names})")
     report.add_argument("--out", default="contactsym-report", help="output directory (default: contactsym-report)")
     report.add_argument("--no-pdf", action="store_true", help="write report.tex but do not run pdflatex")
+    bench = sub.add_parser("bench", help="run the benchmarks (source checkout); table and plots in benchmarks/results")
+    bench.add_argument("--quick", action="store_true", help="smaller sweeps, under 3 minutes")
+    bench.add_argument("--json", metavar="FILE", help="write the records as a JSON list to FILE")
     return parser
 
 
@@ -232,6 +236,19 @@ def _conditions(name: str, fmt: str, signs: str | None) -> int:
     return 0
 
 
+def _bench(quick: bool, json_file: str | None) -> int:
+    root = str(Path(__file__).resolve().parent.parent)  # benchmarks/ sits beside the package in a checkout
+    if root not in sys.path:
+        sys.path.insert(0, root)
+    try:
+        from benchmarks.run import main as run_benchmarks
+    except ImportError as error:
+        raise ContactsymError(
+            f"the benchmarks are not installed ({error}); run contactsym bench from a source checkout."
+        ) from error
+    return run_benchmarks((["--quick"] if quick else []) + (["--json", json_file] if json_file else []))
+
+
 def _silence_stdout() -> None:
     try:
         devnull = os.open(os.devnull, os.O_WRONLY)
@@ -277,6 +294,8 @@ def _run(args) -> int:
         return _report(args.scenes, args.out, pdf=not args.no_pdf)
     if args.command == "conditions":
         return _conditions(args.scene, args.format, args.signs)
+    if args.command == "bench":
+        return _bench(args.quick, args.json)
     print(derivation_chain(getattr(args, "scene", DEFAULT_SCENE)))
     return 0
 

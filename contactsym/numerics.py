@@ -1812,7 +1812,10 @@ class PointClassifier:
     unknown sign go with their absolute values into the magnitude). Floating-point
     evaluation of P and M has a relative error below gamma = (ops + terms + 2) u, so the
     sign of F is certain where |F| > 2 gamma (P + M). Points inside
-    ``max(band, 2 gamma)`` relative are decided exactly in rationals.
+    ``max(band, 2 gamma)`` relative are decided exactly: the binary inputs are exact
+    rationals, F is evaluated in 256-bit arithmetic, and where even that leaves
+    |F| < 2^-200 (P + M) the point is recomputed in SymPy rationals. The float stage runs
+    in chunks on ``workers`` threads (NumPy releases the GIL).
 
     Parameters
     ----------
@@ -1869,6 +1872,9 @@ class PointClassifier:
             groups += [sp.Add(*plus), sp.Add(*minus), sp.Add(*unknown), sp.Add(*unknown_abs)]
             self.gammas.append(_gamma(ops + len(terms) + 2))
         self._function = lambdify_cse(self.parameters, groups)
+        self._mp_function = [
+            sp.lambdify(self.parameters, groups[4 * i : 4 * i + 4], modules="mpmath") for i in range(len(self.kept))
+        ]
         free = set().union(*[f.free_symbols for f in self.kept]) if self.kept else set()
         if free - set(self.parameters):
             raise NumericsError(f"the conditions also need values for {sorted(map(str, free - set(self.parameters)))}.")
@@ -1908,40 +1914,80 @@ class PointClassifier:
             out.append(a)
         return out
 
-    def __call__(self, *arrays) -> _PointsResult:
-        arrays = self._check(arrays)
-        shape = np.broadcast(*arrays).shape if arrays else ()
-        arrays = [np.broadcast_to(a, shape) for a in arrays]
+    def _float_stage(self, arrays, shape):
         groups = self._function(*arrays)
-        n_conditions = len(self.conditions)
-        signs = np.ones((n_conditions, *shape), dtype=np.int8)
+        signs = np.ones((len(self.conditions), *shape), dtype=np.int8)
         for index in self.always_false:
             signs[index] = 0
         in_band = np.zeros(shape, dtype=bool)
-        band_fraction = []
         for position, (index, sign, _) in enumerate(self.factors):
             P, M, U, Ua = (
                 np.broadcast_to(np.asarray(g, dtype=float), shape) for g in groups[4 * position : 4 * position + 4]
             )
             value = P - M + U
-            magnitude = P + M + Ua
-            width = max(self.band, 2 * self.gammas[position]) * magnitude
-            band_fraction.append(max(self.band, 2 * self.gammas[position]))
-            uncertain = np.abs(value) <= width
-            in_band |= uncertain
-            factor_sign = np.where(value > 0, 1, -1).astype(np.int8) * sign
-            signs[index] = signs[index] * factor_sign
+            width = max(self.band, 2 * self.gammas[position]) * (P + M + Ua)
+            in_band |= np.abs(value) <= width
+            signs[index] *= np.where(value > 0, 1, -1).astype(np.int8) * sign
+        return signs, in_band
+
+    def _high_precision_sign(self, position: int, point: list[float]) -> int | None:
+        """Sign of a kept factor in 256-bit arithmetic from the exact binary inputs, or None."""
+        import mpmath
+
+        with mpmath.workprec(256):
+            P, M, U, Ua = self._mp_function[position](*[mpmath.mpf(x) for x in point])
+            value = P - M + U
+            if abs(value) > mpmath.mpf(2) ** -200 * (P + M + Ua):
+                return 1 if value > 0 else -1
+        return None
+
+    def __call__(self, *arrays, chunk: int = 1 << 16, workers: int = 2) -> _PointsResult:
+        arrays = self._check(arrays)
+        shape = np.broadcast(*arrays).shape if arrays else ()
+        arrays = [np.ascontiguousarray(np.broadcast_to(a, shape)).ravel() for a in arrays]
+        size = int(np.prod(shape))
+        starts = list(range(0, size, chunk)) or [0]
+        signs = np.empty((len(self.conditions), size), dtype=np.int8)
+        in_band = np.empty(size, dtype=bool)
+
+        def work(start):
+            stop = min(start + chunk, size)
+            part_signs, part_band = self._float_stage([a[start:stop] for a in arrays], (stop - start,))
+            signs[:, start:stop] = part_signs
+            in_band[start:stop] = part_band
+
+        if workers > 1 and len(starts) > 1:
+            from concurrent.futures import ThreadPoolExecutor
+
+            with ThreadPoolExecutor(workers) as pool:
+                list(pool.map(work, starts))
+        else:
+            for start in starts:
+                work(start)
         exact_points = 0
-        if in_band.any():
-            for position in zip(*np.nonzero(in_band)):
-                point = {s: float(a[position]) for s, a in zip(self.parameters, arrays)}
-                for index, condition in enumerate(self.conditions):
-                    if index in self.always_false:
-                        continue
-                    signs[(index, *position)] = certified_sign(condition, point, band=self.band)[0]
-                exact_points += 1
+        for i in np.nonzero(in_band)[0]:
+            point = [float(a[i]) for a in arrays]
+            for index in range(len(self.conditions)):
+                if index not in self.always_false:
+                    signs[index, i] = self._decide_point(index, point)
+            exact_points += 1
+        signs = signs.reshape((len(self.conditions), *shape))
+        in_band = in_band.reshape(shape)
         stable = np.where(np.all(signs > 0, axis=0), 1, np.where(np.any(signs < 0, axis=0), -1, 0)).astype(np.int8)
-        return _PointsResult(stable, signs, in_band, exact_points, max(band_fraction, default=self.band))
+        bands = [max(self.band, 2 * g) for g in self.gammas]
+        return _PointsResult(stable, signs, in_band, exact_points, max(bands, default=self.band))
+
+    def _decide_point(self, index: int, point: list[float]) -> int:
+        """The exact sign of one condition at one point: 256-bit first, then rationals."""
+        sign = 1
+        for position, (owner, factor_sign, _) in enumerate(self.factors):
+            if owner != index:
+                continue
+            found = self._high_precision_sign(position, point)
+            if found is None:
+                return certified_sign(self.conditions[index], dict(zip(self.parameters, point)), band=0.0)[0]
+            sign *= found * factor_sign
+        return sign
 
 
 @dataclass(frozen=True, eq=False)
