@@ -45,7 +45,7 @@ import numpy as np
 import sympy as sp
 from sympy.core.relational import Relational
 
-from .algebra import normalize, reduce_signs
+from .algebra import normalize
 from .errors import ContactsymError
 from .regions import Region, _as_positive_relation, closed_form, known_sign
 
@@ -95,15 +95,8 @@ class _Presenter:
         self.presentation = dict(getattr(scene, "count_presentation", None) or scene.presentation)
         self.positive_expressions = tuple(scene.positive_expressions)
 
-    def present(self, expr):
-        expr = sp.sympify(expr)
-        if not self.presentation or expr in (sp.true, sp.false):
-            return expr
-        if isinstance(expr, Relational):
-            return expr.func(self.present(expr.lhs), self.present(expr.rhs))
-        if isinstance(expr, sp.logic.boolalg.BooleanFunction):
-            return expr.func(*[self.present(arg) for arg in expr.args])
-        return reduce_signs(sp.cancel(sp.expand(expr.subs(self.presentation))))
+    def present(self, expr, signs=None):
+        return self.scene.present(expr, signs, self.presentation)
 
 
 # --- exact sign facts ------------------------------------------------------------------

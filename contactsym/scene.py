@@ -438,22 +438,21 @@ class Scene:
         free = set().union(*(e.free_symbols for e in exprs)) - set(fast.u) - set(fast.v)
         return tuple(sorted(free, key=str))
 
-    def present(self, expr: sp.Expr, signs=None) -> sp.Expr:
+    def present(self, expr: sp.Expr, signs=None, presentation: dict | None = None) -> sp.Expr:
         """Rewrite in the scene's presentation variables (e.g. kappa, v_j, mu_pm).
 
         ``signs`` gives the sign pattern of ``expr`` when it belongs to one piece, so
-        that the presentation's sign symbols (v_j = kappa s_j mu_j) take its values.
+        that the presentation's sign symbols (v_j = kappa s_j mu_j) take its values;
+        ``presentation`` replaces the scene's own substitutions.
         """
         from .algebra import reduce_signs, sign_symbols
 
         expr = sp.sympify(expr)
-        if not self.presentation or expr in (sp.true, sp.false):
+        presentation = self.presentation if presentation is None else presentation
+        if not presentation or expr in (sp.true, sp.false):
             return expr
-        if isinstance(expr, sp.core.relational.Relational):
-            return expr.func(self.present(expr.lhs, signs), self.present(expr.rhs, signs))
-        if isinstance(expr, sp.logic.boolalg.BooleanFunction):
-            return expr.func(*[self.present(arg, signs) for arg in expr.args])
-        presentation = self.presentation
+        if isinstance(expr, (sp.core.relational.Relational, sp.logic.boolalg.BooleanFunction)):
+            return expr.func(*[self.present(arg, signs, presentation) for arg in expr.args])
         if signs is not None:
             values = dict(zip(sign_symbols(len(signs)), signs))
             presentation = {k: sp.sympify(v).subs(values) for k, v in presentation.items()}
