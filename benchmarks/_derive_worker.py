@@ -34,7 +34,7 @@ def build(target: str):
     return import_module(f"contactsym.scenes.{_MODULES[target]}").build()
 
 
-def ours(scene, hopf_frequency: bool) -> dict:
+def ours(scene) -> dict:
     st = scene.stability()
     stages = [
         scene.fast_subsystem().rhs,
@@ -45,9 +45,8 @@ def ours(scene, hopf_frequency: bool) -> dict:
         st.robustly_unstable,
         st.law_dependent,
         st.hopf,
+        st.hopf_frequency,
     ]
-    if hopf_frequency:
-        stages.append(st.hopf_frequency)
     return {"conditions": len(st.hurwitz), "stages": len(stages)}
 
 
@@ -66,14 +65,13 @@ def naive(scene) -> dict:
 
 def main(argv: list[str]) -> int:
     mode, target = argv[0], argv[1]
-    hopf_frequency = "--no-hopf-frequency" not in argv
     started = time.perf_counter()
     import contactsym  # noqa: F401
 
     imported = time.perf_counter()
     scene = build(target)
     if mode == "ours":
-        info = ours(scene, hopf_frequency)
+        info = ours(scene)
         seconds = time.perf_counter() - imported
     else:
         result = naive(scene)

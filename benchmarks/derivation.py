@@ -65,13 +65,10 @@ def run(quick: bool, out_dir) -> list[dict]:
         bars.append((name, o["seconds"], n["seconds"] if n else None, n is None))
     records.append(record("derivation/paper-scenes-total", total_ours, None, 0, 4, "target: under 10 s in total"))
     for k in (1, 2, 3, 4):
-        extra = ("--no-hopf-frequency",) if k == 4 else ()
-        o = _worker("ours", f"generic-{k}", ours_timeout, *extra)
+        o = _worker("ours", f"generic-{k}", ours_timeout)
         timeout = naive_timeout[k]
         n = _worker("naive", f"generic-{k}", timeout) if timeout else None
         notes = f"generic k = {k}: A = (a_ij) all symbolic, generic Phi_j, Psi_j"
-        if k == 4:
-            notes += "; Hopf frequency left out (hurwitz.hopf_omega_squared does not finish for degree 8)"
         if o is None:
             notes += f"; ours timed out at {ours_timeout} s"
         if timeout and n is None:

@@ -20,6 +20,7 @@ import sympy as sp
 __all__ = ["hurwitz_matrix", "hurwitz_minors", "lienard_chipart", "hopf_omega_squared", "Hurwitz"]
 
 _z = sp.Symbol("z")
+_CANCEL_LIMIT = 2000
 
 
 def _generic(n: int) -> tuple[sp.Symbol, ...]:
@@ -93,16 +94,34 @@ def lienard_chipart(poly: sp.Poly, minors: list[sp.Expr] | None = None) -> list[
     return coefficients + chosen
 
 
+def _first_subresultant(A: sp.Poly, B: sp.Poly) -> sp.Poly:
+    """The subresultant of degree 1 of A and B (deg A >= deg B >= 1), as one determinant.
+
+    Rows z^i A (i < deg B - 1) and z^i B (i < deg A - 1); the columns hold the
+    coefficients of z^(m+n-2) .. z^2 and, last, the row polynomial itself.
+    """
+    if A.degree() == 1:
+        return A
+    if B.degree() == 1:
+        return B
+    m, n = A.degree(), B.degree()
+    rows = [A * _z**i for i in reversed(range(n - 1))] + [B * _z**i for i in reversed(range(m - 1))]
+    top = m + n - 2
+    matrix = sp.Matrix([[row.coeff_monomial(_z ** (top - c)) for c in range(top - 1)] + [row.as_expr()] for row in rows])
+    return sp.Poly(matrix.det(method="berkowitz"), _z)
+
+
 @cache
 def _generic_omega_squared(n: int) -> sp.Expr | None:
+    if n < 2:
+        return None
     a = _generic(n)[::-1]  # a[i] is the coefficient of lam**i
-    even = sum((-1) ** i * a[2 * i] * _z**i for i in range(n // 2 + 1))
-    odd = sum((-1) ** i * a[2 * i + 1] * _z**i for i in range((n - 1) // 2 + 1))
-    for s in sp.subresultants(sp.Poly(even, _z), sp.Poly(odd, _z)):
-        s = sp.Poly(s, _z)
-        if s.degree() == 1:
-            return -s.coeff_monomial(1) / s.coeff_monomial(_z)
-    return None
+    even = sp.Poly(sum((-1) ** i * a[2 * i] * _z**i for i in range(n // 2 + 1)), _z)
+    odd = sp.Poly(sum((-1) ** i * a[2 * i + 1] * _z**i for i in range((n - 1) // 2 + 1)), _z)
+    if odd.degree() < 1:
+        return -even.coeff_monomial(1) / even.coeff_monomial(_z)
+    s = _first_subresultant(even, odd)
+    return -s.coeff_monomial(1) / s.coeff_monomial(_z)
 
 
 def hopf_omega_squared(poly: sp.Poly) -> sp.Expr | None:
@@ -118,7 +137,9 @@ def hopf_omega_squared(poly: sp.Poly) -> sp.Expr | None:
     if generic is None:
         return None
     values = dict(zip(_generic(poly.degree()), _coefficients(poly)))
-    return sp.cancel(generic.xreplace(values))
+    omega_squared = generic.xreplace(values)
+    # cancel is cheap for small scenes and worthless (and slow) for large generic ones
+    return sp.cancel(omega_squared) if sp.count_ops(omega_squared) < _CANCEL_LIMIT else omega_squared
 
 
 @dataclass(frozen=True, eq=False)
