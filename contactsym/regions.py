@@ -149,6 +149,30 @@ def _implies(premises: list[sp.Basic], conclusion: sp.Basic, positive) -> bool:
     return False
 
 
+def _infeasible(relations: list[sp.Basic], positive) -> bool:
+    """True when some of the relations (each P > 0 or P >= 0) sum to a known negative number."""
+    parts = [_difference(r) for r in relations]
+    if any(p is None for p in parts):
+        return False
+    for size in range(2, len(parts) + 1):
+        for chosen in itertools.combinations(parts, size):
+            if known_sign(sp.Add(*[p for p, _ in chosen]), positive) == -1:
+                return True
+    return False
+
+
+def _drop_implied_conjuncts(conjuncts: list[sp.Basic], positive) -> list[sp.Basic]:
+    """Remove an Or of relationals that the relational conjuncts imply (premises and its negation clash)."""
+    premises = [c for c in conjuncts if isinstance(c, Relational)]
+    kept = []
+    for c in conjuncts:
+        if isinstance(c, sp.Or) and all(isinstance(d, Relational) for d in c.args):
+            if _infeasible(premises + [sp.Not(d) for d in c.args], positive):
+                continue
+        kept.append(c)
+    return kept
+
+
 def _drop_implied_disjuncts(disjuncts: list[sp.Basic], positive) -> list[sp.Basic]:
     """Remove a disjunct that implies another one (it adds nothing to the Or)."""
     kept = list(disjuncts)
@@ -270,7 +294,7 @@ def _reduce(condition, positive, solve_for):
         args = [_reduce(arg, positive, solve_for) for arg in condition.args]
         if isinstance(condition, sp.And):
             flat = [c for arg in args for c in sp.And.make_args(arg)]
-            return sp.And(*_merge_abs(flat))
+            return sp.And(*_drop_implied_conjuncts(_merge_abs(flat), positive))
         if isinstance(condition, sp.Or):
             return sp.Or(*_drop_implied_disjuncts(args, positive))
         return condition.func(*args)
