@@ -9,7 +9,7 @@ stages of a scene into NumPy functions and integrates them with
   (:func:`simulate_full`), with the normal reactions ``N_j(t)`` as outputs;
 - the comparison (reduced) system (2.2), the rigid-contact motion (:func:`simulate_reduced`);
 - the fast subsystem (2.1) alone, in the stretched time tau = t/eps
-  (:func:`simulate_fast`, :func:`phase_portrait_data`, :func:`phase_portrait_plot`);
+  (:func:`simulate_fast`, :func:`fast_trajectories_data`);
 - a stable cycle of the fast subsystem and the averaged system (2.7)
   (:func:`fast_cycle`, :func:`simulate_averaged`).
 
@@ -73,10 +73,7 @@ __all__ = [
     "simulate_reduced",
     "simulate_fast",
     "equilibrium_reactions",
-    "phase_portrait_data",
-    "phase_portrait_plot",
-    "reactions_plot",
-    "cycle_plot",
+    "fast_trajectories_data",
     "Cycle",
     "fast_cycle",
     "simulate_averaged",
@@ -2287,10 +2284,10 @@ def simulate_averaged(
     return _replace(run, extra={**run.extra, "cycle": cache.get(()) if not depends else None})
 
 
-# --- phase portraits and plots -----------------------------------------------------------
+# --- trajectories of the fast subsystem (drawn by contactsym.plotting) --------------------
 
 
-def phase_portrait_data(
+def fast_trajectories_data(
     scene,
     values: Mapping | None,
     *,
@@ -2301,7 +2298,9 @@ def phase_portrait_data(
     span=(0.0, 30.0),
     grid: int = 21,
 ) -> dict:
-    """Trajectories of the fast subsystem (2.1) for a phase portrait, and its vector field.
+    """Simulated trajectories of the fast subsystem (2.1) and its vector field.
+
+    Draw them with :func:`contactsym.plotting.fast_trajectories_plot`.
 
     For one contact the plane is (u, v) (or (Q, V)) with the vector field on a
     ``grid x grid`` mesh; for more contacts the trajectories are drawn in the plane of
@@ -2312,7 +2311,7 @@ def phase_portrait_data(
     >>> import contactsym as cs
     >>> values = {"phi": 0.7, "mu_1": 0.3, "mu_2": 0.2, "X_1": 0, "X_2": 1, "Y_1": 0, "Y_2": 0,
     ...           "Phi": -1, "Psi": -0.3}
-    >>> data = phase_portrait_data(cs.scene("painleve-klein-rod"), values, grid=5)
+    >>> data = fast_trajectories_data(cs.scene("painleve-klein-rod"), values, grid=5)
     >>> data["labels"], len(data["trajectories"]), data["field"][0].shape
     (('u', 'v'), 6, (5, 5))
     """
@@ -2378,102 +2377,3 @@ def phase_portrait_data(
         "equilibria": points,
         "title": system.description,
     }
-
-
-def _axes(ax):
-    if ax is None:
-        import matplotlib.pyplot as plt
-
-        ax = plt.gca()
-    return ax
-
-
-def phase_portrait_plot(data: dict, ax=None) -> list:
-    """Draw :func:`phase_portrait_data`; returns the matplotlib artists.
-
-    Examples
-    --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")
-    >>> import matplotlib.pyplot as plt
-    >>> import numpy as np
-    >>> data = {"labels": ("u", "v"), "trajectories": [np.array([[0, 1], [0, 1]])], "impact": [False],
-    ...         "field": None, "equilibria": [(1.0, 1.0)], "title": "demo"}
-    >>> fig, ax = plt.subplots()
-    >>> len(phase_portrait_plot(data, ax))
-    2
-    >>> plt.close(fig)
-    """
-    ax = _axes(ax)
-    artists = []
-    if data.get("field") is not None:
-        X, Y, U, V = data["field"]
-        norm = np.hypot(U, V)
-        norm[norm == 0] = 1
-        artists.append(ax.quiver(X, Y, U / norm, V / norm, norm, cmap="Greys", alpha=0.6, angles="xy"))
-    for trajectory, impact in zip(data["trajectories"], data["impact"]):
-        (line,) = ax.plot(trajectory[0], trajectory[1], lw=1.2, ls="--" if impact else "-")
-        artists.append(line)
-    if data["equilibria"]:
-        xs, ys = zip(*data["equilibria"])
-        (points,) = ax.plot(xs, ys, "ko", ms=6, label="equilibria")
-        artists.append(points)
-    ax.set_xlabel(data["labels"][0])
-    ax.set_ylabel(data["labels"][1])
-    ax.set_title(data.get("title", ""))
-    return artists
-
-
-def reactions_plot(run: Simulation, ax=None, *, names: Sequence[str] | None = None) -> list:
-    """Plot the reactions of a simulation against its time; returns the lines.
-
-    Examples
-    --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")
-    >>> import matplotlib.pyplot as plt
-    >>> import contactsym as cs
-    >>> values = {"phi": 0.7, "mu_1": 0.3, "mu_2": 0.2, "X_1": 0, "X_2": 1, "Y_1": 0, "Y_2": 0, "Phi": -1, "Psi": -1}
-    >>> run = simulate_fast(cs.scene("painleve-klein-rod"), values, (0, 10))
-    >>> fig, ax = plt.subplots()
-    >>> [line.get_label() for line in reactions_plot(run, ax)]
-    ['u']
-    >>> plt.close(fig)
-    """
-    ax = _axes(ax)
-    chosen = names or run.reaction_names
-    lines = []
-    for name in chosen:
-        (line,) = ax.plot(run.t, run[name], label=name)
-        lines.append(line)
-    ax.set_xlabel("tau (stretched time)" if run.time == "tau" else "t")
-    ax.set_ylabel("normal reaction")
-    ax.legend()
-    return lines
-
-
-def cycle_plot(cycle: Cycle, ax=None) -> list:
-    """The reactions over one period of a fast cycle, with their means; returns the artists.
-
-    Examples
-    --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")
-    >>> import matplotlib.pyplot as plt
-    >>> c = Cycle(True, 1.0, 2*np.pi, np.linspace(0, 1, 4, endpoint=False), np.zeros((2, 4)),
-    ...           np.array([[1.0, 2.0, 1.0, 0.0]]), np.array([1.0]), ("Q", "V"), ("u",), True, "")
-    >>> fig, ax = plt.subplots()
-    >>> len(cycle_plot(c, ax))
-    2
-    >>> plt.close(fig)
-    """
-    ax = _axes(ax)
-    artists = []
-    for row, name in enumerate(cycle.reaction_names):
-        (line,) = ax.plot(cycle.tau, cycle.reactions[row], label=f"{name}(tau)")
-        mean = ax.axhline(cycle.mean_reactions[row], color=line.get_color(), ls=":", label=f"mean {name}")
-        artists += [line, mean]
-    ax.set_xlabel("tau over one period")
-    ax.set_ylabel("normal reaction")
-    ax.legend()
-    return artists

@@ -13,6 +13,8 @@ stability depends on the law), as in the paper's Fig. 1.
 - :func:`brake_map_data`, :func:`brake_map_plot`: the brake's (alpha, mu) map;
 - :func:`brake_hopf_data`, :func:`brake_hopf_plot`: its Hopf line at alpha = 90 deg;
 - :func:`phase_portrait_data`, :func:`phase_portrait_plot`: the fast subsystem (2.1).
+- :func:`fast_trajectories_plot`, :func:`reactions_plot`, :func:`cycle_plot`: results of
+  :mod:`contactsym.numerics` (simulated trajectories, reactions N_j(t), a fast cycle).
 
 :func:`paper_figures` ``(directory)`` writes all of them as PNG files and returns their
 paths (``fig1a_guides.png``, ``fig1b_guides.png``, ``rod_f_cases.png``,
@@ -44,6 +46,9 @@ __all__ = [
     "scene_figures",
     "phase_portrait_data",
     "phase_portrait_plot",
+    "fast_trajectories_plot",
+    "reactions_plot",
+    "cycle_plot",
     "region_data",
     "region_plot",
     "rod_f_data",
@@ -1092,3 +1097,100 @@ def paper_figures(directory, *, resolution=400, dpi=150) -> list[Path]:
     for name in FIGURE_SCENES:
         paths.extend(scene_figures(name, directory, resolution=resolution, dpi=dpi).values())
     return paths
+
+
+# --- simulations (contactsym.numerics) ------------------------------------------------
+
+
+def fast_trajectories_plot(data: dict, ax=None) -> list:
+    """Draw :func:`contactsym.numerics.fast_trajectories_data`; returns the matplotlib artists.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> import numpy as np
+    >>> data = {"labels": ("u", "v"), "trajectories": [np.array([[0, 1], [0, 1]])], "impact": [False],
+    ...         "field": None, "equilibria": [(1.0, 1.0)], "title": "demo"}
+    >>> fig, ax = plt.subplots()
+    >>> len(fast_trajectories_plot(data, ax))
+    2
+    >>> plt.close(fig)
+    """
+    ax = _axes(ax)
+    artists = []
+    if data.get("field") is not None:
+        X, Y, U, V = data["field"]
+        norm = np.hypot(U, V)
+        norm[norm == 0] = 1
+        artists.append(ax.quiver(X, Y, U / norm, V / norm, norm, cmap="Greys", alpha=0.6, angles="xy"))
+    for trajectory, impact in zip(data["trajectories"], data["impact"]):
+        (line,) = ax.plot(trajectory[0], trajectory[1], lw=1.2, ls="--" if impact else "-")
+        artists.append(line)
+    if data["equilibria"]:
+        xs, ys = zip(*data["equilibria"])
+        (points,) = ax.plot(xs, ys, "ko", ms=6, label="equilibria")
+        artists.append(points)
+    ax.set_xlabel(data["labels"][0])
+    ax.set_ylabel(data["labels"][1])
+    ax.set_title(data.get("title", ""))
+    return artists
+
+
+def reactions_plot(run, ax=None, *, names=None) -> list:
+    """Plot the reactions of a simulation against its time; returns the lines.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> import contactsym as cs
+    >>> from contactsym.numerics import simulate_fast
+    >>> values = {"phi": 0.7, "mu_1": 0.3, "mu_2": 0.2, "X_1": 0, "X_2": 1, "Y_1": 0, "Y_2": 0, "Phi": -1, "Psi": -1}
+    >>> run = simulate_fast(cs.scene("painleve-klein-rod"), values, (0, 10))
+    >>> fig, ax = plt.subplots()
+    >>> [line.get_label() for line in reactions_plot(run, ax)]
+    ['u']
+    >>> plt.close(fig)
+    """
+    ax = _axes(ax)
+    chosen = names or run.reaction_names
+    lines = []
+    for name in chosen:
+        (line,) = ax.plot(run.t, run[name], label=name)
+        lines.append(line)
+    ax.set_xlabel("tau (stretched time)" if run.time == "tau" else "t")
+    ax.set_ylabel("normal reaction")
+    ax.legend()
+    return lines
+
+
+def cycle_plot(cycle, ax=None) -> list:
+    """The reactions over one period of a fast cycle, with their means; returns the artists.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> import numpy as np
+    >>> from contactsym.numerics import Cycle
+    >>> c = Cycle(True, 1.0, 2*np.pi, np.linspace(0, 1, 4, endpoint=False), np.zeros((2, 4)),
+    ...           np.array([[1.0, 2.0, 1.0, 0.0]]), np.array([1.0]), ("Q", "V"), ("u",), True, "")
+    >>> fig, ax = plt.subplots()
+    >>> len(cycle_plot(c, ax))
+    2
+    >>> plt.close(fig)
+    """
+    ax = _axes(ax)
+    artists = []
+    for row, name in enumerate(cycle.reaction_names):
+        (line,) = ax.plot(cycle.tau, cycle.reactions[row], label=f"{name}(tau)")
+        mean = ax.axhline(cycle.mean_reactions[row], color=line.get_color(), ls=":", label=f"mean {name}")
+        artists += [line, mean]
+    ax.set_xlabel("tau over one period")
+    ax.set_ylabel("normal reaction")
+    ax.legend()
+    return artists
