@@ -23,6 +23,7 @@ from .errors import (
 from .latex import latex
 from .laws import Compliance, Coulomb, Generic, KelvinVoigt, Law, Viscous
 from .linear import lam
+from .regions import Region, closed_form
 from .scene import Contact, Scene
 from .scenes import DEFAULT_SCENE, scene, scene_names
 
@@ -36,12 +37,14 @@ __all__ = [
     "Generic",
     "KelvinVoigt",
     "Law",
+    "Region",
     "Scene",
     "SceneError",
     "SignPatternError",
     "SignSymbol",
     "SingularJacobianError",
     "Viscous",
+    "closed_form",
     "lam",
     "latex",
     "scene",
