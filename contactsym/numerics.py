@@ -594,7 +594,7 @@ def full_system(scene, values: Mapping | None, eps, *, laws: Mapping | None = No
     >>> sys = full_system(cs.scene("painleve-klein-rod"), {"phi": 0.7, "mu_1": 0.3, "mu_2": 0.2, "X_1": 0,
     ...     "X_2": 1, "Y_1": 0, "Y_2": 0, "Phi": -1, "Psi": -1}, 1e-3)
     >>> sys.names, sys.reaction_names
-    (('x_1', 'delta', 'x_1dot', 'deltadot'), ('R',))
+    (('x_1', 'delta', 'xdot_1', 'deltadot'), ('R',))
     >>> full_system(cs.scene("brake"), {}, 0)
     Traceback (most recent call last):
     ...
@@ -703,7 +703,7 @@ def reduced_system(scene, values: Mapping | None, *, signs=None, state: Mapping 
     >>> import contactsym as cs
     >>> values = {"phi": 0.7, "mu_1": 0.3, "mu_2": 0.2, "X_1": 0, "X_2": 1, "Y_1": 0, "Y_2": 0}
     >>> reduced_system(cs.scene("painleve-klein-rod"), values).names
-    ('x_1', 'x_1dot')
+    ('x_1', 'xdot_1')
     """
     merged = _merge(scene, values, state)
     free = _free_coordinates(scene)
@@ -1197,7 +1197,7 @@ def simulate_full(
     ...           "Phi": -1, "Psi": -1}
     >>> equilibrium_reactions(rod, values)
     []
-    >>> run = simulate_full(rod, values, 1e-3, (0, 1), {"x_1": 0, "x_1dot": 1})
+    >>> run = simulate_full(rod, values, 1e-3, (0, 1), {"x_1": 0, "xdot_1": 1})
     >>> run.status
     'impact'
     >>> bool(run.t[-1] < 0.1)
@@ -1361,8 +1361,8 @@ def simulate_reduced(
     --------
     >>> import contactsym as cs
     >>> values = {"phi": 0.7, "mu_1": 0.3, "mu_2": 0.2, "X_1": 0, "X_2": 1, "Y_1": 0, "Y_2": 0}
-    >>> run = simulate_reduced(cs.scene("painleve-klein-rod"), values, (0, 1), {"x_1": 0, "x_1dot": 1})
-    >>> round(run.at(1.0, "x_1dot"), 6)
+    >>> run = simulate_reduced(cs.scene("painleve-klein-rod"), values, (0, 1), {"x_1": 0, "xdot_1": 1})
+    >>> round(run.at(1.0, "xdot_1"), 6)
     1.390085
     """
     span = _check_span(span, "span")

@@ -69,9 +69,10 @@ class Contact:
 
 
 def _plain(symbol: sp.Expr, suffix: str = "") -> sp.Symbol:
-    """A plain real symbol for a frozen coordinate q(t) or its rate ('qdot')."""
+    """A plain real symbol for a frozen coordinate q(t) or its rate ('qdot', 'xdot_1': printed with a dot)."""
     name = symbol.func.__name__ if isinstance(symbol, sp.core.function.AppliedUndef) else str(symbol)
-    return sp.Symbol(name + suffix, real=True)
+    base, underscore, index = name.partition("_")
+    return sp.Symbol(base + suffix + underscore + index, real=True)
 
 
 def _solve_linear(equations: list[sp.Expr], candidates: list[sp.Symbol]) -> dict:

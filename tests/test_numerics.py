@@ -66,7 +66,7 @@ def test_proposition_1_painleve_klein_rod_unique_stable_reaction(record_property
     # a unique reaction for every load (|mu_-| < 2, mu_+ < 2, Prop. 4), stable (Prop. 3)
     assert nm.decide(rod.stability().unique_for_every_load, nm.numeric_values(rod, values).numbers)
     assert len(nm.equilibrium_reactions(rod, values)) == 1
-    errors = prop1_errors(rod, values, {"x_1": 0, "x_1dot": 1}, "x_1")
+    errors = prop1_errors(rod, values, {"x_1": 0, "xdot_1": 1}, "x_1")
     order = observed_order(EPS, errors)
     record_property("observed_order_rod", order)
     print(f"rod: errors {errors}, observed order {order:.3f}")
@@ -88,7 +88,7 @@ def test_slow_start_on_the_rod_is_exact_for_constant_loads():
         "Psi": -1.5,
     }
     ((_, u_star),) = nm.equilibrium_reactions(rod, values)
-    full = nm.simulate_full(rod, values, 1e-3, (0, 1), {"x_1": 0, "x_1dot": 1}, start="slow", rtol=1e-10)
+    full = nm.simulate_full(rod, values, 1e-3, (0, 1), {"x_1": 0, "xdot_1": 1}, start="slow", rtol=1e-10)
     assert full.ok
     assert np.allclose(full["R"], u_star[0], rtol=1e-7)
 
@@ -257,7 +257,7 @@ def test_fold_without_root_is_an_impact_type_catastrophe():
     assert (fold["mu_1"] - fold["mu_2"]) * tan_phi > 2  # mu_- > 2: the fold case (3.8)
     assert nm.equilibrium_reactions(rod, fold) == []  # and f > 0 everywhere: no root
     eps = 1e-3
-    run = nm.simulate_full(rod, fold, eps, (0, 10), {"x_1": 0, "x_1dot": 1})
+    run = nm.simulate_full(rod, fold, eps, (0, 10), {"x_1": 0, "xdot_1": 1})
     assert run.status == "impact" and "catastrophe" in run.message
     assert run.t[-1] < 100 * eps  # detected on the fast time scale, not after integrating for ever
     assert abs(run.reactions[0, -1]) >= 0.99 * run.extra["reaction_bound"]
@@ -265,13 +265,13 @@ def test_fold_without_root_is_an_impact_type_catastrophe():
     fast = nm.simulate_fast(rod, fold, (0, 1e4))
     assert fast.status == "impact" and fast.t[-1] < 200
     with pytest.raises(nm.NumericsError, match="impact-type catastrophe"):
-        nm.simulate_reduced(rod, fold, (0, 1), {"x_1": 0, "x_1dot": 1})
+        nm.simulate_reduced(rod, fold, (0, 1), {"x_1": 0, "xdot_1": 1})
 
 
 def test_unique_case_is_not_flagged():
     rod = cs.scene("painleve-klein-rod")
     values = {**fold, "mu_1": 0.3, "mu_2": 0.2}
-    run = nm.simulate_full(rod, values, 1e-3, (0, 1), {"x_1": 0, "x_1dot": 1})
+    run = nm.simulate_full(rod, values, 1e-3, (0, 1), {"x_1": 0, "xdot_1": 1})
     assert run.ok and run.status == "ok"
 
 
@@ -400,7 +400,7 @@ def test_generic_law_without_phi_psi_is_refused_with_a_fix():
     with pytest.raises(nm.NumericsError, match="generic compliance law; give numeric values for Phi and Psi"):
         nm.full_system(cs.scene("painleve-klein-rod"), values, 1e-3)
     run = nm.simulate_full(
-        cs.scene("painleve-klein-rod"), values, 1e-3, (0, 0.1), {"x_1": 0, "x_1dot": 1}, laws={0: cs.KelvinVoigt(1, 1)}
+        cs.scene("painleve-klein-rod"), values, 1e-3, (0, 0.1), {"x_1": 0, "xdot_1": 1}, laws={0: cs.KelvinVoigt(1, 1)}
     )
     assert run.ok
 
