@@ -99,6 +99,15 @@ class _Presenter:
         return self.scene.present(expr, signs, self.presentation)
 
 
+def _sign_choices(known: list, open_: list):
+    """Every completion of the known signs: each open position takes +1 and -1."""
+    for choice in itertools.product((1, -1), repeat=len(open_)):
+        signs = list(known)
+        for i, s in zip(open_, choice):
+            signs[i] = s
+        yield signs
+
+
 # --- exact sign facts ------------------------------------------------------------------
 
 
@@ -446,10 +455,7 @@ def _corner_case(scene, presenter, u, corners, blocks, ordering, equalities) -> 
     known = [_sign(s, positive) for s in slopes]
     open_ = [i for i, s in enumerate(known) if s is None]
     disjuncts: dict[str, list[frozenset]] = {}
-    for choice in itertools.product((1, -1), repeat=len(open_)):
-        slope_signs = list(known)
-        for i, s in zip(open_, choice):
-            slope_signs[i] = s
+    for slope_signs in _sign_choices(known, open_):
         if 0 in slope_signs:
             continue
         conditions = [_Condition(*_forms(presenter, slope_signs[i] * slopes[i].raw)) for i in open_]  # sign * slope > 0
@@ -523,10 +529,7 @@ def _orthant_regions(scene) -> dict[str, sp.Basic]:
     known = [_sign(d, positive) for d in determinants]
     open_ = [i for i, s in enumerate(known) if s is None]
     disjuncts: dict[str, list[frozenset]] = {}
-    for choice in itertools.product((1, -1), repeat=len(open_)):
-        signs = list(known)
-        for i, s in zip(open_, choice):
-            signs[i] = s
+    for signs in _sign_choices(known, open_):
         conditions = [_Condition(*_forms(presenter, signs[i] * determinants[i].raw)) for i in open_]
         if _infeasible(conditions, presenter):
             continue

@@ -50,19 +50,23 @@ def test_proposition_1_sliding_point(record_property):
     assert order >= 1  # observed: 2 (normal momentum is conserved through the initial layer)
 
 
+# the rod with a unique stable reaction for every load: |mu_-| < 2, mu_+ < 2 (Props. 3, 4)
+ROD_UNIQUE = {
+    "phi": 0.7,
+    "mu_1": 0.3,
+    "mu_2": 0.2,
+    "X_1": 0.5,
+    "X_2": 1,
+    "Y_1": 0.3,
+    "Y_2": -0.2,
+    "Phi": -1,
+    "Psi": -1.5,
+}
+
+
 def test_proposition_1_painleve_klein_rod_unique_stable_reaction(record_property):
     rod = cs.scene("painleve-klein-rod")
-    values = {
-        "phi": 0.7,
-        "mu_1": 0.3,
-        "mu_2": 0.2,
-        "X_1": 0.5,
-        "X_2": 1,
-        "Y_1": 0.3,
-        "Y_2": -0.2,
-        "Phi": -1,
-        "Psi": -1.5,
-    }
+    values = dict(ROD_UNIQUE)
     # a unique reaction for every load (|mu_-| < 2, mu_+ < 2, Prop. 4), stable (Prop. 3)
     assert nm.decide(rod.stability().unique_for_every_load, nm.numeric_values(rod, values).numbers)
     assert len(nm.equilibrium_reactions(rod, values)) == 1
@@ -76,17 +80,7 @@ def test_proposition_1_painleve_klein_rod_unique_stable_reaction(record_property
 def test_slow_start_on_the_rod_is_exact_for_constant_loads():
     # constant loads: the slow manifold is u = u*, v = 0 exactly, so no initial layer at all
     rod = cs.scene("painleve-klein-rod")
-    values = {
-        "phi": 0.7,
-        "mu_1": 0.3,
-        "mu_2": 0.2,
-        "X_1": 0.5,
-        "X_2": 1,
-        "Y_1": 0.3,
-        "Y_2": -0.2,
-        "Phi": -1,
-        "Psi": -1.5,
-    }
+    values = dict(ROD_UNIQUE)
     ((_, u_star),) = nm.equilibrium_reactions(rod, values)
     full = nm.simulate_full(rod, values, 1e-3, (0, 1), {"x_1": 0, "xdot_1": 1}, start="slow", rtol=1e-10)
     assert full.ok
