@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import time
+from fractions import Fraction
 
 import numpy as np
 import sympy as sp
@@ -40,15 +41,40 @@ def _on_hopf_line(rng, n):
     return {"alpha": np.full(n, math.pi / 2), "m": m, "mu": mu, "Phi_1": phi, "Phi_2": phi, "Psi_1": psi, "Psi_2": psi}
 
 
-def _matrices(lin, parameters, values):
-    M = sp.lambdify(parameters, lin.matrix, modules="numpy", cse=True)
-    n = len(values[0])
-    out = np.empty((n, 4, 4))
-    for i in range(4):
-        for j in range(4):
-            entry = sp.lambdify(parameters, lin.matrix[i, j], modules="numpy", cse=True)(*values)
-            out[:, i, j] = entry
-    return M, out
+def _best_of(repeat, function):
+    best, result = math.inf, None
+    for _ in range(repeat):
+        started = time.perf_counter()
+        result = function()
+        best = min(best, time.perf_counter() - started)
+    return best, result
+
+
+def _per_point_eigenvalues(M, values, index) -> float:
+    """Seconds per point: build (4.5) for one point, then ``numpy.linalg.eigvals``."""
+    started = time.perf_counter()
+    for i in index:
+        np.linalg.eigvals(np.array(M(*[v[i] for v in values]), dtype=float)).real.max()
+    return (time.perf_counter() - started) / len(index)
+
+
+def _batched_max_real_part(matrix, parameters, values) -> np.ndarray:
+    """The largest real part of the eigenvalues of (4.5) at every point, batched."""
+    n, size = len(values[0]), matrix.shape[0]
+    matrices = np.empty((n, size, size))
+    for i in range(size):
+        for j in range(size):
+            matrices[:, i, j] = np.broadcast_to(sp.lambdify(parameters, matrix[i, j], modules="numpy")(*values), (n,))
+    return np.linalg.eigvals(matrices).real.max(axis=1)
+
+
+def _exact_hopf_side(line) -> np.ndarray:
+    """Stable iff -m mu^2 Phi < (1 + mu^2) Psi^2 on the (6.4) slice, in exact rationals."""
+    out = []
+    for m, mu, phi, psi in zip(line["m"], line["mu"], line["Phi_1"], line["Psi_1"]):
+        m, mu, phi, psi = (Fraction(float(v)) for v in (m, mu, phi, psi))
+        out.append(-m * mu**2 * phi < (1 + mu**2) * psi**2)
+    return np.array(out)
 
 
 def run(quick: bool, out_dir) -> list[dict]:
@@ -62,43 +88,49 @@ def run(quick: bool, out_dir) -> list[dict]:
     n_random, n_line = 1_000_000, 1000
     data = _sample(rng, n_random)
     line = _on_hopf_line(rng, n_line)
-    values = [np.concatenate([data[k], line[k]]) for k in names]
-    n = n_random + n_line
+    values = [data[k] for k in names]
     started = time.perf_counter()
     classifier = nm.PointClassifier(st.hurwitz, parameters)
     build_s = time.perf_counter() - started
-    started = time.perf_counter()
-    ours = classifier(*values)
-    ours_s = time.perf_counter() - started
-    started = time.perf_counter()
-    random_only = classifier(*[data[k] for k in names])
-    random_s = time.perf_counter() - started
+    classifier(*[v[:1000] for v in values])  # warm up the generated code
+    ours_s, ours = _best_of(3, lambda: classifier(*values))
     # baseline: per-point numpy eigenvalues of (4.5), timed on a subsample
-    M, matrices = _matrices(lin, parameters, values)
+    M = sp.lambdify(parameters, lin.matrix, modules="numpy", cse=True)
     sub = 5000 if quick else 50000
-    index = rng.choice(n, sub, replace=False)
-    started = time.perf_counter()
-    for i in index:
-        matrix = np.array(M(*[v[i] for v in values]), dtype=float)
-        np.linalg.eigvals(matrix).real.max()
-    per_point = (time.perf_counter() - started) / sub
-    baseline_s = per_point * n
-    eig_max = np.linalg.eigvals(matrices).real.max(axis=1)
-    eig_stable = eig_max < 0
+    index = rng.choice(n_random, sub, replace=False)
+    per_point = _per_point_eigenvalues(M, values, index)
+    eig_stable = _batched_max_real_part(lin.matrix, parameters, values) < 0
     outside = ~ours.in_band
     disagreements = int(np.sum((ours.stable[outside] == 1) != eig_stable[outside]))
-    inside = ours.in_band
-    eig_wrong_inside = int(np.sum((ours.stable[inside] == 1) != eig_stable[inside]))
     notes = (
-        f"brake, 7 parameters (alpha, m, mu, Phi_j, Psi_j), {n_random} random points + {n_line} on the Hopf line; "
-        f"band {ours.band:.1e} relative; {ours.exact_points} points inside the band decided exactly "
-        f"(eigenvalues disagree on {eig_wrong_inside} of them); classifier built in {build_s:.2f} s (not counted); "
-        f"baseline per point {per_point * 1e6:.1f} us on {sub} points, extrapolated to {n}; "
-        f"stable fraction {np.mean(ours.stable == 1):.3f}; the 10^6 random points alone: {random_s:.3f} s "
-        f"({random_only.exact_points} inside the band), ratio {per_point * n_random / random_s:.0f}; "
-        "target 1000x not reached with NumPy: the trig and ~30 ops per point cost ~0.3 us"
+        f"brake, 7 parameters (alpha, m, mu, Phi_j, Psi_j), {n_random} random points; kept factors "
+        f"{len(classifier.kept)} ({', '.join(map(str, classifier.kept[:1]))}, ...); band {ours.band:.1e} relative; "
+        f"{ours.exact_points} points inside the band decided exactly; classifier built in {build_s:.2f} s "
+        f"(not counted); best of 3; baseline per point {per_point * 1e6:.1f} us on {sub} points, extrapolated; "
+        f"stable fraction {np.mean(ours.stable == 1):.3f}; 0 disagreements is checked against batched eigenvalues "
+        "of all points; the target 1000x is not reached here: numpy's float64 sin alone costs ~8 ns of the "
+        "~16 ns per point that 1000x allows"
     )
-    records = [record("classification", ours_s, baseline_s, disagreements, n, notes)]
+    records = [record("classification", ours_s, per_point * n_random, disagreements, n_random, notes)]
+    # adversarial points: on the Hopf line of (6.4), in floats, so inside the band
+    line_values = [line[k] for k in names]
+    line_s, on_line = _best_of(1, lambda: classifier(*line_values))
+    line_eig = _batched_max_real_part(lin.matrix, parameters, line_values) < 0
+    truth = _exact_hopf_side(line)
+    wrong = int(np.sum((on_line.stable == 1) != truth))
+    eig_wrong = int(np.sum(line_eig != truth))
+    records.append(
+        record(
+            "classification/on-the-hopf-line",
+            line_s,
+            per_point * n_line,
+            wrong,
+            n_line,
+            f"{n_line} points of the (6.4) slice put on the Hopf line in floats; {on_line.exact_points} decided "
+            f"exactly (256-bit, then rationals); error = disagreements with an exact rational evaluation of the "
+            f"Hopf condition; numpy eigenvalues get {eig_wrong} of them wrong",
+        )
+    )
     # the paper's slice (6.4): alpha = 90 deg, equal laws
     Phi, Psi = sp.symbols("Phi Psi", negative=True)
     m, mu, alpha = by_name["m"], by_name["mu"], by_name["alpha"]
@@ -107,28 +139,17 @@ def run(quick: bool, out_dir) -> list[dict]:
     slice_parameters = [m, mu, Phi, Psi]
     classifier64 = nm.PointClassifier([c.subs(slice_6_4) for c in st.hurwitz], slice_parameters)
     slice_values = [data["m"], data["mu"], data["Phi_1"], data["Psi_1"]]
-    started = time.perf_counter()
-    ours64 = classifier64(*slice_values)
-    ours64_s = time.perf_counter() - started
-    M64 = sp.lambdify(slice_parameters, lin.matrix.subs(slice_6_4), modules="numpy", cse=True)
-    started = time.perf_counter()
-    for i in index[index < n_random]:
-        np.linalg.eigvals(np.array(M64(*[v[i] for v in slice_values]), dtype=float)).real.max()
-    per_point64 = (time.perf_counter() - started) / int(np.sum(index < n_random))
-    A64 = np.zeros((n_random, 4, 4))
-    A64[:, 0, 0] = A64[:, 1, 1] = data["Psi_1"] / data["m"]
-    A64[:, 0, 1] = data["Psi_1"] * data["mu"] / data["m"]
-    A64[:, 1, 0] = -data["Psi_1"] * data["mu"] / data["m"]
-    A64[:, 0, 2] = A64[:, 1, 3] = data["Phi_1"]
-    A64[:, 2, 0] = A64[:, 3, 1] = 1 / data["m"]
-    A64[:, 2, 1] = data["mu"] / data["m"]
-    A64[:, 3, 0] = -data["mu"] / data["m"]
-    eig64 = np.linalg.eigvals(A64).real.max(axis=1) < 0
+    classifier64(*[v[:1000] for v in slice_values])
+    ours64_s, ours64 = _best_of(3, lambda: classifier64(*slice_values))
+    lin64 = lin.matrix.subs(slice_6_4)
+    M64 = sp.lambdify(slice_parameters, lin64, modules="numpy", cse=True)
+    per_point64 = _per_point_eigenvalues(M64, slice_values, index)
+    eig64 = _batched_max_real_part(lin64, slice_parameters, slice_values) < 0
     out64 = ~ours64.in_band
     disagree64 = int(np.sum((ours64.stable[out64] == 1) != eig64[out64]))
     notes64 = (
         f"(6.4) slice: alpha = 90 deg, Phi_1 = Phi_2, Psi_1 = Psi_2; kept condition {classifier64.kept}; "
-        f"band {ours64.band:.1e}; {ours64.exact_points} points decided exactly; baseline per point "
+        f"band {ours64.band:.1e}; {ours64.exact_points} points decided exactly; best of 3; baseline per point "
         f"{per_point64 * 1e6:.1f} us, extrapolated"
     )
     records.append(record("classification-6.4", ours64_s, per_point64 * n_random, disagree64, n_random, notes64))

@@ -1803,23 +1803,28 @@ def classify(scene_or_stability, values: Mapping, *, signs=None, band: float = 1
 class PointClassifier:
     """Certified, vectorised classification of many parameter points.
 
-    Each condition (stable iff all > 0) is factored, factors of known sign (masses,
-    Phi < 0, Psi < 0, squares) are dropped, and each remaining factor is split into its
-    terms of known sign: F = P - M with P, M >= 0 sums of nonnegative terms (terms of
-    unknown sign go with their absolute values into the magnitude). Floating-point
-    evaluation of P and M has a relative error below gamma = (ops + terms + 2) u, so the
-    sign of F is certain where |F| > 2 gamma (P + M). Points inside
-    ``max(band, 2 gamma)`` relative are decided exactly: the binary inputs are exact
-    rationals, F is evaluated in 256-bit arithmetic, and where even that leaves
-    |F| < 2^-200 (P + M) the point is recomputed in SymPy rationals. The float stage runs
-    in chunks on ``workers`` threads (NumPy releases the GIL).
+    Each condition (stable iff all > 0) is factored, and factors of known sign (masses,
+    Phi < 0, Psi < 0) are dropped; equal factors of different conditions are evaluated
+    once. Each remaining factor is split into its terms of known sign, F = P - M + U with
+    P, M sums of nonnegative terms and U the terms of unknown sign. P and M are
+    factored again where every sum of the factored form has terms of one sign: such a
+    form is cheaper and keeps a relative error bound, |P^ - P| <= gamma_r P with r the
+    roundings along its longest path. Hence |F^ - F| <= gamma (P + M + |U|), and the sign
+    is certain where |F^| > 2 gamma (P + M + |U|). A factor without negative part is
+    certain wherever P^ > 0. Points inside ``max(band, 2 gamma)`` relative, or with a
+    scale outside 1e-200..1e200 (where underflow could spoil the bound), are decided
+    exactly: the binary inputs are exact rationals, F is evaluated in 256-bit
+    arithmetic, and where even that leaves |F| < 2^-200 (P + M + |U|) the point is
+    recomputed in SymPy rationals. The float stage runs in chunks that stay in the cache.
 
     Parameters
     ----------
     conditions : sequence of sympy expressions
         Stable exactly when all are > 0 (e.g. ``Stability.hurwitz``).
     parameters : sequence of Symbol
-        The order of the parameter arrays passed to :meth:`__call__`.
+        The order of the parameter arrays passed to :meth:`__call__`. Functions such as
+        ``sin`` must act on expressions that are exact in floating point (a parameter,
+        or twice a parameter); otherwise introduce a parameter for the argument.
     band : float
         Relative half-width of the band decided exactly.
 
@@ -1835,6 +1840,8 @@ class PointClassifier:
     >>> pc = PointClassifier([c.subs(slice_6_4) for c in st.hurwitz], [m, mu, Phi, Psi])
     >>> pc.kept
     [Phi*m*mu**2 + Psi**2*mu**2 + Psi**2]
+    >>> pc.parts[0]  # P and M of the kept factor
+    (Psi**2*(mu**2 + 1), -Phi*m*mu**2)
     >>> out = pc(np.array([1.0, 1.0]), np.array([1.0, 1.0]), np.array([-2.0, -1.0]), np.array([-1.0, -1.0]))
     >>> out.stable.tolist(), out.exact_points
     ([0, 1], 1)
@@ -1844,37 +1851,25 @@ class PointClassifier:
         self.parameters = tuple(parameters)
         self.band = float(band)
         self.conditions = [sp.sympify(c) for c in conditions]
-        self.factors: list[tuple[int, int, sp.Expr]] = []  # (condition index, sign, factor)
+        self.kept: list[sp.Expr] = []  # distinct factors of unknown sign
+        self.uses: list[tuple[int, int, int]] = []  # (condition index, sign, position in kept)
         self.always_false: list[int] = []
         for index, condition in enumerate(self.conditions):
-            sign, kept = self._reduce(condition)
+            sign, factors = self._reduce(condition)
             if sign == 0:
                 self.always_false.append(index)
-            for factor in kept:
-                self.factors.append((index, sign if factor is kept[0] else 1, factor))
-        self.kept = [f for _, _, f in self.factors]
-        groups, self.gammas = [], []
-        for factor in self.kept:
-            plus, minus, unknown, unknown_abs, ops = [], [], [], [], 0
-            terms = sp.Add.make_args(sp.expand(factor))
-            for term in terms:
-                ops = max(ops, _term_ops(term))
-                if term.is_nonnegative:
-                    plus.append(term)
-                elif term.is_nonpositive:
-                    minus.append(-term)
-                else:
-                    unknown.append(term)
-                    unknown_abs.append(sp.Abs(term))
-            groups += [sp.Add(*plus), sp.Add(*minus), sp.Add(*unknown), sp.Add(*unknown_abs)]
-            self.gammas.append(_gamma(ops + len(terms) + 2))
-        self._function = lambdify_cse(self.parameters, groups)
-        self._mp_function = [
-            sp.lambdify(self.parameters, groups[4 * i : 4 * i + 4], modules="mpmath") for i in range(len(self.kept))
-        ]
+            for number, factor in enumerate(factors):
+                if factor not in self.kept:
+                    self.kept.append(factor)
+                self.uses.append((index, sign if number == 0 else 1, self.kept.index(factor)))
         free = set().union(*[f.free_symbols for f in self.kept]) if self.kept else set()
         if free - set(self.parameters):
             raise NumericsError(f"the conditions also need values for {sorted(map(str, free - set(self.parameters)))}.")
+        self.parts = [self._split(factor) for factor in self.kept]
+        self.gammas = [_gamma(r + 3) for r in (self._roundings_of(*p) for p in self.parts)]
+        groups = [g for p in self.parts for g in p]
+        self._function = lambdify_cse(self.parameters, groups)
+        self._mp_function = [sp.lambdify(self.parameters, list(p), modules="mpmath") for p in self.parts]
 
     @staticmethod
     def _reduce(condition: sp.Expr) -> tuple[int, list]:
@@ -1894,97 +1889,237 @@ class PointClassifier:
             kept.append(factor)
         return sign, kept or [sp.S.One]
 
+    @staticmethod
+    def _split(factor: sp.Expr) -> tuple:
+        """(P, M) or (P, M, U, |U|): the factor is P - M + U."""
+        plus, minus, unknown = [], [], []
+        for term in sp.Add.make_args(sp.expand(factor)):
+            if term.is_nonnegative:
+                plus.append(term)
+            elif term.is_nonpositive:
+                minus.append(-term)
+            else:
+                unknown.append(term)
+        P, M = (_one_signed_form(sp.Add(*terms)) for terms in (plus, minus))
+        if not unknown:
+            return P, M
+        return P, M, sp.Add(*unknown), sp.Add(*[sp.Abs(t) for t in unknown])
+
+    @staticmethod
+    def _roundings_of(*parts) -> int:
+        return max(_roundings(part) for part in parts)
+
     def _check(self, arrays) -> list[np.ndarray]:
         if len(arrays) != len(self.parameters):
             raise NumericsError(
                 f"give {len(self.parameters)} arrays, one per parameter {list(map(str, self.parameters))}."
             )
-        out = []
-        for symbol, array in zip(self.parameters, arrays):
-            a = np.asarray(array, dtype=float)
-            if not np.all(np.isfinite(a)):
-                raise NumericsError(f"the values of {symbol} are not all finite.")
-            if symbol.is_positive and not np.all(a > 0):
-                raise NumericsError(f"{symbol} is declared positive; some values are <= 0.")
-            if symbol.is_negative and not np.all(a < 0):
-                raise NumericsError(f"{symbol} is declared negative; some values are >= 0.")
-            out.append(a)
-        return out
+        return [np.asarray(array, dtype=float) for array in arrays]
 
-    def _float_stage(self, arrays, shape):
-        groups = self._function(*arrays)
-        signs = np.ones((len(self.conditions), *shape), dtype=np.int8)
-        for index in self.always_false:
-            signs[index] = 0
-        in_band = np.zeros(shape, dtype=bool)
-        for position, (index, sign, _) in enumerate(self.factors):
-            P, M, U, Ua = (
-                np.broadcast_to(np.asarray(g, dtype=float), shape) for g in groups[4 * position : 4 * position + 4]
-            )
-            value = P - M + U
-            width = max(self.band, 2 * self.gammas[position]) * (P + M + Ua)
-            in_band |= np.abs(value) <= width
-            signs[index] *= np.where(value > 0, 1, -1).astype(np.int8) * sign
-        return signs, in_band
+    def _check_values(self, arrays) -> None:
+        for symbol, a in zip(self.parameters, arrays):
+            if a.size == 0:
+                continue
+            low, high = a.min(), a.max()  # NaN propagates; +-inf shows in the extremes
+            if not (math.isfinite(low) and math.isfinite(high)):
+                raise NumericsError(f"the values of {symbol} are not all finite.")
+            if symbol.is_positive and not low > 0:
+                raise NumericsError(f"{symbol} is declared positive; some values are <= 0.")
+            if symbol.is_negative and not high < 0:
+                raise NumericsError(f"{symbol} is declared negative; some values are >= 0.")
+
+    def _float_stage(self, arrays, size: int) -> np.ndarray:
+        """Per kept factor: its sign where certain (+1/-1) and 0 where not (int8).
+
+        Any overflow, underflow or invalid operation (which would void the relative
+        error bounds) sends the chunk to the slower test that checks each point's scale.
+        """
+        self._check_values(arrays)
+        try:
+            with np.errstate(all="raise"):
+                return self._signs(arrays, size, _certain_sign)
+        except FloatingPointError:
+            with np.errstate(all="ignore"):
+                return self._signs(arrays, size, _certain_sign_guarded)
+
+    def _signs(self, arrays, size: int, test) -> np.ndarray:
+        values = iter(self._function(*arrays))
+        out = np.empty((len(self.kept), size), dtype=np.int8)
+        for position, part in enumerate(self.parts):
+            groups = [_as_array(next(values), size) for _ in part]
+            out[position] = test(groups, max(self.band, 2 * self.gammas[position]), part)
+        return out
 
     def _high_precision_sign(self, position: int, point: list[float]) -> int | None:
         """Sign of a kept factor in 256-bit arithmetic from the exact binary inputs, or None."""
         import mpmath
 
         with mpmath.workprec(256):
-            P, M, U, Ua = self._mp_function[position](*[mpmath.mpf(x) for x in point])
+            P, M, *rest = self._mp_function[position](*[mpmath.mpf(x) for x in point])
+            U, Ua = rest or (0, 0)
             value = P - M + U
             if abs(value) > mpmath.mpf(2) ** -200 * (P + M + Ua):
                 return 1 if value > 0 else -1
         return None
 
-    def __call__(self, *arrays, chunk: int = 1 << 16, workers: int = 2) -> _PointsResult:
+    def __call__(self, *arrays, chunk: int = 1 << 15) -> _PointsResult:
         arrays = self._check(arrays)
         shape = np.broadcast(*arrays).shape if arrays else ()
         arrays = [np.ascontiguousarray(np.broadcast_to(a, shape)).ravel() for a in arrays]
         size = int(np.prod(shape))
-        starts = list(range(0, size, chunk)) or [0]
+        factor_signs = np.empty((len(self.kept), size), dtype=np.int8)
         signs = np.empty((len(self.conditions), size), dtype=np.int8)
-        in_band = np.empty(size, dtype=bool)
-
-        def work(start):
+        stable = np.empty(size, dtype=np.int8)
+        for start in range(0, size, chunk):  # chunks that stay in the cache
             stop = min(start + chunk, size)
-            part_signs, part_band = self._float_stage([a[start:stop] for a in arrays], (stop - start,))
-            signs[:, start:stop] = part_signs
-            in_band[start:stop] = part_band
-
-        if workers > 1 and len(starts) > 1:
-            from concurrent.futures import ThreadPoolExecutor
-
-            with ThreadPoolExecutor(workers) as pool:
-                list(pool.map(work, starts))
-        else:
-            for start in starts:
-                work(start)
-        exact_points = 0
-        for i in np.nonzero(in_band)[0]:
+            part = factor_signs[:, start:stop]
+            part[...] = self._float_stage([a[start:stop] for a in arrays], stop - start)
+            self._combine(part, signs[:, start:stop], stable[start:stop])
+        in_band = np.zeros(size, dtype=bool)
+        for position in range(len(self.kept)):
+            in_band |= factor_signs[position] == 0
+        points = np.nonzero(in_band)[0]
+        for i in points:
             point = [float(a[i]) for a in arrays]
-            for index in range(len(self.conditions)):
-                if index not in self.always_false:
-                    signs[index, i] = self._decide_point(index, point)
-            exact_points += 1
-        signs = signs.reshape((len(self.conditions), *shape))
-        in_band = in_band.reshape(shape)
-        stable = np.where(np.all(signs > 0, axis=0), 1, np.where(np.any(signs < 0, axis=0), -1, 0)).astype(np.int8)
+            for position in np.nonzero(factor_signs[:, i] == 0)[0]:
+                factor_signs[position, i] = self._exact_factor_sign(position, point)
+            self._combine(factor_signs[:, i : i + 1], signs[:, i : i + 1], stable[i : i + 1])
         bands = [max(self.band, 2 * g) for g in self.gammas]
-        return _PointsResult(stable, signs, in_band, exact_points, max(bands, default=self.band))
+        return _PointsResult(
+            stable.reshape(shape),
+            signs.reshape((len(self.conditions), *shape)),
+            in_band.reshape(shape),
+            len(points),
+            max(bands, default=self.band),
+        )
 
-    def _decide_point(self, index: int, point: list[float]) -> int:
-        """The exact sign of one condition at one point: 256-bit first, then rationals."""
-        sign = 1
-        for position, (owner, factor_sign, _) in enumerate(self.factors):
-            if owner != index:
-                continue
-            found = self._high_precision_sign(position, point)
-            if found is None:
-                return certified_sign(self.conditions[index], dict(zip(self.parameters, point)), band=0.0)[0]
-            sign *= found * factor_sign
-        return sign
+    def _combine(self, factor_signs, signs, stable) -> None:
+        """Signs of the conditions from those of their factors; stable = the least of them."""
+        signs[...] = 1
+        for index, sign, position in self.uses:
+            signs[index] *= factor_signs[position]
+            if sign < 0:
+                np.negative(signs[index], out=signs[index])
+        signs[self.always_false] = 0
+        if len(signs):
+            np.min(signs, axis=0, out=stable)
+        else:
+            stable[...] = 1
+
+    def _exact_factor_sign(self, position: int, point: list[float]) -> int:
+        """The exact sign of one kept factor at one point: 256-bit first, then rationals."""
+        found = self._high_precision_sign(position, point)
+        if found is not None:
+            return found
+        return certified_sign(self.kept[position], dict(zip(self.parameters, point)), band=0.0)[0]
+
+
+def _as_array(value, size: int) -> np.ndarray:
+    """Generated code returns plain numbers for constant parts (0 for an empty M)."""
+    return value if isinstance(value, np.ndarray) else np.full(size, float(value))
+
+
+_TINY, _HUGE = 1e-200, 1e200  # scales where the relative bounds hold without underflow
+
+
+def _certain_sign(groups, width: float, part) -> np.ndarray:
+    """+1/-1 where the sign of P - M (+ U) is certain, 0 elsewhere (int8 array); for
+    chunks evaluated without overflow, underflow or invalid operations."""
+    P, M, *rest = groups
+    if rest:
+        return _certain_sign_guarded(groups, width, part)
+    if part[1] == 0:  # F = P, nonnegative terms: P^ > 0 iff P > 0
+        return (P > 0).view(np.int8)
+    if part[0] == 0:
+        return -(M > 0).view(np.int8)
+    # P - M > width (P + M) iff P (1 - width) > M (1 + width): no cancellation in the test
+    positive = (P * (1 - width) > M * (1 + width)).view(np.int8)
+    negative = (M * (1 - width) > P * (1 + width)).view(np.int8)
+    return positive - negative
+
+
+def _certain_sign_guarded(groups, width: float, part) -> np.ndarray:
+    """As :func:`_certain_sign`, for any chunk: NaN, infinities and scales outside
+    ``_TINY.._HUGE`` give 0 (decided exactly)."""
+    P, M, U, Ua = (*groups, 0.0, 0.0) if len(groups) == 2 else groups
+    value, scale = P - M + U, P + M + Ua
+    certain = (np.abs(value) > width * scale) & (scale > _TINY) & (scale < _HUGE)
+    return np.where(certain, np.where(value > 0, 1, -1), 0).astype(np.int8)
+
+
+def _one_signed_form(total: sp.Expr) -> sp.Expr:
+    """A cheap form of ``total``, a sum of terms of one sign, in which every sum still has
+    terms of one sign (so floating point keeps a relative error bound): the sum or its
+    factored form, with shared powers pulled out of sums."""
+    if total.is_Number or len(sp.Add.make_args(total)) < 2:
+        return total
+    candidates = [_pulled_out(total), sp.Mul(*[_pulled_out(f) for f in sp.Mul.make_args(sp.factor(total))])]
+    valid = [c for c in candidates if _one_signed_sums(c)]
+    return min(valid, key=sp.count_ops) if valid else total
+
+
+def _pulled_out(expr: sp.Expr) -> sp.Expr:
+    """``expr`` with, recursively, the power shared by most terms pulled out of each sum:
+    a + b x + c x y becomes a + x (b + c y), and a + b + x (a + b) becomes (x + 1)(a + b)."""
+    if expr.is_Pow and expr.exp.is_Integer:
+        return _pulled_out(expr.base) ** expr.exp
+    terms = sp.Add.make_args(expr)
+    if len(terms) < 2:
+        return expr
+    counts: dict = {}
+    for term in terms:
+        for base, exponent in term.as_powers_dict().items():
+            if not base.is_Number and exponent.is_Integer and exponent > 0:
+                counts.setdefault(base, []).append(int(exponent))
+    shared = [(len(e), b) for b, e in counts.items() if len(e) > 1]
+    if not shared:
+        return expr
+    _, base = max(shared, key=lambda item: (item[0], sp.default_sort_key(item[1])))
+    power = base ** min(counts[base])
+    inside = [t for t in terms if base in t.as_powers_dict()]
+    outside = [t for t in terms if base not in t.as_powers_dict()]
+    inner, rest = _pulled_out(sp.Add(*[t / power for t in inside])), _pulled_out(sp.Add(*outside))
+    return (power + 1) * inner if inner == rest else power * inner + rest
+
+
+def _one_signed_sums(expr: sp.Expr) -> bool:
+    for node in sp.preorder_traversal(expr):
+        if node.is_Add and not (all(a.is_nonnegative for a in node.args) or all(a.is_nonpositive for a in node.args)):
+            return False
+    return True
+
+
+def _roundings(expr: sp.Expr) -> int:
+    """Roundings along the longest path of the evaluation of ``expr`` in floating point:
+    its computed value is within gamma_r relative of the exact one when every sum of
+    ``expr`` has terms of one sign."""
+    if expr.is_Symbol:
+        return 0
+    if expr.is_Number or expr.is_NumberSymbol:
+        if expr.is_Rational and _exact_float(float(expr), Fraction(int(expr.p), int(expr.q))):
+            return 0
+        return 1
+    if expr.is_Add:
+        return max(_roundings(a) for a in expr.args) + len(expr.args) - 1
+    if expr.is_Mul:  # a product of k factors: k - 1 roundings, none for a power of two
+        exact = sum(1 for f in expr.args if f.is_Integer and f != 0 and abs(int(f)).bit_count() == 1)
+        return sum(_roundings(f) for f in expr.args) + len(expr.args) - 1 - exact
+    if expr.is_Pow:
+        base, exponent = expr.args
+        if exponent.is_Integer:
+            n = abs(int(exponent))
+            return n * _roundings(base) + n + (1 if exponent < 0 else 0)
+        if exponent.is_Rational:
+            return _roundings(base) + 2
+    if isinstance(expr, sp.Abs):
+        return _roundings(expr.args[0])
+    if isinstance(expr, sp.Function) and len(expr.args) == 1:
+        if _roundings(expr.args[0]) == 0:
+            return 4  # NumPy's elementary functions: within a few units in the last place
+        raise NumericsError(
+            f"cannot bound the rounding of {expr}: its argument is rounded; introduce a parameter for the argument."
+        )
+    raise NumericsError(f"cannot bound the rounding of {expr}; rewrite it with +, *, powers and functions.")
 
 
 @dataclass(frozen=True, eq=False)
@@ -1998,21 +2133,6 @@ class _PointsResult:
     in_band: np.ndarray
     exact_points: int
     band: float
-
-
-def _term_ops(term: sp.Expr) -> int:
-    """A bound on the roundings in evaluating one product term."""
-    ops = 0
-    for factor in sp.Mul.make_args(term):
-        if factor.is_Number:
-            ops += 1
-        elif factor.is_Pow and factor.exp.is_Integer:
-            ops += abs(int(factor.exp)) + 1 + _term_ops(factor.base)
-        elif factor.is_Symbol:
-            ops += 1
-        else:
-            ops += 3 + sum(_term_ops(a) for a in factor.args)
-    return ops
 
 
 # --- cycles of the fast subsystem and the averaged system (2.7) --------------------------

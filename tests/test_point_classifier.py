@@ -1,0 +1,141 @@
+"""The certified vectorised classifier: cheap one-signed forms, sound signs, clear errors."""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import contactsym as cs
+from contactsym import numerics as nm
+
+a, b, c = sp.symbols("a b c", positive=True)
+p, q = sp.symbols("p q", negative=True)
+x = sp.Symbol("x", real=True)
+SYMBOLS = (a, b, c, p, q)
+monomials = st.tuples(
+    st.integers(1, 5), st.integers(0, 2), st.integers(0, 2), st.integers(0, 2), st.integers(0, 2), st.integers(0, 2)
+)
+
+
+def _polynomial(terms) -> sp.Expr:
+    return sp.Add(*[k * a**i * b**j * c**l * p**r * q**s for k, i, j, l, r, s in terms])
+
+
+def _exact_sign(expr: sp.Expr, point, symbols=SYMBOLS) -> int:
+    value = expr.xreplace({s: sp.Rational(Fraction(float(v))) for s, v in zip(symbols, point)})
+    return int(sp.sign(value))
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(monomials, min_size=1, max_size=8), st.sampled_from([1, -1]))
+def test_one_signed_form_is_the_same_sum_with_one_signed_sums(terms, sign):
+    total = sign * sp.expand(_polynomial(terms) ** 2)  # mixed signs inside, one sign in all
+    one_signed = sp.Add(*[t for t in sp.Add.make_args(total) if (sign * t).is_nonnegative])
+    form = nm._one_signed_form(one_signed)
+    assert sp.expand(form - one_signed) == 0
+    assert nm._one_signed_sums(form)
+    assert sp.count_ops(form) <= sp.count_ops(one_signed)
+
+
+def test_shared_sums_are_pulled_out_once():
+    total = a * p + b * p + c**2 * a * p + c**2 * b * p
+    form = nm._one_signed_form(-total)
+    assert sp.expand(form + total) == 0
+    assert sp.count_ops(form) < sp.count_ops(total)
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(monomials, min_size=1, max_size=6), st.lists(st.floats(0.25, 4.0), min_size=5, max_size=5))
+def test_signs_are_never_wrong_even_on_the_boundary(terms, point):
+    """F = A(a, b) - A(b, a) vanishes on a = b; points on it and one ulp away."""
+    A = _polynomial(terms)
+    F = A - A.xreplace({a: b, b: a})
+    classifier = nm.PointClassifier([F], list(SYMBOLS))
+    base = [point[0], point[1], point[2], -point[3], -point[4]]
+    on_line = [point[1], *base[1:]]
+    next_to = [math.nextafter(point[1], 5.0), *base[1:]]
+    arrays = [np.array(column) for column in zip(base, on_line, next_to)]
+    result = classifier(*arrays)
+    for k in range(3):
+        exact = _exact_sign(F, [arrays[i][k] for i in range(5)])
+        assert result.signs[0, k] == exact, (F, k)
+
+
+def test_points_straddling_a_boundary_at_every_distance_get_the_exact_sign():
+    F = a**2 * p**2 - 2 * b * c * p**2 - 3 * q**2 * c  # zero where a^2 = 2 b c + 3 q^2 c / p^2
+    classifier = nm.PointClassifier([F], list(SYMBOLS))
+    rng = np.random.default_rng(7)
+    n = 400
+    B, C, P, Q = rng.uniform(0.5, 2, n), rng.uniform(0.5, 2, n), -rng.uniform(0.5, 2, n), -rng.uniform(0.5, 2, n)
+    root = np.sqrt(2 * B * C + 3 * Q**2 * C / P**2)
+    relative = 10.0 ** rng.uniform(-17, -1, n) * rng.choice([-1, 1], n)
+    A = root * (1 + relative)
+    result = classifier(A, B, C, P, Q)
+    for k in range(n):
+        assert result.signs[0, k] == _exact_sign(F, [A[k], B[k], C[k], P[k], Q[k]])
+    assert result.exact_points > 0  # the closest ones took the exact path
+    assert not result.in_band[np.abs(relative) > 1e-6].any()
+
+
+def test_underflow_and_overflow_chunks_are_decided_soundly():
+    F = a * b - c**2
+    classifier = nm.PointClassifier([F], [a, b, c])
+    A = np.array([1e-160, 1e-160, 1e150, 3.0])
+    B = np.array([1e-160, 2e-160, 1e150, 3.0])
+    C = np.array([1.1e-160, 1e-160, 1e150, 3.0])
+    result = classifier(A, B, C)
+    exact = [_exact_sign(F, point, (a, b, c)) for point in zip(A, B, C)]
+    assert result.signs[0].tolist() == exact
+    assert result.in_band[:3].all()  # scales out of range went the exact way
+
+
+def test_brake_classification_matches_the_exact_signs_of_the_hurwitz_conditions():
+    st_ = cs.scene("brake").stability()
+    names = ["alpha", "m", "mu", "Phi_1", "Phi_2", "Psi_1", "Psi_2"]
+    by_name = {str(s): s for s in set().union(*[h.free_symbols for h in st_.hurwitz])}
+    parameters = [by_name[n] for n in names]
+    classifier = nm.PointClassifier(st_.hurwitz, parameters)
+    rng = np.random.default_rng(11)
+    n = 200
+    values = [
+        rng.uniform(0.05, 3.0, n),
+        rng.uniform(0.2, 5, n),
+        rng.uniform(0.05, 3, n),
+        *(-np.exp(rng.normal(0, 1.5, (4, n)))),
+    ]
+    result = classifier(*values)
+    for k in range(0, n, 10):
+        point = dict(zip(parameters, [v[k] for v in values]))
+        exact = [nm.certified_sign(h, point)[0] for h in st_.hurwitz]
+        assert result.signs[:, k].tolist() == exact
+
+
+@pytest.mark.parametrize(
+    "values, message",
+    [
+        ([np.array([1.0, np.nan]), np.array([1.0, 1.0])], "not all finite"),
+        ([np.array([1.0, np.inf]), np.array([1.0, 1.0])], "not all finite"),
+        ([np.array([1.0, -1.0]), np.array([1.0, 1.0])], "declared positive"),
+    ],
+)
+def test_bad_values_get_a_clear_error(values, message):
+    classifier = nm.PointClassifier([a - b], [a, b])
+    with pytest.raises(nm.NumericsError, match=message):
+        classifier(*values)
+
+
+def test_a_function_of_a_rounded_argument_is_refused_with_a_fix():
+    with pytest.raises(nm.NumericsError, match="introduce a parameter"):
+        nm.PointClassifier([sp.sin(a / 3) - b], [a, b])
+
+
+def test_exact_functions_of_parameters_are_accepted():
+    classifier = nm.PointClassifier([sp.sin(2 * x) ** 2 - b], [x, b])
+    result = classifier(np.array([0.5, 0.5]), np.array([0.5, 0.9]))
+    assert result.stable.tolist() == [1 if math.sin(1.0) ** 2 > 0.5 else -1, -1]
