@@ -2115,7 +2115,7 @@ def _roundings(expr: sp.Expr) -> int:
         return _roundings(expr.args[0])
     if isinstance(expr, sp.Function) and len(expr.args) == 1:
         if _roundings(expr.args[0]) == 0:
-            return 4  # NumPy's elementary functions: within a few units in the last place
+            return 4  # NumPy's elementary functions: at most 4 units in the last place (its SIMD ones)
         raise NumericsError(
             f"cannot bound the rounding of {expr}: its argument is rounded; introduce a parameter for the argument."
         )
