@@ -107,7 +107,9 @@ def _first_subresultant(A: sp.Poly, B: sp.Poly) -> sp.Poly:
     m, n = A.degree(), B.degree()
     rows = [A * _z**i for i in reversed(range(n - 1))] + [B * _z**i for i in reversed(range(m - 1))]
     top = m + n - 2
-    matrix = sp.Matrix([[row.coeff_monomial(_z ** (top - c)) for c in range(top - 1)] + [row.as_expr()] for row in rows])
+    matrix = sp.Matrix(
+        [[row.coeff_monomial(_z ** (top - c)) for c in range(top - 1)] + [row.as_expr()] for row in rows]
+    )
     return sp.Poly(matrix.det(method="berkowitz"), _z)
 
 

@@ -1187,7 +1187,10 @@ def simulate_full(
         |f_j(0) / a_jj| when no equilibrium exists).
     atol : optional
         Default: ``rtol`` times a typical magnitude of each component (the contact
-        deformations are O(eps**2), their rates O(eps)).
+        deformations are O(eps**2), their rates O(eps)), but not below what the rounding
+        of the gap expressions allows (a gap such as h - l sin(phi) - y is a difference
+        of O(1) numbers). Where the deformations themselves are below that rounding, a
+        :class:`NumericsError` says so instead of letting the solver's steps collapse.
 
     Examples
     --------
@@ -1284,8 +1287,17 @@ def simulate_full(
             scale[n + i] = max(scale[n + i], acceleration[i] * duration)
     top = float(scale.max(initial=0.0))
     scale = np.maximum(scale, 1e-12 * top if top > 0 else 1.0)
+    gap_noise = _gap_noise(gap_exprs, positions, z0)
+    if np.any(gap_noise > gap_scale):
+        j = int(np.argmax(gap_noise / gap_scale))
+        raise NumericsError(
+            f"at eps = {eps:g} the deformation of contact {j + 1} (about {gap_scale[j]:.1e}) is lost in the "
+            f"rounding of its gap {gap_exprs[j]} (about {gap_noise[j]:.1e} with a safety margin) in these "
+            "coordinates; use a larger eps (the reduced system is then the answer to this accuracy) or "
+            "write the scene with the gap as a coordinate."
+        )
     if atol is None:
-        atol = rtol * scale
+        atol = np.maximum(rtol * scale, _roundoff_floor(gap_noise, n, determined, Dg, S * a))
     bound = reaction_bound if reaction_bound is not None else bound_factor * N_scale
     run = integrate(
         system,
@@ -1310,6 +1322,31 @@ def simulate_full(
     if branch is None and run.status == "impact":
         extra["no_equilibrium"] = True
     return _replace(run, extra={**run.extra, **extra})
+
+
+def _gap_noise(gap_exprs, positions, z0) -> np.ndarray:
+    """Rounding error of each gap in floating point, with a margin of 10^4.
+
+    A gap such as h - l sin(phi) - y is a difference of O(1) numbers: evaluated in floating
+    point it carries an error of about u (|h| + |l sin(phi)| + |y|), which the law divides
+    by eps^2.
+    """
+    magnitude = lambdify_cse(positions, [sp.Add(*[sp.Abs(t) for t in sp.Add.make_args(g)]) for g in gap_exprs])
+    return 1e4 * _UNIT * np.abs(np.asarray(magnitude(*z0[: len(positions)]), dtype=float)).reshape(-1)
+
+
+def _roundoff_floor(gap_noise, n: int, determined, Dg, fast_squared) -> np.ndarray:
+    """The least absolute tolerance of each state component that the gaps' rounding allows:
+    asking the solver for more in the coordinates fixed by the contacts makes its steps
+    collapse."""
+    floor = np.zeros(2 * n)
+    if not determined:
+        return floor
+    rate_noise = gap_noise * np.sqrt(np.where(fast_squared > 0, fast_squared, 1.0))
+    inverse = np.abs(np.linalg.pinv(Dg[:, determined]))
+    for row, i in enumerate(determined):
+        floor[i], floor[n + i] = inverse[row] @ gap_noise, inverse[row] @ rate_noise
+    return floor
 
 
 def _replace(run: Simulation, **changes) -> Simulation:

@@ -65,7 +65,9 @@ def test_paper_closed_forms():
     assert guides.regions()["unstable for every law"].condition == (v1 + v2 > 2 * kappa**2)
     stable = guides.regions()["stable for every law"].condition
     assert set(stable.args) == {
-        sp.Ge((v1 + 1) * (v2 + 1), 0), sp.Lt(v1, 2 * kappa**2 + 1), sp.Lt(v2, 2 * kappa**2 + 1),
+        sp.Ge((v1 + 1) * (v2 + 1), 0),
+        sp.Lt(v1, 2 * kappa**2 + 1),
+        sp.Lt(v2, 2 * kappa**2 + 1),
         sp.Lt(v1 + v2, 2 * kappa**2),
     }
     mu, alpha = sp.symbols("mu alpha", positive=True)
