@@ -139,3 +139,16 @@ def test_exact_functions_of_parameters_are_accepted():
     classifier = nm.PointClassifier([sp.sin(2 * x) ** 2 - b], [x, b])
     result = classifier(np.array([0.5, 0.5]), np.array([0.5, 0.9]))
     assert result.stable.tolist() == [1 if math.sin(1.0) ** 2 > 0.5 else -1, -1]
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.floats(-20, 20), st.integers(1, 3))
+def test_even_powers_of_sin_and_cos_through_tan_are_the_same_numbers(angle, half):
+    for function in (sp.sin, sp.cos):
+        expr = a * function(x) ** (2 * half) + b
+        code = nm._through_tan(expr)
+        assert not code.has(function)
+        if abs(math.cos(angle)) > 1e-6:  # tan is finite
+            point = {a: 1.5, b: 0.25, x: angle}
+            assert math.isclose(float(code.subs(point)), float(expr.subs(point)), rel_tol=1e-12, abs_tol=1e-15)
+    assert nm._through_tan(sp.sin(x) ** 3) == sp.sin(x) ** 3  # odd powers keep their sign: left alone
