@@ -71,11 +71,19 @@ def hurwitz_minors(poly: sp.Poly) -> list[sp.Expr]:
     return [m.xreplace(values) for m in _generic_minors(poly.degree())]
 
 
-def _lienard_chipart_parts(poly: sp.Poly, minors: list[sp.Expr]) -> tuple[list, list]:
-    """(coefficients that are not positive numbers, [Delta_(n-1), Delta_(n-3), ...] down to Delta_2)."""
+def _lienard_chipart_choice(poly: sp.Poly) -> tuple[list[int], list[int]]:
+    """(powers s of the coefficients p_s that are not positive numbers, orders m of the
+    minors Delta_(n-1), Delta_(n-3), ... down to Delta_2): the Liénard–Chipart conditions."""
     n = poly.degree()
-    coefficients = [c for c in _coefficients(poly) if not (c.is_number and c > 0)]
-    return coefficients, [minors[m - 1] for m in range(n - 1, 1, -2)]
+    powers = [n - i for i, c in enumerate(_coefficients(poly)) if not (c.is_number and c > 0)]
+    return powers, list(range(n - 1, 1, -2))
+
+
+def _lienard_chipart_parts(poly: sp.Poly, minors: list[sp.Expr]) -> tuple[list, list]:
+    """(the chosen coefficients, the chosen minors)."""
+    powers, orders = _lienard_chipart_choice(poly)
+    coefficients = _coefficients(poly)
+    return [coefficients[poly.degree() - s] for s in powers], [minors[m - 1] for m in orders]
 
 
 def lienard_chipart(poly: sp.Poly, minors: list[sp.Expr] | None = None) -> list[sp.Expr]:
@@ -174,6 +182,13 @@ class Hurwitz:
     def conditions(self) -> list[sp.Expr]:
         coefficients, chosen = self._parts
         return coefficients + chosen
+
+    @cached_property
+    def labels(self) -> list[tuple[str, int]]:
+        """What each condition is: ``("p", s)`` for the coefficient p_s of (4.6),
+        ``("Delta", m)`` for the Hurwitz minor Delta_m of (4.7)."""
+        powers, orders = _lienard_chipart_choice(self.poly)
+        return [("p", s) for s in powers] + [("Delta", m) for m in orders]
 
     @cached_property
     def hopf_set(self) -> sp.Basic:

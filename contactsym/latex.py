@@ -278,13 +278,7 @@ def hurwitz_names(stability) -> list[str]:
     >>> hurwitz_names(cs.scene("brake").stability())
     ['p_{3}', 'p_{2}', 'p_{1}', 'p_{0}', '\\Delta_{3}']
     """
-    poly = stability.poly
-    n = poly.poly.degree()
-    names = [f"p_{{{n - i}}}" for i, c in enumerate(poly.coefficients) if not (c.is_number and c > 0)]
-    names += [f"\\Delta_{{{m}}}" for m in range(n - 1, 1, -2)]
-    if len(names) != len(stability.hurwitz):  # the Hurwitz module changed its rule: plain names
-        names = [f"h_{{{i}}}" for i in range(1, len(stability.hurwitz) + 1)]
-    return names
+    return [("p" if kind == "p" else "\\Delta") + f"_{{{index}}}" for kind, index in stability.poly.labels]
 
 
 def _generic_minors(n: int) -> dict[int, sp.Expr]:

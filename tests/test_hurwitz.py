@@ -314,3 +314,20 @@ def test_hurwitz_hopf_set_quartic():
     assert H.hopf_set.xreplace({a: 1, b: 2, c: 1, d: 1}) == sp.true
     assert H.hopf_set.xreplace({a: -1, b: 2, c: -1, d: 1}) == sp.false
     assert H.hopf_set.xreplace({a: 1, b: 3, c: 1, d: 1}) == sp.false  # stable, Delta_3 > 0
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(2, 5), st.lists(st.sampled_from(["symbol", "positive"]), min_size=6, max_size=6))
+def test_labels_name_each_lienard_chipart_condition(n, kinds):
+    lam_ = sp.Symbol("lambda")
+    coefficients = [1] + [sp.Symbol(f"c_{i}") if kind == "symbol" else i + 2 for i, kind in enumerate(kinds[:n])]
+    poly = sp.Poly(sum(c * lam_ ** (n - i) for i, c in enumerate(coefficients)), lam_)
+    h = Hurwitz(poly)
+    assert len(h.labels) == len(h.conditions)
+    matrix = hurwitz_matrix(coefficients)
+    for (kind, index), condition in zip(h.labels, h.conditions):
+        if kind == "p":  # the coefficient of lambda^s
+            expected = poly.coeff_monomial(lam_**index)
+        else:  # the leading principal minor of order m, computed here directly
+            expected = matrix[:index, :index].det()
+        assert sp.expand(condition - expected) == 0
