@@ -55,12 +55,29 @@ def _solve_piece(f: sp.Matrix, u: tuple, signs: tuple) -> list[tuple]:
         solutions = sp.solve(list(f), list(u), dict=True)
     except NotImplementedError:
         solutions = []
+    if not solutions and _no_real_root(f, u):
+        return []
     if not solutions:
         raise ContactsymError(
             f"sympy found no closed-form root of the piece {list(f)} with signs {signs}; "
             "solve f(u) = 0 numerically (contactsym.numerics)."
         )
     return [tuple(sol[x] for x in u) for sol in solutions if all(x in sol for x in u)]
+
+
+def _no_real_root(f: sp.Matrix, u: tuple) -> bool:
+    """True when f is polynomial in u, SymPy finds all its complex roots and none is real
+    (u^2 + 1 = 0). An empty real solve alone proves nothing: it is also empty for
+    u^5 + u + a, and for other functions solve may return only some roots."""
+    if any(fj.as_poly(*u) is None for fj in f):
+        return False
+    free = [sp.Dummy() for _ in u]
+    try:
+        roots = sp.solve(list(f.xreplace(dict(zip(u, free)))), free, dict=True)
+    except NotImplementedError:
+        return False
+    complete = roots and all(all(z in root for z in free) for root in roots)
+    return bool(complete) and all(any(sp.im(root[z]).is_nonzero for z in free) for root in roots)
 
 
 @dataclass(frozen=True, eq=False)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from functools import cache
 
+import numpy as np
 import pytest
 import sympy as sp
 from hypothesis import assume, given, settings
@@ -290,3 +291,23 @@ def test_painleve_klein_rod_has_zero_to_three_reactions(count, values):
     # the exact conditions agree with the compiled ones
     numbers = dict(zip(params, map(sp.Float, values)))
     assert sum(bool(branch.condition.subs(numbers)) for branch in s.equilibria()) == count
+
+
+@pytest.mark.parametrize("piece", [N**2 + 1, N**2 + a**2 + 1, N**4 + N**2 + 1])
+def test_polynomial_piece_without_real_roots_has_no_branch(piece):
+    s = cs.Scene.from_accelerations([x, y], [X, piece], [cs.Contact(coordinate=y, reaction=N)])
+    assert s.equilibria().branches == ()
+    # independently: the piece is positive for every real N (its minimum over a grid)
+    grid = np.linspace(-10, 10, 2001)
+    values = sp.lambdify(N, piece.subs(a, 0.7), "numpy")(grid)
+    assert np.min(values) > 0
+
+
+def test_non_polynomial_piece_without_a_found_root_still_says_so():
+    s = cs.Scene.from_accelerations([x, y], [X, sp.exp(N) - N - 2], [cs.Contact(coordinate=y, reaction=N)])
+    try:
+        branches = s.equilibria().branches
+    except ContactsymError as error:
+        assert "no closed-form root" in str(error)
+    else:
+        assert len(branches) >= 1  # two real roots exist: never reported as none
