@@ -22,11 +22,33 @@ Examples
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import sympy as sp
+from sympy.printing.latex import LatexPrinter
 
-__all__ = ["Formula", "PAPER_EQUATIONS", "formulas", "hurwitz_names", "latex", "paper_equations"]
+__all__ = ["Formula", "PAPER_EQUATIONS", "formulas", "hurwitz_names", "latex", "paper_equations", "tex"]
+
+
+class _PaperPrinter(LatexPrinter):
+    """SymPy's LaTeX printer with the paper's letters: \\varepsilon and \\varphi for the
+    symbols (and functions) named epsilon and phi."""
+
+    def _deal_with_super_sub(self, string: str, style: str = "plain") -> str:
+        return re.sub(r"\\(epsilon|phi)(?![A-Za-z])", r"\\var\1", super()._deal_with_super_sub(string, style))
+
+
+def tex(expr, **settings) -> str:
+    r"""LaTeX of a SymPy object, as ``sympy.latex`` prints it but in the paper's letters.
+
+    Examples
+    --------
+    >>> eps, phi_1 = sp.symbols("epsilon phi_1")
+    >>> tex(eps**2 * sp.sin(phi_1))
+    '\\varepsilon^{2} \\sin{\\left(\\varphi_{1} \\right)}'
+    """
+    return _PaperPrinter(settings).doprint(expr)
 
 
 @dataclass(frozen=True)
@@ -64,7 +86,7 @@ class Formula:
 
     @property
     def rhs_latex(self) -> str:
-        return self.rhs if isinstance(self.rhs, str) else sp.latex(self.rhs)
+        return self.rhs if isinstance(self.rhs, str) else tex(self.rhs)
 
     @property
     def body(self) -> str:
@@ -176,7 +198,7 @@ def paper_equations(scene, key: str, detail: str | None = None) -> tuple[tuple, 
 
 
 def _symbol_latex(symbol) -> str:
-    return sp.latex(symbol)
+    return tex(symbol)
 
 
 def _prime(symbol) -> str:
@@ -219,7 +241,7 @@ def _fast_formulas(fast) -> list[Formula]:
         rows.append(_formula(scene, "fast", _prime(u[j]), fast.Phi[j] * fast.v[j] + fast.Psi[j] * f_of_u[j]))
         rows.append(_formula(scene, "fast", _prime(fast.v[j]), f_of_u[j]))
     for j in range(fast.k):
-        rows.append(_formula(scene, "f", sp.latex(f_of_u[j]), fast.f[j]))
+        rows.append(_formula(scene, "f", tex(f_of_u[j]), fast.f[j]))
     return rows
 
 
@@ -236,7 +258,7 @@ def _branch_formulas(branch, scene=None) -> list[Formula]:
         rows.append(_formula(scene, "equilibrium", lhs, value))
     if branch.signs:
         where = r"\text{where } s = " + _signs_latex(branch.signs) + r":\ "
-        rows.append(Formula("existence", "", where + sp.latex(branch.condition), ""))
+        rows.append(Formula("existence", "", where + tex(branch.condition), ""))
     return rows
 
 
@@ -330,7 +352,7 @@ def _reduced_formulas(red) -> list[Formula]:
         _formula(scene, "reduced", r"\ddot{" + _symbol_latex(q) + "}", value) for q, value in red.accelerations.items()
     ]
     if red.branch.signs:
-        rows.append(Formula("existence", "", r"\text{where } " + sp.latex(red.condition), ""))
+        rows.append(Formula("existence", "", r"\text{where } " + tex(red.condition), ""))
     return rows
 
 
@@ -421,7 +443,7 @@ def latex(obj, *, present: bool = False, tags: bool = False) -> str:
     try:
         rows = formulas(obj, present=present)
     except TypeError:
-        return sp.latex(obj)
+        return tex(obj)
     return _aligned(rows, tags)
 
 

@@ -32,6 +32,7 @@ from pathlib import Path
 import numpy as np
 import sympy as sp
 
+from .latex import tex
 from .regions import Region, closed_form
 
 __all__ = [
@@ -503,7 +504,7 @@ def rod_f_data(case="cusp", *, values=None, points=400) -> RodFData:
         chosen.regions[count],
         chosen.ordering,
         corners,
-        tuple(sp.latex(c) for c in chosen.corners),
+        tuple(tex(c) for c in chosen.corners),
         grid,
         curves,
     )
@@ -572,8 +573,8 @@ def rod_f_plot(data: RodFData, ax=None, *, legend=True):
         artists += ax.plot([], [], "o", ms=7, mec="black", mfc=face, label=word)
     ax.set_xlabel("$u = R$")
     ax.set_ylabel("$f(u)$")
-    condition = sp.latex(data.condition)
-    ordering = sp.latex(data.ordering)
+    condition = tex(data.condition)
+    ordering = tex(data.ordering)
     ax.set_title(f"{_CASE_TITLES.get(data.count, data.count)}\n${condition}$, ${ordering}$", fontsize=10)
     if legend:
         artists.append(ax.legend(fontsize=8, loc="best"))
@@ -647,7 +648,7 @@ def brake_map_plot(data: BrakeMapData, ax=None, *, legend=True):
     X = np.degrees(data.alpha)
     region = data.regions["stable for every law"]
     grid = RegionData("alpha", "mu", X, data.mu, data.masks["stable for every law"], region)
-    label = f"stable for every law (6.3): ${sp.latex(region.condition)}$"
+    label = f"stable for every law (6.3): ${tex(region.condition)}$"
     artists = region_plot(region, ax, x="alpha", y="mu", data=grid, hatch=STABLE_HATCH, color="tab:blue", label=label)
     (proxy,) = ax.fill([], [], facecolor="white", edgecolor="0.5", label="depends on the law (Hopf possible)")
     artists.append(proxy)
@@ -745,7 +746,7 @@ def brake_hopf_plot(data: BrakeHopfData, ax=None, *, legend=True):
     """
     ax = _axes(ax)
     grid = RegionData("mu", "Phi", data.mu, data.Phi, data.masks["stable"], data.stable)
-    stable_label = f"stable: ${sp.latex(data.stable.condition)}$"
+    stable_label = f"stable: ${tex(data.stable.condition)}$"
     artists = region_plot(
         data.stable, ax, x="mu", y="Phi", data=grid, hatch=STABLE_HATCH, color="tab:blue", label=stable_label
     )
@@ -754,15 +755,15 @@ def brake_hopf_plot(data: BrakeHopfData, ax=None, *, legend=True):
         ~data.stable, ax, x="mu", y="Phi", data=unstable, hatch=UNSTABLE_HATCH, color="tab:red", label="unstable"
     )
     artists += _boundary_plot(ax, data.mu, data.Phi, data.hopf_field, colors="black", linewidths=2)
-    hopf = sp.latex(data.hopf.condition)
+    hopf = tex(data.hopf.condition)
     (line,) = ax.plot([], [], "k-", lw=2, label=f"Hopf line: ${hopf}$")
     artists.append(line)
     ax.set_xlabel(r"$\mu$")
     ax.set_ylabel(r"$\Phi$")
-    fixed = ", ".join(f"${sp.latex(sp.Symbol(k))} = {v:g}$" for k, v in data.fixed.items())
+    fixed = ", ".join(f"${tex(sp.Symbol(k))} = {v:g}$" for k, v in data.fixed.items())
     ax.set_title(
         f"brake at $\\alpha = 90^\\circ$, $\\Phi_j = \\Phi$, $\\Psi_j = \\Psi$ ({fixed})\n"
-        f"squeal frequency on the Hopf line: $\\omega = {sp.latex(data.frequency)}$",
+        f"squeal frequency on the Hopf line: $\\omega = {tex(data.frequency)}$",
         fontsize=9,
     )
     if legend:
@@ -876,8 +877,8 @@ def phase_portrait_data(
     vs = np.linspace(-extent[1], extent[1], resolution)
     U, V = np.meshgrid(us, vs)
     du, dv = (np.broadcast_to(np.asarray(c, float), U.shape) for c in function(U, V))
-    shown = [f"${sp.latex(law)} = {value:g}$" for law, value in laws.items()]
-    shown += [f"${sp.latex(sp.Symbol(k))} = {value:g}$" for k, value in values.items() if k in ("X^*", "b", "Y")]
+    shown = [f"${tex(law)} = {value:g}$" for law, value in laws.items()]
+    shown += [f"${tex(sp.Symbol(k))} = {value:g}$" for k, value in values.items() if k in ("X^*", "b", "Y")]
     title = f"fast subsystem (2.1), {name} ({_CASE_TITLES.get(count, count)}): " + ", ".join(shown)
     return PhasePortraitData(name, count, title, U, V, du, dv, equilibria, values)
 

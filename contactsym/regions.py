@@ -29,6 +29,7 @@ from sympy.core.relational import Relational
 from sympy.logic.boolalg import BooleanFunction
 
 from .algebra import normalize
+from .latex import tex
 
 __all__ = ["Region", "closed_form", "known_sign"]
 
@@ -342,7 +343,7 @@ class Region:
         return Region(sp.Not(self.condition), f"not {self.name}" if self.name else "")
 
     def latex(self) -> str:
-        return sp.latex(self.condition)
+        return tex(self.condition)
 
     def _repr_latex_(self) -> str:
         return f"${self.latex()}$"

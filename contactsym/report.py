@@ -34,7 +34,7 @@ import sympy as sp
 
 from .errata import AGREE, latex_table, text_to_latex
 from .errors import ContactsymError
-from .latex import Formula, hurwitz_names, paper_equations
+from .latex import Formula, hurwitz_names, paper_equations, tex
 
 __all__ = [
     "Figure",
@@ -165,7 +165,7 @@ def _describe(expr: sp.Expr) -> str:
     """A short description of a long expression: its kind, number of terms and symbols."""
     numerator, denominator = sp.fraction(sp.together(expr))
     terms = len(sp.Add.make_args(sp.expand(numerator)))
-    symbols = ", ".join(f"${sp.latex(s)}$" for s in sorted(expr.free_symbols, key=str))
+    symbols = ", ".join(f"${tex(s)}$" for s in sorted(expr.free_symbols, key=str))
     kind = "a polynomial" if denominator == 1 else "a rational function, numerator"
     try:
         degree = sp.Poly(sp.expand(numerator), *sorted(expr.free_symbols, key=str)).total_degree()
@@ -178,17 +178,17 @@ def _describe(expr: sp.Expr) -> str:
 def _terms(expr: sp.Expr) -> tuple[str, list[str], str] | None:
     """(prefix, LaTeX of the terms, suffix) of a sum, a multiple of a sum, or a sum over a denominator."""
     if isinstance(expr, sp.Add):
-        return "", [sp.latex(t) for t in expr.as_ordered_terms()], ""
+        return "", [tex(t) for t in expr.as_ordered_terms()], ""
     numerator, denominator = sp.fraction(expr)
     if denominator != 1 and isinstance(sp.expand(numerator), sp.Add):
-        prefix = r"\frac{1}{" + sp.latex(denominator) + r"} \Big("
-        return prefix, [sp.latex(t) for t in sp.expand(numerator).as_ordered_terms()], r"\Big)"
+        prefix = r"\frac{1}{" + tex(denominator) + r"} \Big("
+        return prefix, [tex(t) for t in sp.expand(numerator).as_ordered_terms()], r"\Big)"
     if isinstance(expr, sp.Mul):
         sums = [f for f in expr.args if isinstance(f, sp.Add)]
         if len(sums) == 1:
             rest = sp.Mul(*[f for f in expr.args if f is not sums[0]])
-            prefix = ("-" if rest == -1 else sp.latex(rest)) + r" \Big("
-            return prefix, [sp.latex(t) for t in sums[0].as_ordered_terms()], r"\Big)"
+            prefix = ("-" if rest == -1 else tex(rest)) + r" \Big("
+            return prefix, [tex(t) for t in sums[0].as_ordered_terms()], r"\Big)"
     return None
 
 
@@ -211,7 +211,7 @@ def _fill(first: str, terms: list[str], suffix: str, budget: float) -> list[str]
 
 def _compact(expr, named: _Named, budget: float):
     """``expr`` with its long sums replaced by names (a product keeps its short factors)."""
-    if isinstance(expr, sp.Basic) and width(sp.latex(expr)) <= budget:
+    if isinstance(expr, sp.Basic) and width(tex(expr)) <= budget:
         return expr
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(lambda e: _compact(e, named, budget / max(expr.cols, 1)))
@@ -236,14 +236,14 @@ def _broken(first: str, expr, last: str, budget: float) -> list[str] | None:
 def _lines(lhs: str, relation: str, expr, named: _Named) -> list[str]:
     """LaTeX lines (for ``split``) of ``lhs relation expr`` that fit the page."""
     head = f"{lhs} &{relation}" if lhs else "&"
-    tex = sp.latex(expr) if not isinstance(expr, str) else expr
-    if isinstance(expr, str) or width(head + " " + tex) <= WIDTH:
-        return [f"{head} {tex}"]
+    text = tex(expr) if not isinstance(expr, str) else expr
+    if isinstance(expr, str) or width(head + " " + text) <= WIDTH:
+        return [f"{head} {text}"]
     lines = _broken("", expr, "", WIDTH - width(lhs))
     if lines is not None:
         return [f"{head} {lines[0]}"] + ["& " + line for line in lines[1:]]
     compacted = _compact(expr, named, WIDTH - width(head) - 4)
-    return [f"{head} {sp.latex(compacted)}"]
+    return [f"{head} {tex(compacted)}"]
 
 
 def _relation_tex(relational) -> str:
@@ -261,21 +261,21 @@ def _relational_lines(condition, named: _Named) -> list[str]:
     """A long relation broken at the sums of its longer side; its long sums named when that fails."""
     left, right = condition.lhs, condition.rhs
     relation = _relation_tex(condition)
-    if width(sp.latex(left)) >= width(sp.latex(right)):
-        lines = _broken("", left, f" {relation} {sp.latex(right)}", WIDTH)
+    if width(tex(left)) >= width(tex(right)):
+        lines = _broken("", left, f" {relation} {tex(right)}", WIDTH)
     else:
-        lines = _broken(f"{sp.latex(left)} {relation} ", right, "", WIDTH)
+        lines = _broken(f"{tex(left)} {relation} ", right, "", WIDTH)
     if lines is None:
         budget = WIDTH / 2
-        lines = [f"{sp.latex(_compact(left, named, budget))} {relation} {sp.latex(_compact(right, named, budget))}"]
+        lines = [f"{tex(_compact(left, named, budget))} {relation} {tex(_compact(right, named, budget))}"]
     return ["& " + line for line in lines]
 
 
 def _condition_lines(condition, named: _Named) -> list[str]:
     """A Boolean condition as lines, each starting with ``&``: one conjunct (or disjunct) per line when long."""
-    tex = sp.latex(condition)
-    if width(tex) <= WIDTH:
-        return [f"& {tex}"]
+    text = tex(condition)
+    if width(text) <= WIDTH:
+        return [f"& {text}"]
     if isinstance(condition, sp.core.relational.Relational):
         return _relational_lines(condition, named)
     if isinstance(condition, (sp.And, sp.Or)):
@@ -292,7 +292,7 @@ def _condition_lines(condition, named: _Named) -> list[str]:
                 inner[0] = inner[0].replace("& ", f"& {word} ", 1)
             lines += inner
         return lines
-    return [f"& {sp.latex(_compact(condition, named, WIDTH))}"]
+    return [f"& {tex(_compact(condition, named, WIDTH))}"]
 
 
 def _equation(lines: list[str], tag: str) -> str:
@@ -378,7 +378,7 @@ def _parameters(scene) -> str:
     rows = []
     for symbol in scene.parameters:
         facts = [name for name in ("positive", "negative", "real") if getattr(symbol, f"is_{name}")]
-        rows.append(f"${sp.latex(symbol)}$" + (f" ({facts[0]})" if facts else ""))
+        rows.append(f"${tex(symbol)}$" + (f" ({facts[0]})" if facts else ""))
     return "Parameters of the fast subsystem: " + ", ".join(rows) + "."
 
 
@@ -400,11 +400,11 @@ def _chain(scene, named: _Named) -> list[str]:
             r"2. Regularization (1.6)--(1.9)",
             r"New fast variables $u_j = N_j$, $v_j = \dot q_j/\varepsilon$ and the stretched time "
             r"$\tau = t/\varepsilon$ give $x' = \varepsilon X(x, y, \varepsilon)$, $y' = Y(x, y, \varepsilon)$ "
-            r"with the slow variables $x = (" + ", ".join(sp.latex(x) for x in reg.x) + r")$; "
+            r"with the slow variables $x = (" + ", ".join(tex(x) for x in reg.x) + r")$; "
             r"the slow part is below, and $Y(x, y, 0)$ is the fast subsystem of Section 3.",
         )
     )
-    parts += [_display(f, named) for f in formulas(reg) if f.lhs.rstrip("'") in {sp.latex(x) for x in reg.x}]
+    parts += [_display(f, named) for f in formulas(reg) if f.lhs.rstrip("'") in {tex(x) for x in reg.x}]
 
     fast = scene.fast_subsystem()
     laws = []
@@ -412,7 +412,7 @@ def _chain(scene, named: _Named) -> list[str]:
         for letter, value in (("Phi", fast.Phi[j]), ("Psi", fast.Psi[j])):
             symbol = sp.Symbol(f"{letter}{_index(fast, j)}")
             if not (isinstance(value, sp.Symbol) and value.name == symbol.name):
-                laws.append(f"${sp.latex(symbol)} = {sp.latex(value)}$")
+                laws.append(f"${tex(symbol)} = {tex(value)}$")
     law = (
         "here " + ", ".join(laws) if laws else r"here negative symbols: the results hold for every admissible law (1.5)"
     )
@@ -442,7 +442,7 @@ def _equilibria_section(scene, named: _Named) -> str:
     fast = scene.fast_subsystem()
     text = [_section("4. Equilibria (4.2)")]
     if fast.switching:
-        sigmas = ", ".join(f"$\\sigma_{{{i}}} = {sp.latex(s)}$" for i, s in enumerate(fast.switching, 1))
+        sigmas = ", ".join(f"$\\sigma_{{{i}}} = {tex(s)}$" for i, s in enumerate(fast.switching, 1))
         text.append(
             r"$f$ is smooth on each sign pattern $s$ of the switching functions " + sigmas + r"; the root "
             r"$u^*$ of a piece is an equilibrium where $s_i\,\sigma_i(u^*) > 0$ for every $i$ "
@@ -483,7 +483,7 @@ def _linearization_section(scene, named: _Named) -> str:
     show = scene.present if scene.presentation else (lambda e: e)
     A = show(lin.A)
     numbers, note = paper_equations(scene, "A")
-    if width(sp.latex(A)) <= WIDTH:
+    if width(tex(A)) <= WIDTH:
         text.append(_display(Formula("A", "A", A, "=", numbers, note), named))
     else:
         for i in range(k):
@@ -661,7 +661,7 @@ def _named_section(named: _Named) -> str:
     lines = [r"\paragraph{Long expressions.} Too long to print here; in full in \texttt{conditions.json}:"]
     lines.append(r"\begin{itemize}")
     for symbol, expr in named.items:
-        lines.append(f"\\item ${sp.latex(symbol)}$: " + _describe(expr) + ".")
+        lines.append(f"\\item ${tex(symbol)}$: " + _describe(expr) + ".")
     lines.append(r"\end{itemize}")
     return "\n".join(lines)
 
@@ -750,7 +750,7 @@ def _reduced_section(scene, named: _Named) -> str:
 
 
 def _entry(expr, paper=(), note="") -> dict:
-    entry = {"sympy": sp.sstr(expr), "latex": sp.latex(expr)}
+    entry = {"sympy": sp.sstr(expr), "latex": tex(expr)}
     if paper:
         entry["paper"] = [f"({number})" for number in paper]
     if note:

@@ -1,5 +1,7 @@
 """LaTeX of every stage object and region: exact strings for small scenes, paper citations."""
 
+import re
+
 import pytest
 import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
@@ -116,8 +118,8 @@ def test_k1_stability_cites_proposition_3(point):
 
 def test_regularized_is_1_9(point):
     assert latex(point.regularized()) == (
-        r"\begin{aligned} t' &= \epsilon \\ x' &= \epsilon \dot{x} \\ "
-        r"\dot{x}' &= \epsilon \left(X - \mu \left|{u}\right|\right) \\ "
+        r"\begin{aligned} t' &= \varepsilon \\ x' &= \varepsilon \dot{x} \\ "
+        r"\dot{x}' &= \varepsilon \left(X - \mu \left|{u}\right|\right) \\ "
         r"u' &= \Phi v + \Psi \left(Y + u\right) \\ v' &= Y + u \end{aligned}"
     )
 
@@ -183,3 +185,13 @@ def test_present_uses_the_papers_variables():
     det = next(row for row in formulas(guides.linearization(), present=True) if row.key == "det A")
     assert det.rhs == sp.sympify(det.rhs)  # a SymPy expression
     assert {s.name for s in det.rhs.free_symbols} == {"kappa", "v_1", "v_2"}
+
+
+@pytest.mark.parametrize("name", ["painleve-klein-rod", "painleve-klein-guides"])
+def test_latex_uses_the_papers_letters(name):
+    """The paper writes varepsilon and varphi; SymPy's default is epsilon and phi."""
+    scene = cs.scene(name)
+    text = latex(scene.regularized()) + latex(scene.stability())
+    assert r"\varphi" in text or r"\varepsilon" in text
+    assert not re.search(r"\\(epsilon|phi)(?![A-Za-z])", text)
+    assert r"\Phi" in latex(scene.stability())  # capital Phi is the law's stiffness, unchanged
