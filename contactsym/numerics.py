@@ -1848,11 +1848,13 @@ class PointClassifier:
     form is cheaper and keeps a relative error bound, |P^ - P| <= gamma_r P with r the
     roundings along its longest path. Hence |F^ - F| <= gamma (P + M + |U|), and the sign
     is certain where |F^| > 2 gamma (P + M + |U|). A factor without negative part is
-    certain wherever P^ > 0. Points inside ``max(band, 2 gamma)`` relative, or with a
-    scale outside 1e-200..1e200 (where underflow could spoil the bound), are decided
+    certain wherever P^ > 0. The bounds assume no overflow, underflow or invalid
+    operation: the float stage runs with these trapped, in chunks that stay in the
+    cache, and a chunk that traps is halved until the points that cause it are found.
+    Those points and the points inside ``max(band, 2 gamma)`` relative are decided
     exactly: the binary inputs are exact rationals, F is evaluated in 256-bit
     arithmetic, and where even that leaves |F| < 2^-200 (P + M + |U|) the point is
-    recomputed in SymPy rationals. The float stage runs in chunks that stay in the cache.
+    recomputed in SymPy rationals.
 
     Parameters
     ----------
@@ -1968,23 +1970,31 @@ class PointClassifier:
     def _float_stage(self, arrays, size: int) -> np.ndarray:
         """Per kept factor: its sign where certain (+1/-1) and 0 where not (int8).
 
-        Any overflow, underflow or invalid operation (which would void the relative
-        error bounds) sends the chunk to the slower test that checks each point's scale.
+        An overflow, underflow or invalid operation would void the relative error bounds:
+        a chunk where one occurs is halved until the points that cause it are found, and
+        those are left to the exact path.
         """
-        self._check_values(arrays)
         try:
             with np.errstate(all="raise"):
-                return self._signs(arrays, size, _certain_sign)
+                return self._signs(arrays, size)
         except FloatingPointError:
-            with np.errstate(all="ignore"):
-                return self._signs(arrays, size, _certain_sign_guarded)
+            if size == 1:
+                return np.zeros((len(self.kept), 1), dtype=np.int8)
+            half = size // 2
+            return np.concatenate(
+                [
+                    self._float_stage([a[:half] for a in arrays], half),
+                    self._float_stage([a[half:] for a in arrays], size - half),
+                ],
+                axis=1,
+            )
 
-    def _signs(self, arrays, size: int, test) -> np.ndarray:
+    def _signs(self, arrays, size: int) -> np.ndarray:
         values = iter(self._function(*arrays))
         out = np.empty((len(self.kept), size), dtype=np.int8)
         for position, part in enumerate(self.parts):
             groups = [_as_array(next(values), size) for _ in part]
-            out[position] = test(groups, max(self.band, 2 * self.gammas[position]), part)
+            out[position] = _certain_sign(groups, max(self.band, 2 * self.gammas[position]), part)
         return out
 
     def _high_precision_sign(self, position: int, point: list[float]) -> int | None:
@@ -2010,6 +2020,7 @@ class PointClassifier:
         for start in range(0, size, chunk):  # chunks that stay in the cache
             stop = min(start + chunk, size)
             part = factor_signs[:, start:stop]
+            self._check_values([a[start:stop] for a in arrays])
             part[...] = self._float_stage([a[start:stop] for a in arrays], stop - start)
             self._combine(part, signs[:, start:stop], stable[start:stop])
         in_band = np.zeros(size, dtype=bool)
@@ -2056,15 +2067,14 @@ def _as_array(value, size: int) -> np.ndarray:
     return value if isinstance(value, np.ndarray) else np.full(size, float(value))
 
 
-_TINY, _HUGE = 1e-200, 1e200  # scales where the relative bounds hold without underflow
-
-
 def _certain_sign(groups, width: float, part) -> np.ndarray:
-    """+1/-1 where the sign of P - M (+ U) is certain, 0 elsewhere (int8 array); for
-    chunks evaluated without overflow, underflow or invalid operations."""
+    """+1/-1 where the sign of P - M (+ U) is certain, 0 elsewhere (int8 array); valid for
+    values computed without overflow, underflow or invalid operations."""
     P, M, *rest = groups
-    if rest:
-        return _certain_sign_guarded(groups, width, part)
+    if rest:  # terms of unknown sign: |F^ - F| <= gamma (P + M + |U|)
+        value = P - M + rest[0]
+        certain = np.abs(value) > width * (P + M + rest[1])
+        return np.where(certain, np.where(value > 0, 1, -1), 0).astype(np.int8)
     if part[1] == 0:  # F = P, nonnegative terms: P^ > 0 iff P > 0
         return (P > 0).view(np.int8)
     if part[0] == 0:
@@ -2073,15 +2083,6 @@ def _certain_sign(groups, width: float, part) -> np.ndarray:
     positive = (P * (1 - width) > M * (1 + width)).view(np.int8)
     negative = (M * (1 - width) > P * (1 + width)).view(np.int8)
     return positive - negative
-
-
-def _certain_sign_guarded(groups, width: float, part) -> np.ndarray:
-    """As :func:`_certain_sign`, for any chunk: NaN, infinities and scales outside
-    ``_TINY.._HUGE`` give 0 (decided exactly)."""
-    P, M, U, Ua = (*groups, 0.0, 0.0) if len(groups) == 2 else groups
-    value, scale = P - M + U, P + M + Ua
-    certain = (np.abs(value) > width * scale) & (scale > _TINY) & (scale < _HUGE)
-    return np.where(certain, np.where(value > 0, 1, -1), 0).astype(np.int8)
 
 
 def _through_tan(expr: sp.Expr) -> sp.Expr:

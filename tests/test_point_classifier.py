@@ -83,16 +83,17 @@ def test_points_straddling_a_boundary_at_every_distance_get_the_exact_sign():
     assert not result.in_band[np.abs(relative) > 1e-6].any()
 
 
-def test_underflow_and_overflow_chunks_are_decided_soundly():
+def test_underflow_and_overflow_points_are_decided_exactly_and_only_they():
     F = a * b - c**2
     classifier = nm.PointClassifier([F], [a, b, c])
-    A = np.array([1e-160, 1e-160, 1e150, 3.0])
-    B = np.array([1e-160, 2e-160, 1e150, 3.0])
-    C = np.array([1.1e-160, 1e-160, 1e150, 3.0])
+    A = np.array([1e-160, 1e-160, 1e160, 3.0])
+    B = np.array([1e-160, 2e-160, 2e160, 4.0])
+    C = np.array([1.1e-160, 1e-160, 1e160, 3.0])
     result = classifier(A, B, C)
     exact = [_exact_sign(F, point, (a, b, c)) for point in zip(A, B, C)]
     assert result.signs[0].tolist() == exact
-    assert result.in_band[:3].all()  # scales out of range went the exact way
+    assert result.in_band[:3].all()  # under- and overflowing points went the exact way
+    assert not result.in_band[3]  # the healthy point of the same chunk did not
 
 
 def test_brake_classification_matches_the_exact_signs_of_the_hurwitz_conditions():
@@ -152,3 +153,14 @@ def test_even_powers_of_sin_and_cos_through_tan_are_the_same_numbers(angle, half
             point = {a: 1.5, b: 0.25, x: angle}
             assert math.isclose(float(code.subs(point)), float(expr.subs(point)), rel_tol=1e-12, abs_tol=1e-15)
     assert nm._through_tan(sp.sin(x) ** 3) == sp.sin(x) ** 3  # odd powers keep their sign: left alone
+
+
+def test_bisection_isolates_the_few_points_that_underflow():
+    classifier = nm.PointClassifier([a * b - c**2], [a, b, c])
+    rng = np.random.default_rng(3)
+    A, B, C = rng.uniform(1, 2, (3, 5000))
+    bad = np.arange(0, 5000, 250)
+    A[bad], B[bad], C[bad] = 1e-160, 1e-160, 2e-160
+    result = classifier(A, B, C, chunk=1024)
+    assert result.in_band[bad].all() and (result.signs[0, bad] == -1).all()
+    assert result.exact_points == len(bad)  # every other point stayed in floats
