@@ -18,6 +18,14 @@ a, b, c = sp.symbols("a b c", positive=True)
 p, q = sp.symbols("p q", negative=True)
 x = sp.Symbol("x", real=True)
 SYMBOLS = (a, b, c, p, q)
+BRAKE = cs.scene("brake").stability()
+BRAKE_PARAMETERS = [
+    {str(s): s for s in set().union(*[h.free_symbols for h in BRAKE.hurwitz])}[n]
+    for n in ["alpha", "m", "mu", "Phi_1", "Phi_2", "Psi_1", "Psi_2"]
+]
+BRAKE_CLASSIFIER = nm.PointClassifier(BRAKE.hurwitz, BRAKE_PARAMETERS)
+
+
 monomials = st.tuples(
     st.integers(1, 5), st.integers(0, 2), st.integers(0, 2), st.integers(0, 2), st.integers(0, 2), st.integers(0, 2)
 )
@@ -96,27 +104,6 @@ def test_underflow_and_overflow_points_are_decided_exactly_and_only_they():
     assert not result.in_band[3]  # the healthy point of the same chunk did not
 
 
-def test_brake_classification_matches_the_exact_signs_of_the_hurwitz_conditions():
-    st_ = cs.scene("brake").stability()
-    names = ["alpha", "m", "mu", "Phi_1", "Phi_2", "Psi_1", "Psi_2"]
-    by_name = {str(s): s for s in set().union(*[h.free_symbols for h in st_.hurwitz])}
-    parameters = [by_name[n] for n in names]
-    classifier = nm.PointClassifier(st_.hurwitz, parameters)
-    rng = np.random.default_rng(11)
-    n = 200
-    values = [
-        rng.uniform(0.05, 3.0, n),
-        rng.uniform(0.2, 5, n),
-        rng.uniform(0.05, 3, n),
-        *(-np.exp(rng.normal(0, 1.5, (4, n)))),
-    ]
-    result = classifier(*values)
-    for k in range(0, n, 10):
-        point = dict(zip(parameters, [v[k] for v in values]))
-        exact = [nm.certified_sign(h, point)[0] for h in st_.hurwitz]
-        assert result.signs[:, k].tolist() == exact
-
-
 @pytest.mark.parametrize(
     "values, message",
     [
@@ -164,3 +151,24 @@ def test_bisection_isolates_the_few_points_that_underflow():
     result = classifier(A, B, C, chunk=1024)
     assert result.in_band[bad].all() and (result.signs[0, bad] == -1).all()
     assert result.exact_points == len(bad)  # every other point stayed in floats
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.floats(0.01, 3.13), st.lists(st.floats(-8, 8), min_size=6, max_size=6))
+def test_brake_parameters_from_1e_minus_8_to_1e8_get_the_exact_signs(angle, exponents):
+    m_, mu_, *laws = (10.0**e for e in exponents)
+    values = [angle, m_, mu_, -laws[0], -laws[1], -laws[2], -laws[3]]
+    result = BRAKE_CLASSIFIER(*[np.array([v]) for v in values])
+    point = dict(zip(BRAKE_PARAMETERS, values))
+    assert result.signs[:, 0].tolist() == [nm.certified_sign(h, point)[0] for h in BRAKE.hurwitz]
+
+
+def test_many_brake_points_get_the_exact_signs_of_the_hurwitz_conditions():
+    rng = np.random.default_rng(11)
+    n = 200
+    values = [rng.uniform(0.05, 3.0, n), rng.uniform(0.2, 5, n), rng.uniform(0.05, 3, n)]
+    values += list(-np.exp(rng.normal(0, 1.5, (4, n))))
+    result = BRAKE_CLASSIFIER(*values)
+    for k in range(0, n, 10):
+        point = dict(zip(BRAKE_PARAMETERS, [v[k] for v in values]))
+        assert result.signs[:, k].tolist() == [nm.certified_sign(h, point)[0] for h in BRAKE.hurwitz]
