@@ -300,7 +300,8 @@ def hurwitz_names(stability) -> list[str]:
     >>> hurwitz_names(cs.scene("brake").stability())
     ['p_{3}', 'p_{2}', 'p_{1}', 'p_{0}', '\\Delta_{3}']
     """
-    return [("p" if kind == "p" else "\\Delta") + f"_{{{index}}}" for kind, index in stability.poly.labels]
+    letters = {"p": "p", "Delta": r"\Delta"}
+    return [f"{letters[kind]}_{{{index}}}" for kind, index in stability.poly.labels]
 
 
 def _generic_minors(n: int) -> dict[int, sp.Expr]:
