@@ -68,12 +68,25 @@ def _batched_max_real_part(matrix, parameters, values) -> np.ndarray:
     return np.linalg.eigvals(matrices).real.max(axis=1)
 
 
-def _exact_hopf_side(line) -> np.ndarray:
-    """Stable iff -m mu^2 Phi < (1 + mu^2) Psi^2 on the (6.4) slice, in exact rationals."""
+def _against_eigenvalues(matrix, parameters, values, index, result) -> tuple[float, int]:
+    """(seconds per point of the per-point baseline on ``index``, disagreements of ``result``
+    outside its band with the batched eigenvalues of all points)."""
+    M = sp.lambdify(parameters, matrix, modules="numpy", cse=True)
+    per_point = _per_point_eigenvalues(M, values, index)
+    eig_stable = _batched_max_real_part(matrix, parameters, values) < 0
+    outside = ~result.in_band
+    return per_point, int(np.sum((result.stable[outside] == 1) != eig_stable[outside]))
+
+
+def _exact_stable(conditions, parameters, columns) -> np.ndarray:
+    """All conditions > 0 at each point, in exact rationals (the binary inputs as Fractions)."""
+    evaluate = sp.lambdify(parameters, conditions, modules=[])  # integer coefficients: Fractions stay exact
     out = []
-    for m, mu, phi, psi in zip(line["m"], line["mu"], line["Phi_1"], line["Psi_1"]):
-        m, mu, phi, psi = (Fraction(float(v)) for v in (m, mu, phi, psi))
-        out.append(-m * mu**2 * phi < (1 + mu**2) * psi**2)
+    for point in zip(*columns):
+        values = evaluate(*(Fraction(float(v)) for v in point))
+        if not all(isinstance(v, (Fraction, int)) for v in values):
+            raise ValueError("the conditions are not rational functions with rational coefficients")
+        out.append(all(v > 0 for v in values))
     return np.array(out)
 
 
@@ -94,14 +107,9 @@ def run(quick: bool, out_dir) -> list[dict]:
     build_s = time.perf_counter() - started
     classifier(*[v[:1000] for v in values])  # warm up the generated code
     ours_s, ours = _best_of(3, lambda: classifier(*values))
-    # baseline: per-point numpy eigenvalues of (4.5), timed on a subsample
-    M = sp.lambdify(parameters, lin.matrix, modules="numpy", cse=True)
     sub = 5000 if quick else 50000
     index = rng.choice(n_random, sub, replace=False)
-    per_point = _per_point_eigenvalues(M, values, index)
-    eig_stable = _batched_max_real_part(lin.matrix, parameters, values) < 0
-    outside = ~ours.in_band
-    disagreements = int(np.sum((ours.stable[outside] == 1) != eig_stable[outside]))
+    per_point, disagreements = _against_eigenvalues(lin.matrix, parameters, values, index, ours)
     notes = (
         f"brake, 7 parameters (alpha, m, mu, Phi_j, Psi_j), {n_random} random points; kept factors "
         f"{len(classifier.kept)} ({', '.join(map(str, classifier.kept[:1]))}, ...); band {ours.band:.1e} relative; "
@@ -113,11 +121,18 @@ def run(quick: bool, out_dir) -> list[dict]:
         "where 1000x allows ~15"
     )
     records = [record("classification", ours_s, per_point * n_random, disagreements, n_random, notes)]
+    # the paper's slice (6.4): alpha = 90 deg, equal laws
+    Phi, Psi = sp.symbols("Phi Psi", negative=True)
+    m, mu, alpha = by_name["m"], by_name["mu"], by_name["alpha"]
+    (P1, P2), (S1, S2) = lin.Phi, lin.Psi
+    slice_6_4 = {alpha: sp.pi / 2, P1: Phi, P2: Phi, S1: Psi, S2: Psi}
+    slice_parameters = [m, mu, Phi, Psi]
+    conditions64 = [c.subs(slice_6_4) for c in st.hurwitz]
     # adversarial points: on the Hopf line of (6.4), in floats, so inside the band
     line_values = [line[k] for k in names]
     line_s, on_line = _best_of(1, lambda: classifier(*line_values))
     line_eig = _batched_max_real_part(lin.matrix, parameters, line_values) < 0
-    truth = _exact_hopf_side(line)
+    truth = _exact_stable(conditions64, slice_parameters, [line[k] for k in ("m", "mu", "Phi_1", "Psi_1")])
     wrong = int(np.sum((on_line.stable == 1) != truth))
     eig_wrong = int(np.sum(line_eig != truth))
     records.append(
@@ -128,26 +143,17 @@ def run(quick: bool, out_dir) -> list[dict]:
             wrong,
             n_line,
             f"{n_line} points of the (6.4) slice put on the Hopf line in floats; {on_line.exact_points} decided "
-            f"exactly (256-bit, then rationals); error = disagreements with an exact rational evaluation of the "
-            f"Hopf condition; numpy eigenvalues get {eig_wrong} of them wrong",
+            f"exactly (256-bit, then rationals); error = disagreements with the Hurwitz conditions of the slice "
+            f"evaluated in exact rationals; numpy eigenvalues get {eig_wrong} of them wrong",
         )
     )
-    # the paper's slice (6.4): alpha = 90 deg, equal laws
-    Phi, Psi = sp.symbols("Phi Psi", negative=True)
-    m, mu, alpha = by_name["m"], by_name["mu"], by_name["alpha"]
-    (P1, P2), (S1, S2) = lin.Phi, lin.Psi
-    slice_6_4 = {alpha: sp.pi / 2, P1: Phi, P2: Phi, S1: Psi, S2: Psi}
-    slice_parameters = [m, mu, Phi, Psi]
-    classifier64 = nm.PointClassifier([c.subs(slice_6_4) for c in st.hurwitz], slice_parameters)
+    classifier64 = nm.PointClassifier(conditions64, slice_parameters)
     slice_values = [data["m"], data["mu"], data["Phi_1"], data["Psi_1"]]
     classifier64(*[v[:1000] for v in slice_values])
     ours64_s, ours64 = _best_of(3, lambda: classifier64(*slice_values))
-    lin64 = lin.matrix.subs(slice_6_4)
-    M64 = sp.lambdify(slice_parameters, lin64, modules="numpy", cse=True)
-    per_point64 = _per_point_eigenvalues(M64, slice_values, index)
-    eig64 = _batched_max_real_part(lin64, slice_parameters, slice_values) < 0
-    out64 = ~ours64.in_band
-    disagree64 = int(np.sum((ours64.stable[out64] == 1) != eig64[out64]))
+    per_point64, disagree64 = _against_eigenvalues(
+        lin.matrix.subs(slice_6_4), slice_parameters, slice_values, index, ours64
+    )
     notes64 = (
         f"(6.4) slice: alpha = 90 deg, Phi_1 = Phi_2, Psi_1 = Psi_2; kept condition {classifier64.kept}; "
         f"band {ours64.band:.1e}; {ours64.exact_points} points decided exactly; best of 3; baseline per point "

@@ -191,6 +191,27 @@ def rhs_summary(pairs, headline=("Radau", "BDF")) -> dict:
     }
 
 
+def _full_runner(scene, values, eps: float, span, initial, laws=None):
+    """``simulate(method, analytic, rtol, budget)``: one run of the full system (1.9)."""
+
+    def simulate(method, analytic, rtol, budget):
+        return nm.simulate_full(
+            scene,
+            values,
+            eps,
+            span,
+            initial,
+            laws=laws,
+            method=method,
+            jacobian=analytic,
+            rtol=rtol,
+            dense_output=False,
+            max_rhs=budget,
+        )
+
+    return simulate
+
+
 def _rhs_pairs(simulate, rtols, budget: int) -> list[tuple]:
     """Run ``simulate(method, analytic, rtol, budget)`` for every solver and rtol, both Jacobians."""
     pairs = []
@@ -237,21 +258,7 @@ def _brake_records(rtols, budget: int) -> list[dict]:
         cycle = nm.fast_cycle(brake, values, laws=laws, tol=1e-6, samples=1024)
         span = (0, BRAKE_PERIODS * cycle.period * BRAKE_EPS)
 
-        def simulate(method, analytic, rtol, budget, laws=laws, values=values, span=span):
-            return nm.simulate_full(
-                brake,
-                values,
-                BRAKE_EPS,
-                span,
-                BRAKE_INITIAL,
-                laws=laws,
-                method=method,
-                jacobian=analytic,
-                rtol=rtol,
-                dense_output=False,
-                max_rhs=budget,
-            )
-
+        simulate = _full_runner(brake, values, BRAKE_EPS, span, BRAKE_INITIAL, laws=laws)
         summary = rhs_summary(_rhs_pairs(simulate, rtols, budget))
         system = (
             f"brake (6 states) beyond its Hopf line: alpha = 90 deg, m = J = r = mu = 1, F = (2, -4), "
@@ -275,20 +282,7 @@ def _brake_records(rtols, budget: int) -> list[dict]:
 def _guides_record(rtols, budget: int) -> dict:
     guides = cs.scene("painleve-klein-guides")
 
-    def simulate(method, analytic, rtol, budget):
-        return nm.simulate_full(
-            guides,
-            GUIDES_VALUES,
-            GUIDES_EPS,
-            (0, 1),
-            GUIDES_INITIAL,
-            method=method,
-            jacobian=analytic,
-            rtol=rtol,
-            dense_output=False,
-            max_rhs=budget,
-        )
-
+    simulate = _full_runner(guides, GUIDES_VALUES, GUIDES_EPS, (0, 1), GUIDES_INITIAL)
     # SciPy's num_jac lets the step factor of the x column (nothing depends on x) grow until it
     # overflows; harmless for the Jacobian, so the warning is silenced
     with np.errstate(over="ignore"):
@@ -325,21 +319,13 @@ def run(quick: bool, out_dir) -> list[dict]:
         eps_repeat = max(repeat, DECISIVE_REPEAT) if eps == EPS0 else repeat
         reference = nm.simulate_full(scene, VALUES, eps, (0, 1), INITIAL, rtol=1e-13, dense_output=False)
         x_ref = reference["x"][-1]
+        simulate = _full_runner(scene, VALUES, eps, (0, 1), INITIAL)
         for method in SOLVERS:
             for analytic in (True, False):
                 for rtol in eps_rtols:
                     cpu, result = _cpu(
-                        lambda method=method, analytic=analytic, rtol=rtol, eps=eps: nm.simulate_full(
-                            scene,
-                            VALUES,
-                            eps,
-                            (0, 1),
-                            INITIAL,
-                            method=method,
-                            jacobian=analytic,
-                            rtol=rtol,
-                            dense_output=False,
-                            max_rhs=budget,
+                        lambda run=simulate, method=method, analytic=analytic, rtol=rtol: run(
+                            method, analytic, rtol, budget
                         ),
                         eps_repeat,
                     )

@@ -197,12 +197,8 @@ def paper_equations(scene, key: str, detail: str | None = None) -> tuple[tuple, 
 # --- formulas of each stage ------------------------------------------------------------
 
 
-def _symbol_latex(symbol) -> str:
-    return tex(symbol)
-
-
 def _prime(symbol) -> str:
-    return _symbol_latex(symbol) + "'"
+    return tex(symbol) + "'"
 
 
 def _formula(scene, key, lhs, rhs, relation="=", detail=None) -> Formula:
@@ -214,7 +210,7 @@ def _scene_formulas(scene) -> list[Formula]:
     rows = []
     for q in scene.coordinates:
         plain = scene._plain(q)
-        lhs = r"\ddot{" + _symbol_latex(plain) + "}"
+        lhs = r"\ddot{" + tex(plain) + "}"
         rows.append(_formula(scene, "accelerations", lhs, scene._plain(scene.accelerations[q]), detail=str(plain)))
     if all(gap in scene.coordinates for gap in scene.gaps):
         return rows  # the contact accelerations are among the accelerations above
@@ -348,10 +344,8 @@ def _stability_formulas(st, present=False) -> list[Formula]:
 
 def _reduced_formulas(red) -> list[Formula]:
     scene = red.scene
-    rows = [_formula(scene, "reduced", _symbol_latex(n), value) for n, value in red.reactions.items()]
-    rows += [
-        _formula(scene, "reduced", r"\ddot{" + _symbol_latex(q) + "}", value) for q, value in red.accelerations.items()
-    ]
+    rows = [_formula(scene, "reduced", tex(n), value) for n, value in red.reactions.items()]
+    rows += [_formula(scene, "reduced", r"\ddot{" + tex(q) + "}", value) for q, value in red.accelerations.items()]
     if red.branch.signs:
         rows.append(Formula("existence", "", r"\text{where } " + tex(red.condition), ""))
     return rows

@@ -1906,7 +1906,7 @@ class PointClassifier:
             raise NumericsError(f"the conditions also need values for {sorted(map(str, free - set(self.parameters)))}.")
         self.parts = [self._split(factor) for factor in self.kept]
         code = [tuple(_through_tan(g) for g in p) for p in self.parts]
-        self.gammas = [_gamma(r + 3) for r in (self._roundings_of(*p) for p in code)]
+        self.gammas = [_gamma(max(_roundings(g) for g in p) + 3) for p in code]
         self._function = lambdify_cse(self.parameters, [g for p in code for g in p])
         self._mp_function = [sp.lambdify(self.parameters, list(p), modules="mpmath") for p in self.parts]
 
@@ -1943,10 +1943,6 @@ class PointClassifier:
         if not unknown:
             return P, M
         return P, M, sp.Add(*unknown), sp.Add(*[sp.Abs(t) for t in unknown])
-
-    @staticmethod
-    def _roundings_of(*parts) -> int:
-        return max(_roundings(part) for part in parts)
 
     def _check(self, arrays) -> list[np.ndarray]:
         if len(arrays) != len(self.parameters):
