@@ -49,6 +49,8 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.polys.fields import FracField
 
+from .algebra import SignSymbol, known_sign
+
 __all__ = ["canonical", "Fraction", "TrigField", "to_fraction"]
 
 
@@ -115,20 +117,30 @@ class Fraction:
         denom, scale_d = present_factor(rest, self.pairs)
         return (scale_n / scale_d) * numer / (monomial.as_expr() * denom)
 
-    def denominator_factors(self) -> list[tuple[sp.Expr, int]]:
-        """The denominator as (c * monomial, 1) and its irreducible factors, presented; their
-        product is the denominator exactly (c collects the factors' constants and signs)."""
+    def denominator_split(self) -> tuple[sp.Expr, object]:
+        """(c * monomial, rest): the denominator is their product; rest = 1 for a monomial."""
         monomial, rest = _split_monomial(self.denom)
-        if rest == 1:
-            return [(monomial.as_expr(), 1)]
-        constant, irreducible = rest.factor_list()
-        scale = rest.ring.domain.to_sympy(constant)
-        factors = []
-        for base, power in irreducible:
-            form, c = present_factor(base, self.pairs)
-            factors.append((form, power))
-            scale *= c**power
-        return [(scale * monomial.as_expr(), 1)] + factors
+        return monomial.as_expr(), rest
+
+    def denominator_sign(self, positive=()) -> int | None:
+        """The sign of the denominator when it follows from ``positive`` (expressions known
+        to be positive): its monomial's sign times those of factors divided out exactly."""
+        monomial, rest = self.denominator_split()
+        sign = known_sign(monomial, positive)
+        for p in positive:
+            if sign is None or rest.is_ground:
+                break
+            factor = _as_poly(p, rest.ring, self.pairs, self.signs)
+            if factor is None or factor.is_ground:
+                continue
+            while not rest.is_ground:
+                quotient, remainder = rest.div(factor)
+                if remainder:
+                    break
+                rest = quotient
+        if sign is None or not rest.is_ground:
+            return None
+        return sign * (1 if rest.LC > 0 else -1)
 
     def numerator_expr(self) -> sp.Expr:
         """The numerator, presented."""
@@ -152,6 +164,23 @@ def present_factor(poly, pairs) -> tuple[sp.Expr, sp.Rational]:
     return form, scale
 
 
+def _as_poly(expr: sp.Expr, ring, pairs, signs):
+    """``expr`` (a polynomial in ``ring``'s generators after expanding angles) in ``ring``,
+    reduced, or None."""
+    try:
+        poly = ring.from_expr(_expand_angles(sp.sympify(expr)))
+    except (ValueError, sp.polys.polyerrors.CoercionFailed):
+        return None
+    return _reduce(poly, pairs, signs)
+
+
+def _reduce(poly, pairs, signs):
+    """The normal form of a polynomial (see the module docstring)."""
+    gens = poly.ring.gens
+    basis = [gens[c] ** 2 + gens[s] ** 2 - 1 for c, s in pairs] + [gens[i] ** 2 - 1 for i in signs]
+    return poly.rem(basis) if basis and poly else poly
+
+
 def _split_monomial(poly):
     """poly = content * monomial * rest, with rest = 1 for a monomial."""
     ring = poly.ring
@@ -162,75 +191,79 @@ def _split_monomial(poly):
     return ring({(0,) * ring.ngens: content}) * monomial, rest
 
 
-def _fourier(poly, pairs) -> sp.Expr:
-    """The trigonometric polynomial as a sum of a_k cos(k.q) + b_k sin(k.q), exactly.
+def _fourier_terms(poly, pairs) -> dict:
+    """{(k, other exponents): (a, b)}: the term a cos(k.q) + b sin(k.q) (k first nonzero > 0).
 
-    With z = exp(i q): cos q = (z + 1/z)/2, sin q = (z - 1/z)/(2i); each monomial's trigonometric
-    part becomes a Laurent polynomial in the z's (Gaussian-rational coefficients, kept as pairs
-    of Fractions), and the frequencies k and -k pair into a cosine and a sine of k.q.
+    With z = exp(i q): 2 cos q = z + 1/z and 2 sin q = (z - 1/z)/i; each monomial's trigonometric
+    part becomes a Laurent polynomial in the z's with Gaussian-integer coefficients over a power
+    of two (kept as integer pairs, one common denominator: exact and fast), and the frequencies
+    k and -k pair into a cosine and a sine of k.q.
     """
-    ring = poly.ring
+    ring, domain = poly.ring, poly.ring.domain
     trig = {i for pair in pairs for i in pair}
-    by_term: dict[tuple, tuple] = {}  # (k, other exponents) -> complex coefficient
-    for monom, coeff in poly.terms():
+    terms_in = poly.terms()
+    top = max(sum(monom[i] for i in trig) for monom, _ in terms_in)
+    scale = reduce(sp.ilcm, [int(domain.denom(c)) for _, c in terms_in], 1)
+    by_term: dict[tuple, list] = {}  # (k, other exponents) -> [re, im] of 2^top * scale * coefficient of z^k
+    for monom, coeff in terms_in:
         rest = tuple(0 if i in trig else e for i, e in enumerate(monom))
-        value = (Fraction_(int(ring.domain.numer(coeff)), int(ring.domain.denom(coeff))), Fraction_(0))
-        laurent = {(): value}
+        degree = sum(monom[i] for i in trig)
+        laurent = {(): (int(domain.numer(coeff)) * (scale // int(domain.denom(coeff))) << (top - degree), 0)}
         for c, s in pairs:
             factor = _laurent(monom[c], monom[s])
-            laurent = {k + (j,): _cmul(a, b) for k, a in laurent.items() for j, b in factor.items()}
-            laurent = _merge(laurent)
-        for k, a in laurent.items():
-            key = (k, rest)
-            by_term[key] = _cadd(by_term.get(key, _ZERO), a)
-    angles = [ring.symbols[s].args[0] for _, s in pairs]
-    total = []
+            product: dict = {}
+            for k, (ar, ai) in laurent.items():
+                for j, (br, bi) in factor.items():
+                    product[k + (j,)] = (ar * br - ai * bi, ar * bi + ai * br)
+            laurent = product
+        for k, (re, im) in laurent.items():
+            entry = by_term.setdefault((k, rest), [0, 0])
+            entry[0] += re
+            entry[1] += im
+    denominator = Fraction_(1, scale << top)
+    terms = {}
     for (k, rest), a in by_term.items():
         if any(k) and _negative_first(k):
             continue  # taken with its partner
-        monomial = sp.Mul(*[g**e for g, e in zip(ring.symbols, rest)])
+        b = by_term.get((tuple(-e for e in k), rest), (0, 0)) if any(k) else (0, 0)
+        # a z^k + b z^-k = (a + b) cos(k.q) + i (a - b) sin(k.q); a constant term is real
+        cosine, sine = (a[0] + b[0], b[1] - a[1]) if any(k) else (a[0], 0)
+        if cosine or sine:
+            terms[(k, rest)] = (cosine * denominator, sine * denominator)
+    return terms
+
+
+def _fourier(terms: dict, ring, pairs) -> sp.Expr:
+    """The sympy expression of :func:`_fourier_terms`."""
+    angles = [ring.symbols[s].args[0] for _, s in pairs]
+    total = []
+    for (k, rest), (cosine, sine) in terms.items():
+        monomial = sp.Mul(*[g**e for g, e in zip(ring.symbols, rest) if e])
+        angle = sp.Add(*[e * q for e, q in zip(k, angles) if e])
         if not any(k):
-            total.append(_rational(a[0]) * monomial)
+            total.append(_rational(cosine) * monomial)
             continue
-        b = by_term.get((tuple(-e for e in k), rest), _ZERO)
-        angle = sum(e * q for e, q in zip(k, angles))
-        # a z^k + b z^-k = (a + b) cos(k.q) + i (a - b) sin(k.q)
-        total.append(_rational(a[0] + b[0]) * monomial * sp.cos(angle))
-        total.append(_rational(-(a[1] - b[1])) * monomial * sp.sin(angle))
+        total.append(_rational(cosine) * monomial * sp.cos(angle))
+        total.append(_rational(sine) * monomial * sp.sin(angle))
     return sp.Add(*total)
-
-
-_ZERO = (Fraction_(0), Fraction_(0))
 
 
 def _rational(x: Fraction_) -> sp.Rational:
     return sp.Rational(x.numerator, x.denominator)
 
 
-def _cmul(a, b):
-    return (a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0])
-
-
-def _cadd(a, b):
-    return (a[0] + b[0], a[1] + b[1])
-
-
-def _merge(laurent: dict) -> dict:
-    return {k: a for k, a in laurent.items() if a != _ZERO}
-
-
 @cache
 def _laurent(cos_power: int, sin_power: int) -> dict:
-    """cos^a sin^b as {frequency j: coefficient of z^j}, coefficients as (re, im) Fractions."""
-    result = {0: (Fraction_(1), Fraction_(0))}
-    factors = [{1: (Fraction_(1, 2), Fraction_(0)), -1: (Fraction_(1, 2), Fraction_(0))}] * cos_power
-    factors += [{1: (Fraction_(0), Fraction_(-1, 2)), -1: (Fraction_(0), Fraction_(1, 2))}] * sin_power
+    """(2 cos)^a (2 sin)^b as {frequency j: (re, im) of the coefficient of z^j}, integers."""
+    result = {0: (1, 0)}
+    factors = [{1: (1, 0), -1: (1, 0)}] * cos_power + [{1: (0, -1), -1: (0, 1)}] * sin_power
     for factor in factors:
         product: dict = {}
-        for j, a in result.items():
-            for i, b in factor.items():
-                product[j + i] = _cadd(product.get(j + i, _ZERO), _cmul(a, b))
-        result = _merge(product)
+        for j, (ar, ai) in result.items():
+            for i, (br, bi) in factor.items():
+                re, im = product.get(j + i, (0, 0))
+                product[j + i] = (re + ar * br - ai * bi, im + ar * bi + ai * br)
+        result = {j: a for j, a in product.items() if a != (0, 0)}
     return result
 
 
@@ -240,11 +273,12 @@ def _negative_first(k: tuple) -> bool:
 
 
 def _best_form(poly, pairs) -> sp.Expr:
-    polynomial = poly.as_expr()
+    """The polynomial in sin q_i, cos q_i, or its Fourier sum when that has fewer terms."""
     if not pairs or not any(poly.degree(c) > 0 or poly.degree(s) > 0 for c, s in pairs):
-        return polynomial
-    fourier = _fourier(poly, pairs)
-    return fourier if sp.count_ops(fourier) < sp.count_ops(polynomial) else polynomial
+        return poly.as_expr()
+    terms = _fourier_terms(poly, pairs)
+    count = sum(bool(a) + bool(b) for a, b in terms.values())
+    return _fourier(terms, poly.ring, pairs) if count < len(poly.terms()) else poly.as_expr()
 
 
 class TrigField:
@@ -259,8 +293,6 @@ class TrigField:
     """
 
     def __init__(self, exprs):
-        from .algebra import SignSymbol
-
         exprs = [_expand_angles(sp.sympify(e)) for e in exprs]
         gens = _generators(sp.Tuple(*exprs)) or [sp.Dummy("one")]
         self.field = FracField(gens, sp.QQ)
@@ -270,8 +302,6 @@ class TrigField:
             (index[g], index[sp.sin(g.args[0])]) for g in gens if isinstance(g, sp.cos) and _is_angle(g.args[0])
         ]
         self.signs = [index[g] for g in gens if isinstance(g, SignSymbol)]
-        self._basis = [self.ring.gens[c] ** 2 + self.ring.gens[s] ** 2 - 1 for c, s in self.pairs]
-        self._basis += [self.ring.gens[i] ** 2 - 1 for i in self.signs]
 
     def element(self, expr: sp.Expr):
         """``expr`` as a reduced element of the field."""
@@ -279,7 +309,7 @@ class TrigField:
         return self.reduce(self.field.new(self.ring.from_expr(numer), self.ring.from_expr(denom)))
 
     def _reduce_poly(self, poly):
-        return poly.rem(self._basis) if self._basis and poly else poly
+        return _reduce(poly, self.pairs, self.signs)
 
     def reduce(self, value):
         """The normal form of a field element: signs moved up, both parts reduced, cancelled."""

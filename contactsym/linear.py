@@ -16,7 +16,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from .algebra import known_sign, normalize, sign_symbols
+from .algebra import normalize, sign_symbols
 from .canonical import to_fraction
 
 __all__ = ["lam", "charpoly", "principal_minors", "Linearization"]
@@ -55,11 +55,10 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
         factor = sp.Mul(*[lam * Psi[j] + Phi[j] for j in S])
         total += (-1) ** len(S) * lam ** (2 * (k - len(S))) * minor * factor
     fraction = to_fraction(total)
-    factors = fraction.denominator_factors()
-    signs = [known_sign(base, positive) for base, _ in factors]
-    if len(factors) > 1 and None not in signs:
-        sign = sp.prod([s**power for s, (_, power) in zip(signs, factors)])
-        return sp.Poly(sign * fraction.numerator_expr(), lam)
+    if fraction.denominator_split()[1] != 1:
+        sign = fraction.denominator_sign(positive)
+        if sign is not None:
+            return sp.Poly(sign * fraction.numerator_expr(), lam)
     return sp.Poly(fraction.as_expr(), lam)
 
 

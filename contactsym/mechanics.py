@@ -151,8 +151,7 @@ def solve_fraction_free(M: sp.Matrix, loads: list[sp.Matrix], rows: sp.Matrix | 
     """
     rows = sp.eye(M.rows) if rows is None else rows
     field = TrigField([*M, *rows] + [x for load in loads for x in load])
-    Mr = [[field.element(M[i, j]) for j in range(M.cols)] for i in range(M.rows)]
-    adj, det = adjugate_and_det(Mr, field.reduce)
+    adj, det = _adjugate_and_det(field, M)
     projected = _matmul([[field.element(x) for x in rows[:, i]] for i in range(rows.cols)], adj, field.reduce)
     results = []
     for load in loads:
@@ -162,19 +161,30 @@ def solve_fraction_free(M: sp.Matrix, loads: list[sp.Matrix], rows: sp.Matrix | 
     return results
 
 
+def _adjugate_and_det(field, M: sp.Matrix):
+    """adj M and det M as field elements; in the polynomial ring (no gcds) when M's entries are
+    polynomials, as a mass matrix usually is."""
+    entries = [[field.element(x) for x in row] for row in M.tolist()]
+    if all(x.denom == 1 for row in entries for x in row):
+        polys = [[x.numer for x in row] for row in entries]
+        adj, det = adjugate_and_det(polys, field._reduce_poly)
+        return [[field.field.new(x) for x in row] for row in adj], field.field.new(det)
+    return adjugate_and_det(entries, field.reduce)
+
+
 def mass_determinant(M: sp.Matrix):
-    """det M as a :class:`~contactsym.canonical.Fraction` *inverted*: its
-    ``denominator_factors()`` are the factors of det M (so their product is positive).
+    """1/det M as a :class:`~contactsym.canonical.Fraction`: det M is its denominator over
+    its (constant) numerator.
 
     Examples
     --------
     >>> q, m = sp.symbols("q m", positive=True)
-    >>> mass_determinant(sp.Matrix([[2*m, m*sp.cos(q)], [m*sp.cos(q), m]])).denominator_factors()
-    [(m**2, 1), (sin(q)**2 + 1, 1)]
+    >>> monomial, rest = mass_determinant(sp.Matrix([[2*m, m*sp.cos(q)], [m*sp.cos(q), m]])).denominator_split()
+    >>> monomial, rest.as_expr()
+    (m**2, sin(q)**2 + 1)
     """
     field = TrigField(list(M))
-    _, det = adjugate_and_det([[field.element(x) for x in row] for row in M.tolist()], field.reduce)
-    return field.fraction(1 / det)
+    return field.fraction(1 / _adjugate_and_det(field, M)[1])
 
 
 def _check_mass_matrix(M: sp.Matrix, coordinates) -> None:
@@ -198,9 +208,7 @@ def _check_mass_matrix(M: sp.Matrix, coordinates) -> None:
 
 
 def mass_determinant_is_zero(M: sp.Matrix) -> bool:
-    field = TrigField(list(M))
-    _, det = adjugate_and_det([[field.element(x) for x in row] for row in M.tolist()], field.reduce)
-    return not det
+    return not _adjugate_and_det(TrigField(list(M)), M)[1]
 
 
 def contact_space(lagrangian, coordinates, contacts, loads=(), frame=None) -> ContactSpace:

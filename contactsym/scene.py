@@ -250,14 +250,16 @@ class Scene:
         on the contact manifold that is not a monomial (when it is irreducible)."""
         if self.contact_space is None:
             return self._declared_positive
+        from .canonical import present_factor
         from .mechanics import mass_determinant
 
         inverse = mass_determinant(self.contact_space.M.applyfunc(self.freeze))
-        factors = inverse.denominator_factors()
-        sign = known_sign(factors[0][0] / inverse.numerator_expr(), self._declared_positive)
-        if sign is None or len(factors) != 2 or factors[1][1] != 1:
+        monomial, rest = inverse.denominator_split()
+        sign = known_sign(monomial / inverse.numerator_expr(), self._declared_positive)
+        if sign is None or rest == 1:
             return self._declared_positive
-        return self._declared_positive + (sign * factors[1][0],)
+        form, scale = present_factor(rest, inverse.pairs)
+        return self._declared_positive + ((1 if scale > 0 else -1) * sign * form,)
 
     @cached_property
     def accelerations(self) -> dict:
