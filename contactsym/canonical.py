@@ -175,10 +175,46 @@ def _as_poly(expr: sp.Expr, ring, pairs, signs):
 
 
 def _reduce(poly, pairs, signs):
-    """The normal form of a polynomial (see the module docstring)."""
-    gens = poly.ring.gens
-    basis = [gens[c] ** 2 + gens[s] ** 2 - 1 for c, s in pairs] + [gens[i] ** 2 - 1 for i in signs]
-    return poly.rem(basis) if basis and poly else poly
+    """The normal form of a polynomial (see the module docstring): cos^e -> cos^(e mod 2)
+    (1 - sin^2)^(e // 2) and s^e -> s^(e mod 2), term by term (what division by the
+    Groebner basis gives, without the general division algorithm)."""
+    ring = poly.ring
+    for i in signs:
+        if poly.degree(i) > 1:
+            poly = ring.from_dict(_sum_terms((m[:i] + (m[i] % 2,) + m[i + 1 :], c) for m, c in poly.items()))
+    for c, s in pairs:
+        if poly.degree(c) < 2:
+            continue
+        kept, by_power = {}, {}
+        for monom, coeff in poly.items():
+            target = kept if monom[c] < 2 else by_power.setdefault(monom[c] // 2, {})
+            lowered = monom[:c] + (monom[c] % 2,) + monom[c + 1 :]
+            target[lowered] = target.get(lowered, 0) + coeff
+        poly = ring.from_dict(kept)
+        one_minus = ring.one - ring.gens[s] ** 2
+        for power, part in by_power.items():
+            poly += ring.from_dict(part) * one_minus**power
+    return poly
+
+
+def _compose(poly, index: int, value):
+    """poly with generator ``index`` replaced by the field element ``value`` (Horner)."""
+    field = value.field
+    gen = poly.ring.gens[index]
+    degree = poly.degree(index)
+    if degree <= 0:
+        return field.new(poly)
+    result = field.new(poly.coeff_wrt(gen, degree))
+    for power in range(degree - 1, -1, -1):
+        result = result * value + field.new(poly.coeff_wrt(gen, power))
+    return result
+
+
+def _sum_terms(terms) -> dict:
+    total: dict = {}
+    for monom, coeff in terms:
+        total[monom] = total.get(monom, 0) + coeff
+    return total
 
 
 def _split_monomial(poly):
@@ -307,6 +343,14 @@ class TrigField:
         """``expr`` as a reduced element of the field."""
         numer, denom = sp.fraction(sp.together(_expand_angles(sp.sympify(expr))))
         return self.reduce(self.field.new(self.ring.from_expr(numer), self.ring.from_expr(denom)))
+
+    def substituted(self, expr: sp.Expr, values: dict):
+        """``expr`` with generators replaced by field elements (``values``), reduced."""
+        value = self.element(expr)
+        for symbol, replacement in values.items():
+            index = self.ring.symbols.index(symbol)
+            value = self.reduce(_compose(value.numer, index, replacement) / _compose(value.denom, index, replacement))
+        return value
 
     def _reduce_poly(self, poly):
         return _reduce(poly, self.pairs, self.signs)

@@ -83,14 +83,28 @@ def contact_accelerations(scene, u) -> list[sp.Expr]:
 
     space, freeze = scene.contact_space, scene.freeze
     to_u = dict(zip(scene.reactions, u))
+    # positions are put on the manifold by substitution, rates inside the field (they are rational)
+    rate_symbols = {scene.frozen_symbols[sp.diff(q, t)] for q in scene.coordinates}
+    rates = {k: v for k, v in scene.manifold.items() if k in rate_symbols}
+    positions = {k: v for k, v in scene.manifold.items() if k not in rate_symbols}
+
+    def place(expr):
+        return scene._plain(expr).subs(positions)
+
     second = {sp.diff(q, t, 2): 0 for q in scene.coordinates}
-    h = [freeze(sp.diff(g, t, 2).subs(second)) for g in scene.gaps]
+    h = sp.Matrix([place(sp.diff(g, t, 2).subs(second)) for g in scene.gaps])
     frozen = [term for term in space.friction if term is not None]
     loads = [space.F] + [space.W[:, j] for j in range(scene.k)] + [term[0] for term in frozen]
-    W = space.W.applyfunc(freeze)
-    columns = solve_fraction_free(space.M.applyfunc(freeze), [load.applyfunc(freeze) for load in loads], W)
+    W = space.W.applyfunc(place)
+    columns = solve_fraction_free(
+        space.M.applyfunc(place),
+        [load.applyfunc(place) for load in loads],
+        W,
+        substitution=rates,
+        offsets=[h] + [None] * (len(loads) - 1),
+    )
     multipliers = [sp.S.One, *u] + [freeze(term[1]).subs(to_u) for term in frozen]
-    return [h[i] + sp.Add(*[c[i] * w for c, w in zip(columns, multipliers)]) for i in range(scene.k)]
+    return [sp.Add(*[c[i] * w for c, w in zip(columns, multipliers)]) for i in range(scene.k)]
 
 
 @dataclass(frozen=True, eq=False)

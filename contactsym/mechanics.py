@@ -136,11 +136,15 @@ class ContactSpace:
         return [sp.Add(*[c[i] * w for c, w in zip(columns, multipliers)]) for i in range(self.M.rows)]
 
 
-def solve_fraction_free(M: sp.Matrix, loads: list[sp.Matrix], rows: sp.Matrix | None = None) -> list[list[sp.Expr]]:
-    """Canonical entries of ``rows^T M^-1 load`` for each load (rows = identity by default).
+def solve_fraction_free(
+    M: sp.Matrix, loads: list[sp.Matrix], rows: sp.Matrix | None = None, *, substitution=None, offsets=None
+) -> list[list[sp.Expr]]:
+    """Canonical entries of ``rows^T M^-1 load (+ offset)`` for each load (rows = identity by default).
 
     One trigonometric field for all entries; adj(M) and det(M) by :func:`adjugate_and_det`
-    with every product reduced; one common denominator det M.
+    with every product reduced; one common denominator det M. ``substitution`` ({symbol:
+    expression}) is applied to the loads and offsets inside the field, where a rational value
+    (a rate on the contact manifold) costs one composition instead of a ``together``.
 
     Examples
     --------
@@ -150,14 +154,20 @@ def solve_fraction_free(M: sp.Matrix, loads: list[sp.Matrix], rows: sp.Matrix | 
     [[1/m, cos(q)/m]]
     """
     rows = sp.eye(M.rows) if rows is None else rows
-    field = TrigField([*M, *rows] + [x for load in loads for x in load])
+    substitution = dict(substitution or {})
+    offsets = offsets or [None] * len(loads)
+    extra = [x for offset in offsets if offset is not None for x in offset]
+    field = TrigField([*M, *rows, *substitution, *substitution.values(), *extra] + [x for load in loads for x in load])
+    values = {symbol: field.element(value) for symbol, value in substitution.items()}
     adj, det = _adjugate_and_det(field, M)
     projected = _matmul([[field.element(x) for x in rows[:, i]] for i in range(rows.cols)], adj, field.reduce)
     results = []
-    for load in loads:
-        vector = [[field.element(x)] for x in load]
-        column = _matmul(projected, vector, field.reduce)
-        results.append([field.present(row[0] / det) for row in column])
+    for load, offset in zip(loads, offsets):
+        vector = [[field.substituted(x, values)] for x in load]
+        column = [row[0] / det for row in _matmul(projected, vector, field.reduce)]
+        if offset is not None:
+            column = [x + field.substituted(y, values) for x, y in zip(column, offset)]
+        results.append([field.present(x) for x in column])
     return results
 
 
