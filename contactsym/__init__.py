@@ -23,6 +23,7 @@ from .errors import (
 from .latex import latex
 from .laws import Compliance, Coulomb, Generic, KelvinVoigt, Law, Viscous
 from .linear import lam
+from .parse import ParseError, parse_expression
 from .regions import Region, closed_form
 from .scene import Contact, Scene
 from .scenes import DEFAULT_SCENE, scene, scene_names
@@ -37,6 +38,7 @@ __all__ = [
     "Generic",
     "KelvinVoigt",
     "Law",
+    "ParseError",
     "Region",
     "Scene",
     "SceneError",
@@ -46,6 +48,7 @@ __all__ = [
     "Viscous",
     "closed_form",
     "lam",
+    "parse_expression",
     "latex",
     "scene",
     "scene_names",

@@ -54,6 +54,7 @@ from scipy.integrate import solve_ivp
 
 from .errors import ContactsymError
 from .laws import Compliance, Generic, KelvinVoigt, Law
+from .parse import sympy_only
 from .scene import t as _time
 
 __all__ = [
@@ -1719,7 +1720,7 @@ def certified_sign(expr, values: Mapping | None = None, *, band: float = 0.0) ->
     >>> certified_sign((x + y)**2 - x**2 - 2*x*y - y**2 - 1e-30, {x: 1e8, y: 1e-8})
     (-1, True)
     """
-    expr = sp.sympify(expr)
+    expr = sympy_only(expr, "the expression")
     env, exact = _environment(values or {})
     try:
         v, e, magnitude = _bounded(expr, env, {})
@@ -1745,7 +1746,7 @@ def decide(boolean, values: Mapping | None = None, *, band: float = 0.0) -> bool
     >>> decide(sp.And(x > 0, x**2 < 2), {x: 1.414213562373095})
     True
     """
-    boolean = sp.sympify(boolean)
+    boolean = sympy_only(boolean, "the condition")
     if boolean in (sp.true, True):
         return True
     if boolean in (sp.false, False):
@@ -1889,7 +1890,7 @@ class PointClassifier:
     def __init__(self, conditions: Sequence, parameters: Sequence[sp.Symbol], *, band: float = 1e-12):
         self.parameters = tuple(parameters)
         self.band = float(band)
-        self.conditions = [sp.sympify(c) for c in conditions]
+        self.conditions = [sympy_only(c, "a condition") for c in conditions]
         self.kept: list[sp.Expr] = []  # distinct factors of unknown sign
         self.uses: list[tuple[int, int, int]] = []  # (condition index, sign, position in kept)
         self.always_false: list[int] = []

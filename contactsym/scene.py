@@ -17,6 +17,7 @@ from sympy.physics.mechanics import dynamicsymbols
 
 from .errors import SceneError, SignPatternError
 from .laws import Compliance, Coulomb, Generic, Viscous
+from .parse import sympy_only
 
 __all__ = ["Contact", "Scene", "t"]
 
@@ -60,6 +61,7 @@ class Contact:
     def __post_init__(self):
         if self.compliance is None:
             object.__setattr__(self, "compliance", Generic())
+        object.__setattr__(self, "coordinate", sympy_only(self.coordinate, "the gap of a contact"))
         if not isinstance(self.reaction, sp.Symbol):
             raise SceneError(f"the reaction of a contact must be a sympy Symbol, not {self.reaction!r}.")
 
@@ -100,7 +102,7 @@ def _check_eps(eps) -> sp.Expr:
     """eps is the small positive parameter of (1.6): a positive symbol or number."""
     if eps is None:
         return sp.Symbol("epsilon", positive=True)
-    eps = sp.sympify(eps)
+    eps = sympy_only(eps, "eps")
     if eps.is_positive:
         return eps
     if eps.is_positive is False:
@@ -170,7 +172,7 @@ class Scene:
         self.description = description
         self.coordinates = tuple(coordinates)
         self.contacts = tuple(contacts)
-        self.accelerations = dict(zip(self.coordinates, (sp.sympify(g) for g in accelerations)))
+        self.accelerations = dict(zip(self.coordinates, (sympy_only(g, "an acceleration") for g in accelerations)))
         self.eps = _check_eps(eps)
         self.at = dict(at or {})
         self.presentation = dict(presentation or {})
@@ -201,7 +203,7 @@ class Scene:
         >>> cs.Scene.from_accelerations([x, y], [0, N - 1], [c]).accelerations[x]
         -mu*Abs(N)
         """
-        accelerations = [sp.sympify(g) for g in accelerations]
+        accelerations = [sympy_only(g, "an acceleration") for g in accelerations]
         if len(accelerations) != len(coordinates):
             raise SceneError(
                 f"got {len(accelerations)} accelerations for {len(coordinates)} coordinates; give one per coordinate."
@@ -236,6 +238,7 @@ class Scene:
         """
         from .mechanics import lagrangian_accelerations
 
+        lagrangian = sympy_only(lagrangian, "the Lagrangian")
         accelerations = lagrangian_accelerations(lagrangian, coordinates, contacts, loads, frame)
         return cls(coordinates, accelerations, contacts, **options)
 
