@@ -388,12 +388,19 @@ class _Reader:
         for key, value in self.doc.table(spec, "values", "figures").items():
             if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
                 self.doc.fail("figures.values", key, f"the value of {key} must be a finite number")
-            values[key] = float(value)
+            values[self.printed(key)] = float(value)
         for key in ("x", "y"):
             if not isinstance(spec[key], str) or spec[key] not in self.names:
                 self.doc.fail("figures", key, f"{key} must name a declared parameter, not {_text(spec[key])}")
-        symbol_of = {key: str(self.names[spec[key]]) for key in ("x", "y")}
+        symbol_of = {key: self.printed(spec[key]) for key in ("x", "y")}
         return FigurePlan(symbol_of["x"], symbol_of["y"], ranges["x_range"], ranges["y_range"], values)
+
+    def printed(self, name: str) -> str:
+        """The name of a declared symbol as the pipeline prints it (mu_p -> mu_+; a function by its name)."""
+        value = self.names.get(name)
+        if isinstance(value, sp.core.function.AppliedUndef):
+            return value.func.__name__
+        return str(value) if isinstance(value, sp.Symbol) else name
 
     def build(self) -> Scene:
         coordinates = self.coordinates()
