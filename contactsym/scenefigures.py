@@ -60,6 +60,9 @@ def region_map_data(scene, plan, *, resolution: int = 200) -> RegionMapData:
         if region.condition in (sp.true, sp.false):
             skipped[name] = f"it is {region.condition} throughout"
             continue
+        if isinstance(region.condition, sp.Equality):
+            skipped[name] = "it is a curve, not an area; its equation is in the report"
+            continue
         try:
             grids[name] = region_data(
                 region,

@@ -58,6 +58,7 @@ from .tomlsource import SceneFileError, TomlSource
 __all__ = ["COMPLIANCE_LAWS", "FigurePlan", "SceneFileError", "load_scene", "read_scene", "scene_or_file"]
 
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
+_SCENE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.\-]{0,63}\Z")  # it names the report's directory
 _ASSUMPTIONS = {"positive": {"positive": True}, "negative": {"negative": True}, "real": {"real": True}}
 _ASSUMPTIONS["nonnegative"] = {"nonnegative": True}
 _TABLES = (
@@ -413,8 +414,11 @@ class _Reader:
         contacts = self.contacts(coordinates, lagrangian)
         head = self.head
         solve_for = self.formula(head["solve_for"], "scene", "solve_for") if "solve_for" in head else None
+        name = head.get("name", self.default_name)
+        if not isinstance(name, str) or not _SCENE_NAME.match(name):
+            self.doc.fail("scene", "name", f"the name {_text(name)} must be letters, digits, '-', '_' or '.'")
         options = dict(
-            name=str(head.get("name", self.default_name)),
+            name=name,
             description=str(head.get("description", "")),
             at=self.substitutions("at", plain=False),
             presentation=self.substitutions("presentation", plain=True),
@@ -501,7 +505,7 @@ def load_scene(path) -> Scene:
         raise SceneFileError(
             f"{path}: cannot read the scene file ({getattr(error, 'strerror', None) or error})."
         ) from None
-    return read_scene(text, str(path), path.stem)
+    return read_scene(text, str(path), re.sub(r"[^A-Za-z0-9_.\-]", "-", path.stem)[:64] or "user")
 
 
 def scene_or_file(argument: str) -> Scene:
