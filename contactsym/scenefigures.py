@@ -124,8 +124,10 @@ def _portrait_needs(scene) -> set[str]:
     fast = scene.fast_subsystem()
     rhs = sp.Matrix(scene.present(fast.rhs))
     laws = {s for s in (fast.Phi[0], fast.Psi[0]) if isinstance(s, sp.Symbol)}
-    symbols = rhs.free_symbols - set(fast.u) - set(fast.v) - laws
-    return {str(s) for s in symbols} | {a.func.__name__ for a in rhs.atoms(sp.core.function.AppliedUndef)}
+    # a load such as Y(x, xdot) takes one number by its function's name, arguments and all
+    applied = {a: sp.Symbol(a.func.__name__) for a in rhs.atoms(sp.core.function.AppliedUndef)}
+    symbols = rhs.xreplace(applied).free_symbols - set(fast.u) - set(fast.v) - laws
+    return {str(s) for s in symbols}
 
 
 def plan_figures(scene, directory, *, resolution: int = 200, dpi: int = 150) -> tuple[list, list]:
