@@ -874,7 +874,10 @@ def phase_portrait_data(
         slope = float(_by_name(scene.present(scene.linearization(signs=branch.signs).A[0]), values))
         equilibria.append((root, slope > 0))
     equilibria.sort()
-    counts = scene.equilibrium_counts()
+    try:
+        counts = scene.equilibrium_counts()
+    except (ValueError, NotImplementedError):  # a scene whose counts are not derived: the title says so
+        counts = {}
     known = [(n, r) for n, r in counts.items() if set(r._by_name) <= set(values)]
     count = next((n for n, r in known if bool(r.evaluate(**{k: values[k] for k in r._by_name}))), "undecided")
     centre = float(np.mean([r for r, _ in equilibria])) if equilibria else 0.0

@@ -52,7 +52,7 @@ from .algebra import SignSymbol
 from .errors import ContactsymError
 from .laws import Coulomb, Generic, KelvinVoigt, Law, Viscous
 from .parse import CONSTANTS, FUNCTIONS, ParseError, parse_expression
-from .scene import Contact, Scene, t
+from .scene import Contact, Scene, _plain, t
 from .tomlsource import SceneFileError, TomlSource
 
 __all__ = ["COMPLIANCE_LAWS", "FigurePlan", "SceneFileError", "load_scene", "read_scene", "scene_or_file"]
@@ -399,6 +399,8 @@ class _Reader:
     def printed(self, name: str) -> str:
         """The name of a declared symbol as the pipeline prints it (mu_p -> mu_+; a function by its name)."""
         value = self.names.get(name)
+        if isinstance(value, sp.Derivative):  # a rate x' is frozen as xdot
+            return _plain(value.expr, "dot").name
         if isinstance(value, sp.core.function.AppliedUndef):
             return value.func.__name__
         return str(value) if isinstance(value, sp.Symbol) else name

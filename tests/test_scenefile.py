@@ -42,6 +42,20 @@ def test_example_files_give_the_built_in_results_exactly(name):
     assert _conditions(from_file) == _conditions(built_in)
 
 
+def test_readme_walkthrough_file_is_the_example_and_shows_painleves_bound():
+    readme = (EXAMPLES.parent / "README.md").read_text()
+    block = readme.split("## Your own system in a file", 1)[1].split("```toml\n", 1)[1].split("```", 1)[0]
+    assert block == (EXAMPLES / "painleve-rod.toml").read_text()
+    scene = read_scene(block, "painleve-rod.toml")
+    stable = scene.regions()["stable for every law"].condition
+    mu, theta = sp.Symbol("mu", positive=True), sp.Symbol("theta", real=True)
+    # Painleve's bound 1 + 3 cos^2 - 3 mu sin cos > 0, by a second route: sampled both ways
+    for m_value, t_value in [(0.5, 1.0), (2.0, 1.1), (1.4, 1.05), (3.0, 0.3)]:
+        at = {mu: m_value, theta: t_value}
+        classical = 1 + 3 * np.cos(t_value) ** 2 - 3 * m_value * np.sin(t_value) * np.cos(t_value) > 0
+        assert bool(stable.subs(at)) == classical
+
+
 def test_scene_or_file_tells_files_from_names(tmp_path):
     assert scene_or_file("brake") is cs.scene("brake")
     assert scene_or_file(str(EXAMPLES / "brake.toml")).name == "brake-file"
