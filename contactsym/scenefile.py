@@ -46,14 +46,15 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import sympy as sp
-from sympy.physics.mechanics import Lagrangian, Particle, Point, ReferenceFrame, RigidBody, dynamicsymbols, inertia
+from sympy.physics.mechanics import dynamicsymbols
 
 from .algebra import SignSymbol
 from .errors import ContactsymError
-from .laws import Coulomb, Generic, KelvinVoigt, Law, Viscous
+from .filemechanics import COMPLIANCE_LAWS, PlaneMixin
+from .laws import Coulomb, Viscous
 from .parse import CONSTANTS, FUNCTIONS, ParseError, parse_expression
 from .scene import Contact, Scene, _plain, t
-from .tomlsource import SceneFileError, TomlSource
+from .tomlsource import SceneFileError, TomlSource, shown
 
 __all__ = ["COMPLIANCE_LAWS", "FigurePlan", "SceneFileError", "load_scene", "read_scene", "scene_or_file"]
 
@@ -78,31 +79,7 @@ class FigurePlan:
     values: dict = field(default_factory=dict)
 
 
-def _generic(reader, table, where):
-    reader.doc.keys(table, where, ("name",))
-    return Generic()
-
-
-def _kelvin_voigt(reader, table, where):
-    reader.doc.keys(table, where, ("name", "stiffness", "damping"))
-    return KelvinVoigt(*(reader.formula(table.get(k, 1), where, k) for k in ("stiffness", "damping")))
-
-
-def _user_law(reader, table, where):
-    """``N = "-k*q/eps^2 - d*q'/eps"``: q the deformation, q' its rate, eps the small parameter."""
-    reader.doc.keys(table, where, ("name", "N", "check"), required=("N",))
-    q, qdot = sp.symbols("q qdot", real=True)
-    local = {"q": q, "q'": qdot, "eps": reader.eps}
-    expr = reader.formula(table["N"], where, "N", {**reader.names, **local})
-    return Law(expr, q, qdot, reader.eps, check=bool(table.get("check", True)))
-
-
-#: Compliance laws by their name in a file; each reads its table into a Compliance.
-#: Add an entry to make a new law available to scene files.
-COMPLIANCE_LAWS = {"generic": _generic, "kelvin-voigt": _kelvin_voigt, "law": _user_law}
-
-
-class _Reader:
+class _Reader(PlaneMixin):
     """Reads one document; ``names`` grows as declarations are read, so use follows declaration."""
 
     def __init__(self, doc: TomlSource, default_name: str):
@@ -119,7 +96,7 @@ class _Reader:
 
     def declare(self, name, value, where: str, key: str | None = None) -> None:
         if not isinstance(name, str) or not _NAME.match(name):
-            self.doc.fail(where, key, f"'{_text(name)}' is not a name; use letters, digits and _ (e.g. mu_1)")
+            self.doc.fail(where, key, f"{shown(name)} is not a name; use letters, digits and _ (e.g. mu_1)")
         if name in FUNCTIONS or name in CONSTANTS or name in ("eps", "q"):
             self.doc.fail(where, key, f"'{name}' is reserved (a function, a constant or a law variable); rename it")
         if name in self.names or name + "'" in self.names:
@@ -128,7 +105,7 @@ class _Reader:
 
     def formula(self, value, where: str, key: str, names: dict | None = None) -> sp.Expr:
         if isinstance(value, bool) or not isinstance(value, (str, int, float)):
-            self.doc.fail(where, key, f"'{key}' must be a formula in quotes or a number, not {_text(value)}")
+            self.doc.fail(where, key, f"'{key}' must be a formula in quotes or a number, not {shown(value)}")
         if isinstance(value, int):
             return sp.Integer(value)
         if isinstance(value, float):
@@ -183,7 +160,7 @@ class _Reader:
                 self.doc.fail(
                     "parameters",
                     name,
-                    f"unknown assumption {_text(spec)}; use one of "
+                    f"unknown assumption {shown(spec)}; use one of "
                     f"{', '.join(_ASSUMPTIONS)}, sign, or an interval [low, high]",
                 )
             self.declare(name, symbol, "parameters", name)
@@ -212,7 +189,7 @@ class _Reader:
             self.doc.fail(
                 where,
                 "law",
-                f"unknown law {_text(spec.get('name') if isinstance(spec, dict) else spec)}; use one of {', '.join(COMPLIANCE_LAWS)} "
+                f"unknown law {shown(spec.get('name') if isinstance(spec, dict) else spec)}; use one of {', '.join(COMPLIANCE_LAWS)} "
                 "(a table {name = ..., ...} for laws with parameters)",
             )
         return COMPLIANCE_LAWS[spec["name"]](self, spec, where)
@@ -276,80 +253,6 @@ class _Reader:
         dx, dy = self.pair(direction, where, "friction")
         return law(coefficient, dx * self.frame.x + dy * self.frame.y, self.points[spec["point"]])
 
-    def plane(self) -> None:
-        """The inertial frame O, the [points] and the frames of the angles they turn with."""
-        self.frame, self.origin, self.points, self.frames = ReferenceFrame("O"), Point("O"), {}, {}
-        self.origin.set_vel(self.frame, 0)
-        for name, spec in self.doc.table(self.data, "points", "").items():
-            body = angle = None
-            if isinstance(spec, dict):
-                self.doc.keys(spec, "points", ("position", "body", "angle"), ("position",))
-                body, angle, spec = spec.get("body"), spec.get("angle"), spec["position"]
-            px, py = self.pair(spec, "points", name)
-            if body is None:
-                point = self.origin.locatenew(name, px * self.frame.x + py * self.frame.y)
-                point.set_vel(self.frame, point.pos_from(self.origin).dt(self.frame))
-            else:
-                if body not in self.points:
-                    self.doc.fail("points", name, f"body = '{_text(body)}' must name a point declared above it")
-                base = self.points[body]
-                offset = self.origin.locatenew(name, px * self.frame.x + py * self.frame.y).pos_from(base)
-                point = base.locatenew(name, offset)
-                point.v2pt_theory(base, self.frame, self.turning(angle, "points", name))
-            if name in self.points:
-                self.doc.fail("points", name, f"the point '{name}' is declared twice")
-            self.points[name] = point
-
-    def turning(self, angle, where: str, key: str) -> ReferenceFrame:
-        expr = self.formula(angle, where, key)
-        if expr not in self.frames:
-            self.frames[expr] = self.frame.orientnew(f"B{len(self.frames) + 1}", "Axis", [expr, self.frame.z])
-        return self.frames[expr]
-
-    def lagrangian(self) -> tuple:
-        items = []
-        for index, spec in enumerate(self.doc.table(self.data, "masses", "", kind=list)):
-            where = f"masses.{index}"
-            self.doc.keys(spec, where, ("point", "mass"), ("point", "mass"))
-            items.append(Particle(f"m{index}", self.point(spec, where), self.formula(spec["mass"], where, "mass")))
-        for index, spec in enumerate(self.doc.table(self.data, "bodies", "", kind=list)):
-            where = f"bodies.{index}"
-            self.doc.keys(spec, where, ("point", "angle", "mass", "inertia"), ("point", "angle", "mass", "inertia"))
-            frame = self.turning(spec["angle"], where, "angle")
-            point, mass = self.point(spec, where), self.formula(spec["mass"], where, "mass")
-            central = (inertia(frame, 0, 0, self.formula(spec["inertia"], where, "inertia")), point)
-            items.append(RigidBody(f"body{index}", point, frame, mass, central))
-        energy = self.doc.table(self.data, "energy", "")
-        self.doc.keys(energy, "energy", ("kinetic", "potential"))
-        L = Lagrangian(self.frame, *items) if items else sp.S.Zero
-        L += self.formula(energy.get("kinetic", 0), "energy", "kinetic")
-        L -= self.formula(energy.get("potential", 0), "energy", "potential")
-        if L == 0:
-            self.doc.fail(
-                "", None, "no motion: give [accelerations], or [energy] kinetic = ..., [[masses]], [[bodies]]"
-            )
-        return L, self.loads()
-
-    def point(self, spec, where: str):
-        if spec["point"] not in self.points:
-            self.doc.fail(where, "point", f"point = '{_text(spec['point'])}' is not among the [points]")
-        return self.points[spec["point"]]
-
-    def loads(self) -> list:
-        loads = []
-        for index, spec in enumerate(self.doc.table(self.data, "loads", "", kind=list)):
-            where = f"loads.{index}"
-            self.doc.keys(spec, where, ("point", "force", "angle", "moment"))
-            if set(spec) == {"point", "force"}:
-                fx, fy = self.pair(spec["force"], where, "force")
-                loads.append((self.point(spec, where), fx * self.frame.x + fy * self.frame.y))
-            elif set(spec) == {"angle", "moment"}:
-                moment = self.formula(spec["moment"], where, "moment")
-                loads.append((self.turning(spec["angle"], where, "angle"), moment * self.frame.z))
-            else:
-                self.doc.fail(where, None, "a load is point = ... with force = [Fx, Fy], or angle = ... with moment")
-        return loads
-
     def accelerations(self, coordinates) -> list:
         table = self.doc.table(self.data, "accelerations", "")
         self.doc.keys(table, "accelerations", [str(q.func.__name__) for q in coordinates])
@@ -392,7 +295,7 @@ class _Reader:
             values[self.printed(key)] = float(value)
         for key in ("x", "y"):
             if not isinstance(spec[key], str) or spec[key] not in self.names:
-                self.doc.fail("figures", key, f"{key} must name a declared parameter, not {_text(spec[key])}")
+                self.doc.fail("figures", key, f"{key} must name a declared parameter, not {shown(spec[key])}")
         symbol_of = {key: self.printed(spec[key]) for key in ("x", "y")}
         return FigurePlan(symbol_of["x"], symbol_of["y"], ranges["x_range"], ranges["y_range"], values)
 
@@ -418,7 +321,7 @@ class _Reader:
         solve_for = self.formula(head["solve_for"], "scene", "solve_for") if "solve_for" in head else None
         name = head.get("name", self.default_name)
         if not isinstance(name, str) or not _SCENE_NAME.match(name):
-            self.doc.fail("scene", "name", f"the name {_text(name)} must be letters, digits, '-', '_' or '.'")
+            self.doc.fail("scene", "name", f"the name {shown(name)} must be letters, digits, '-', '_' or '.'")
         options = dict(
             name=name,
             description=str(head.get("description", "")),
@@ -441,10 +344,6 @@ class _Reader:
             scene.count_presentation = {**scene.presentation, **self.substitutions("count_presentation", True)}
         scene.figure_plan = self.figures()
         return scene
-
-
-def _text(value) -> str:
-    return repr(value) if len(repr(value)) <= 40 else repr(value)[:37] + "..."
 
 
 def _positive_on(symbol, low, high) -> list:

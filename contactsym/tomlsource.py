@@ -18,7 +18,7 @@ if sys.version_info >= (3, 11):
 else:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
-__all__ = ["SceneFileError", "TomlSource"]
+__all__ = ["SceneFileError", "TomlSource", "shown"]
 
 _KEY = re.compile(r"""\s*(?:"([^"]*)"|'([^']*)'|([A-Za-z0-9_\-]+))\s*=""")
 
@@ -29,6 +29,11 @@ class SceneFileError(SceneError):
 
 def _short(text: str, limit: int = 60) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def shown(value) -> str:
+    """A value as a message shows it: its repr, cut to 40 characters."""
+    return _short(repr(value), 40)
 
 
 class TomlSource:
