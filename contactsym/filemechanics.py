@@ -27,7 +27,10 @@ def _kelvin_voigt(reader, table, where):
 
 
 def _user_law(reader, table, where):
-    """``N = "-k*q/eps^2 - d*q'/eps"``: q the deformation, q' its rate, eps the small parameter."""
+    """``N = "-k*q/eps^2 - d*q'/eps"``: q the deformation, q' its rate, eps the small parameter.
+
+    Inside the law these three names mean only that, whatever else the file calls q or eps.
+    """
     reader.doc.keys(table, where, ("name", "N", "check"), required=("N",))
     q, qdot = sp.symbols("q qdot", real=True)
     local = {"q": q, "q'": qdot, "eps": reader.eps}

@@ -97,8 +97,8 @@ class _Reader(PlaneMixin):
     def declare(self, name, value, where: str, key: str | None = None) -> None:
         if not isinstance(name, str) or not _NAME.match(name):
             self.doc.fail(where, key, f"{shown(name)} is not a name; use letters, digits and _ (e.g. mu_1)")
-        if name in FUNCTIONS or name in CONSTANTS or name in ("eps", "q"):
-            self.doc.fail(where, key, f"'{name}' is reserved (a function, a constant or a law variable); rename it")
+        if name in FUNCTIONS or name in CONSTANTS:
+            self.doc.fail(where, key, f"'{name}' is the name of a function or a constant; rename it")
         if name in self.names or name + "'" in self.names:
             self.doc.fail(where, key, f"the name '{name}' is declared twice; give each symbol one name")
         self.names[name] = value
@@ -121,6 +121,12 @@ class _Reader(PlaneMixin):
         if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
             self.doc.fail(where, key, f'\'{key}\' must be a list of names in quotes, e.g. ["x", "y"]')
         return value
+
+    def interval(self, value, where: str, key: str) -> tuple:
+        low, high = self.pair(value, where, key, {})
+        if not (low.is_real and high.is_real and bool(low < high)):
+            self.doc.fail(where, key, f"the interval ({low}, {high}) is empty; give [low, high] with low < high")
+        return low, high
 
     def pair(self, value, where: str, key: str, names=None) -> tuple:
         if not isinstance(value, list) or len(value) != 2:
@@ -150,7 +156,7 @@ class _Reader(PlaneMixin):
             elif isinstance(spec, list):
                 spec, interval = None, spec
             if interval is not None:
-                low, high = self.pair(interval, "parameters", name, {})
+                low, high = self.interval(interval, "parameters", name)
                 spec = spec or ("positive" if low >= 0 else "real")
             if spec == "sign":
                 symbol = SignSymbol(symbol_name)
@@ -176,7 +182,7 @@ class _Reader(PlaneMixin):
                     f"'{name}' is not a coordinate; give parameters' intervals in "
                     '[parameters], e.g. alpha = [0, "pi"]',
                 )
-            self.positive += _positive_on(self.names[name], *self.pair(interval, "intervals", name, {}))
+            self.positive += _positive_on(self.names[name], *self.interval(interval, "intervals", name))
 
     def functions(self) -> None:
         for name, arguments in self.doc.table(self.data, "functions", "").items():
@@ -348,8 +354,6 @@ class _Reader(PlaneMixin):
 
 def _positive_on(symbol, low, high) -> list:
     """sin and cos of ``symbol`` where positive throughout the open interval (low, high)."""
-    if not (low.is_real and high.is_real and bool(low < high)):
-        raise SceneFileError(f"the interval ({low}, {high}) of {symbol} is empty or not real; give [low, high].")
     positive = []
     for function, zero in ((sp.sin, sp.S.Zero), (sp.cos, sp.pi / 2)):
         # the zeros are zero + k*pi; with none strictly inside, the sign at the midpoint holds throughout

@@ -194,3 +194,16 @@ friction = {{ mu = "mu", point = "P", direction = ["{c * b}", "{-c * a}"] }}
     from_file, direct = read_scene(text, "line.toml"), _direct_point_on_line(a, b, c)
     assert from_file.accelerations == direct.accelerations  # the rest of the pipeline follows from these
     assert from_file.gaps == direct.gaps
+
+
+def test_user_law_in_a_file_matches_the_python_law_and_shadows_q():
+    text = BASE.replace('["x", "y"]', '["q", "y"]').replace('x = "0"', 'q = "0"')
+    text += 'law = { name = "law", N = "-k*q/eps^2 - q\'/eps - (q\'/eps)^3" }\n'
+    scene = read_scene(text, "a.toml")
+    q, qd = sp.symbols("q qdot", real=True)
+    eps, k = sp.Symbol("epsilon", positive=True), sp.Symbol("k", positive=True)
+    law = cs.Law(-k * q / eps**2 - qd / eps - (qd / eps) ** 3, q, qd, eps)
+    u, v = sp.symbols("u v", real=True)
+    assert scene.contacts[0].compliance.phi_psi(u, v, None) == law.phi_psi(u, v, None) == (-k, -3 * v**2 - 1)
+    with pytest.raises(SceneFileError, match=r"^a.toml:4: the interval \(2, 1\) is empty"):
+        read_scene(BASE.replace('mu = "positive"', "mu = [2, 1]"), "a.toml")
