@@ -40,7 +40,7 @@ USAGE, FAILURE = 2, 1
 
 
 def derivation_chain(name) -> str:
-    """The derivation chain of a scene, as plain text, stage by stage.
+    """The derivation chain of a scene (a built-in name, a scene file or a Scene), as plain text.
 
     Examples
     --------

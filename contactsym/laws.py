@@ -120,7 +120,8 @@ class Law(Compliance):
     Parameters
     ----------
     expr : sympy expression
-        The reaction as a function of the deformation ``q``, its rate ``qdot`` and ``eps``.
+        The reaction as a function of the deformation ``q``, its rate ``qdot`` and ``eps``
+        (a SymPy object: text is refused, see :func:`contactsym.parse_expression`).
     q, qdot, eps : sympy.Symbol
         The symbols that ``expr`` uses for them.
     check : bool

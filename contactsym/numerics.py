@@ -1737,6 +1737,8 @@ def certified_sign(expr, values: Mapping | None = None, *, band: float = 0.0) ->
 def decide(boolean, values: Mapping | None = None, *, band: float = 0.0) -> bool:
     """Truth of a SymPy Boolean of relationals at numeric values, never by float luck.
 
+    ``boolean`` is a SymPy object; text is refused, never evaluated.
+
     Examples
     --------
     >>> import sympy as sp
@@ -1860,7 +1862,7 @@ class PointClassifier:
     Parameters
     ----------
     conditions : sequence of sympy expressions
-        Stable exactly when all are > 0 (e.g. ``Stability.hurwitz``).
+        Stable exactly when all are > 0 (e.g. ``Stability.hurwitz``); SymPy objects, not text.
     parameters : sequence of Symbol
         The order of the parameter arrays passed to :meth:`__call__`. Functions such as
         ``sin`` must act on expressions that are exact in floating point (a parameter,

@@ -25,6 +25,7 @@ here.
 
 from __future__ import annotations
 
+import difflib
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -229,8 +230,6 @@ class _Parser:
         if token.text in FUNCTIONS:
             self.fail(token.column, f"{token.text} is a function; write {token.text}(...)")
         known = sorted(self.names)
-        import difflib
-
         close = difflib.get_close_matches(token.text, known, n=1)
         hint = f"did you mean {close[0]!r}? " if close else ""
         listed = ", ".join(_short(n, 20) for n in known[:30]) + (", ..." if len(known) > 30 else "")

@@ -122,7 +122,9 @@ class Scene:
     coordinates : sequence of dynamicsymbols
         The generalized coordinates q.
     accelerations : sequence of sympy expressions
-        q'' for each coordinate (1.4), in q, q', the reactions and parameters.
+        q'' for each coordinate (1.4), in q, q', the reactions and parameters. Every
+        expression given to contactsym is a SymPy object or a number: text is refused
+        (:func:`contactsym.parse_expression` reads a formula with declared names).
     contacts : sequence of Contact
     name, description : str
         For listings and reports.
