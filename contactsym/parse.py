@@ -63,6 +63,8 @@ CONSTANTS = {"pi": sp.pi}
 MAX_LENGTH = 10_000
 #: Deepest nesting accepted (parentheses, unary signs, powers, calls).
 MAX_DEPTH = 100
+#: Largest power of ten in a number, and largest exponent of a number's power.
+MAX_EXPONENT = 300
 
 _TOKEN = re.compile(
     r"(?P<space>\s+)|(?P<number>(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)|(?P<name>[A-Za-z][A-Za-z0-9_]*'*)"
@@ -188,13 +190,23 @@ class _Parser:
     def power(self) -> sp.Expr:
         base = self.atom()
         if self.take("^", "**"):
-            return base ** self.unary()
+            column = self.token.column
+            exponent = self.unary()
+            # a number to a huge power would be computed in full (9^9^9): refuse it instead
+            if exponent.is_Rational and base.is_Rational:
+                bits = (base.p.bit_length() + base.q.bit_length()) * abs(exponent)
+                if abs(exponent) > MAX_EXPONENT or bits > 64 * MAX_EXPONENT:
+                    self.fail(column, f"the power {_short(str(exponent))} of {_short(str(base))} is too large")
+            return base**exponent
         return base
 
     def atom(self) -> sp.Expr:
         token = self.token
         if token.kind == "number":
             self.position += 1
+            mantissa, _, exponent = token.text.lower().partition("e")
+            if abs(int(exponent or 0)) > MAX_EXPONENT or len(mantissa) > MAX_EXPONENT:
+                self.fail(token.column, f"the number {_short(token.text)} is out of range (at most 1e{MAX_EXPONENT})")
             return sp.Integer(token.text) if token.text.isdigit() else sp.Rational(token.text)
         if token.kind == "name":
             self.position += 1

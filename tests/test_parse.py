@@ -133,6 +133,10 @@ def test_parser_refuses_long_and_deep_input_quickly():
     for deep in ("(" * 3000 + "a" + ")" * 3000, "-" * 5000 + "a", "a^" * 3000 + "a", "sin(" * 1000 + "a" + ")" * 1000):
         with pytest.raises(ParseError, match="nested more than"):
             parse_expression(deep, NAMES)
+    for huge in ("9^9^9^9", "2**100000", "1e100000", "10^(-400)", "((2^300)^300)^300"):
+        with pytest.raises(ParseError, match="too large|out of range"):
+            parse_expression(huge, NAMES)
+    assert parse_expression("a^1000", NAMES) == a**1000  # a symbol's power costs nothing
     depth = MAX_DEPTH // 2 - 1
     assert parse_expression("(" * depth + "a" + ")" * depth, NAMES) == a
 
