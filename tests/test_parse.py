@@ -67,9 +67,11 @@ _trees = st.recursive(
 @settings(max_examples=60, deadline=None)
 @given(_trees)
 def test_sympy_printed_expressions_parse_back(expr):
-    if expr.has(sp.zoo, sp.nan):
+    if expr.has(sp.zoo, sp.nan, sp.oo, sp.E, sp.I):  # outside the real grammar (exp(1) is written so)
         return
-    assert parse_expression(sp.sstr(expr), NAMES) == expr
+    parsed = parse_expression(sp.sstr(expr), NAMES)
+    # equal as written, up to SymPy's own evaluation (2*(a + b) is built as 2*a + 2*b)
+    assert parsed == expr or sp.expand(parsed - expr) == 0
 
 
 # --- errors: where and what was expected ------------------------------------------------------
