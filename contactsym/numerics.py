@@ -136,7 +136,7 @@ def _positive(value, name: str, why: str) -> float:
 
 
 def _plain_expr(scene, expr) -> sp.Expr:
-    return scene._plain(sp.sympify(expr))
+    return scene._plain(expr)
 
 
 @dataclass(frozen=True)
@@ -266,7 +266,7 @@ def substitute(expr, values: _Values) -> sp.Expr:
     >>> substitute(s.reduced_system().accelerations[x], v)
     -mu*Abs(Y(x, xdot))/2 + 3*x/2
     """
-    expr = sp.sympify(expr)
+    expr = sympy_only(expr, "the expression")
     for function, body in values.functions.items():
         expr = expr.replace(function, body)
     if isinstance(expr, sp.MatrixBase):

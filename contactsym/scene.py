@@ -176,8 +176,11 @@ class Scene:
         self.contacts = tuple(contacts)
         self.accelerations = dict(zip(self.coordinates, (sympy_only(g, "an acceleration") for g in accelerations)))
         self.eps = _check_eps(eps)
-        self.at = dict(at or {})
-        self.presentation = dict(presentation or {})
+        self.at = {sympy_only(k, "a key of at"): sympy_only(v, "a value of at") for k, v in (at or {}).items()}
+        self.presentation = {
+            sympy_only(k, "a presentation key"): sympy_only(v, "a presentation value")
+            for k, v in (presentation or {}).items()
+        }
         #: Expressions positive throughout the scene's domain (e.g. sin(alpha), 0 < alpha < pi).
         self.positive_expressions = tuple(self._plain(e) for e in positive)
         #: The parameter that closed-form regions are solved for, where possible.
@@ -302,7 +305,7 @@ class Scene:
 
     def _plain(self, expr: sp.Expr) -> sp.Expr:
         rates = {d: s for d, s in self.frozen_symbols.items() if isinstance(d, sp.Derivative)}
-        return sp.sympify(expr).subs(rates).subs(self.frozen_symbols)
+        return sympy_only(expr, "the expression").subs(rates).subs(self.frozen_symbols)
 
     @cached_property
     def manifold(self) -> dict:
@@ -453,7 +456,7 @@ class Scene:
         """
         from .algebra import reduce_signs, sign_symbols
 
-        expr = sp.sympify(expr)
+        expr = sympy_only(expr, "the expression")
         presentation = self.presentation if presentation is None else presentation
         if not presentation or expr in (sp.true, sp.false):
             return expr

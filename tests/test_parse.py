@@ -163,6 +163,11 @@ def _entry_points(payload: str):
         "decide": lambda: decide(payload, {}),
         "certified_sign": lambda: certified_sign(payload, {}),
         "PointClassifier": lambda: PointClassifier([payload], [a]),
+        "Region": lambda: cs.Region(payload),
+        "closed_form": lambda: cs.closed_form(payload),
+        "Scene.present": lambda: cs.scene("brake").present(payload),
+        "presentation": lambda: cs.Scene.from_accelerations([x, y], [0, N], [contact], presentation={a: payload}),
+        "at": lambda: cs.Scene.from_accelerations([x, y], [0, N], [contact], at={a: payload}),
     }
 
 
