@@ -414,9 +414,15 @@ def load_scene(path) -> Scene:
 
 
 def scene_or_file(argument: str) -> Scene:
-    """A built-in scene by name, or a scene file by path (anything ending in .toml, or an existing file)."""
-    from .scenes import scene
+    """A scene file by path (a name ending in .toml), else a built-in scene, else an existing file.
 
-    if argument.endswith(".toml") or Path(argument).is_file():
+    Examples
+    --------
+    >>> scene_or_file("brake")
+    <Scene 'brake': 3 coordinates, k = 2 contacts>
+    """
+    from .scenes import scene, scene_names
+
+    if argument.endswith(".toml") or (argument not in scene_names() and Path(argument).is_file()):
         return load_scene(argument)
     return scene(argument)
