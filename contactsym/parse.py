@@ -153,28 +153,28 @@ class _Parser:
         return expr
 
     def expression(self) -> sp.Expr:
-        expr = self.term()
+        terms = [self.term()]  # summed once at the end: adding term by term is quadratic
         while True:
             if self.take("+"):
-                expr = expr + self.term()
+                terms.append(self.term())
             elif self.take("-"):
-                expr = expr - self.term()
+                terms.append(-self.term())
             else:
-                return expr
+                return sp.Add(*terms)
 
     def term(self) -> sp.Expr:
-        expr = self.unary()
+        factors = [self.unary()]
         while True:
             if self.take("*"):
-                expr = expr * self.unary()
+                factors.append(self.unary())
             elif self.take("/"):
                 column = self.token.column
                 divisor = self.unary()
                 if divisor == 0:
                     self.fail(column, "division by zero")
-                expr = expr / divisor
+                factors.append(1 / divisor)
             else:
-                return expr
+                return sp.Mul(*factors)
 
     def unary(self) -> sp.Expr:
         self.nest()
