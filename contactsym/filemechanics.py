@@ -66,8 +66,6 @@ class PlaneMixin:
                 offset = self.origin.locatenew(name, px * self.frame.x + py * self.frame.y).pos_from(base)
                 point = base.locatenew(name, offset)
                 point.v2pt_theory(base, self.frame, self.turning(angle, "points", name))
-            if name in self.points:
-                self.doc.fail("points", name, f"the point '{name}' is declared twice")
             self.points[name] = point
 
     def turning(self, angle, where: str, key: str) -> ReferenceFrame:

@@ -59,6 +59,7 @@ from .tomlsource import SceneFileError, TomlSource, shown
 __all__ = ["COMPLIANCE_LAWS", "FigurePlan", "SceneFileError", "load_scene", "read_scene", "scene_or_file"]
 
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
+_PRINTED = re.compile(r"[A-Za-z][A-Za-z0-9_^*+\-]{0,31}\Z")  # printed in LaTeX: no backslash, no braces
 _SCENE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.\-]{0,63}\Z")  # it names the report's directory
 _ASSUMPTIONS = {"positive": {"positive": True}, "negative": {"negative": True}, "real": {"real": True}}
 _ASSUMPTIONS["nonnegative"] = {"nonnegative": True}
@@ -151,7 +152,9 @@ class _Reader(PlaneMixin):
             symbol_name, interval = name, None
             if isinstance(spec, dict):
                 self.doc.keys(spec, "parameters", ("assume", "symbol", "interval"))
-                symbol_name, interval = str(spec.get("symbol", name)), spec.get("interval")
+                symbol_name, interval = spec.get("symbol", name), spec.get("interval")
+                if not isinstance(symbol_name, str) or not _PRINTED.match(symbol_name):
+                    self.doc.fail("parameters", name, f"symbol = {shown(symbol_name)} must be e.g. mu_+ or X^*_1")
                 spec = spec.get("assume", "real" if interval is None else None)
             elif isinstance(spec, list):
                 spec, interval = None, spec

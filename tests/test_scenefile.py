@@ -92,6 +92,7 @@ reaction = "N"
         (BASE.replace('k = "positive"', 'x = "positive"'), SceneFileError, "a.toml:5: ", "declared twice"),
         (BASE.replace('reaction = "N"', 'reaction = "mu"'), SceneFileError, "a.toml:11: ", "declared twice"),
         (BASE.replace('k = "positive"', 'k = "postive"'), SceneFileError, "a.toml:5: ", "unknown assumption"),
+        (BASE.replace('k = "positive"', 'k = {symbol = "\\\\input{x}"}'), SceneFileError, "a.toml:5: ", "mu_+"),
         (BASE.replace('y = "N - 1"', 'y = "N - mu*kk"'), ParseError, "a.toml:8:13: ", "did you mean 'k'"),
         (BASE.replace('x = "0"', "x = true"), SceneFileError, "a.toml:7: ", "a formula in quotes"),
         (BASE.replace('x = "0"\n', ""), SceneFileError, "a.toml:6: ", "no acceleration for x"),
