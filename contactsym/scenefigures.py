@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
 import sympy as sp
 
 from .errors import ContactsymError
@@ -18,6 +19,8 @@ from .plotting import (
     STABLE_HATCH,
     UNSTABLE_HATCH,
     _axes,
+    _boundary_plot,
+    _relational_fields,
     phase_portrait_data,
     phase_portrait_plot,
     region_data,
@@ -38,6 +41,7 @@ class RegionMapData:
     x: str
     y: str
     grids: dict  # region name -> plotting.RegionData
+    curves: dict  # name of a region that is a curve (the Hopf line) -> (X, Y, [fields whose zero sets draw it])
     skipped: dict  # region name -> why it is not drawn
 
 
@@ -52,16 +56,22 @@ def region_map_data(scene, plan, *, resolution: int = 200) -> RegionMapData:
     >>> from contactsym.scenefile import load_scene
     >>> brake = load_scene(Path(__file__).parent.parent / "examples" / "brake.toml")
     >>> data = region_map_data(brake, brake.figure_plan, resolution=20)
-    >>> sorted(data.grids), data.x, data.y
-    (['law-dependent', 'stable for every law'], 'alpha', 'mu')
+    >>> sorted(data.grids), sorted(data.curves), data.x, data.y
+    (['law-dependent', 'stable for every law'], ['Hopf line'], 'alpha', 'mu')
     """
-    grids, skipped = {}, {}
+    grids, curves, skipped = {}, {}, {}
+    X, Y = np.meshgrid(np.linspace(*plan.x_range, resolution), np.linspace(*plan.y_range, resolution))
     for name, region in scene.regions().items():
         if region.condition in (sp.true, sp.false):
             skipped[name] = f"it is {region.condition} throughout"
             continue
-        if isinstance(region.condition, sp.Equality):
-            skipped[name] = "it is a curve, not an area; its equation is in the report"
+        if isinstance(region.condition, sp.Equality):  # a curve: drawn as the zero set of lhs - rhs
+            try:
+                fields = _relational_fields(region.condition, {**plan.values, plan.x: X, plan.y: Y}, X.shape)
+            except KeyError as missing:
+                skipped[name] = f"give [figures] values for {missing}"
+                continue
+            curves[name] = (X, Y, fields)
             continue
         try:
             grids[name] = region_data(
@@ -76,7 +86,7 @@ def region_map_data(scene, plan, *, resolution: int = 200) -> RegionMapData:
         except (ValueError, TypeError, ContactsymError) as error:  # a missing value, or a non-numeric one
             skipped[name] = str(error)
     title = f"{scene.name}: regions in the (${tex(sp.Symbol(plan.x))}$, ${tex(sp.Symbol(plan.y))}$) plane"
-    return RegionMapData(title, plan.x, plan.y, grids, skipped)
+    return RegionMapData(title, plan.x, plan.y, grids, curves, skipped)
 
 
 def region_map_plot(data: RegionMapData, ax=None, *, legend: bool = True) -> list:
@@ -93,7 +103,7 @@ def region_map_plot(data: RegionMapData, ax=None, *, legend: bool = True) -> lis
     >>> fig, ax = plt.subplots()
     >>> artists = region_map_plot(region_map_data(brake, brake.figure_plan, resolution=20), ax=ax)
     >>> ax.get_xlabel(), len(ax.get_legend_handles_labels()[1])
-    ('$\\\\alpha$', 2)
+    ('$\\\\alpha$', 3)
     >>> plt.close(fig)
     """
     ax = _axes(ax)
@@ -102,6 +112,10 @@ def region_map_plot(data: RegionMapData, ax=None, *, legend: bool = True) -> lis
         hatch, color = _HATCHES.get(name) or next(others)
         label = name if len(tex(grid.region.condition)) > 80 else f"{name}: ${tex(grid.region.condition)}$"
         artists += region_plot(grid.region, ax, x=grid.x, y=grid.y, data=grid, hatch=hatch, color=color, label=label)
+    for name, (X, Y, fields) in data.curves.items():
+        drawn = _boundary_plot(ax, X, Y, fields, colors="black", linewidths=1.5)
+        if drawn:
+            artists += drawn + ax.plot([], [], "k-", lw=1.5, label=name)
     ax.set_xlabel(f"${tex(sp.Symbol(data.x))}$")
     ax.set_ylabel(f"${tex(sp.Symbol(data.y))}$")
     ax.set_title(data.title, fontsize=10)
@@ -144,7 +158,7 @@ def plan_figures(scene, directory, *, resolution: int = 200, dpi: int = 150) -> 
     drawn, notes = [], []
     data = region_map_data(scene, plan, resolution=resolution)
     notes += [f"Region '{name}' is not drawn: {why}" for name, why in data.skipped.items()]
-    if data.grids:
+    if data.grids or data.curves:
         path = _save(lambda ax: region_map_plot(data, ax), directory / "regions.png", dpi)
         caption = f"The closed-form regions of this scene in the $({tex(sp.Symbol(plan.x))}, {tex(sp.Symbol(plan.y))})$ plane."
         drawn.append((path, caption))

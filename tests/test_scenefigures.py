@@ -92,3 +92,16 @@ def test_cli_reports_a_bad_file_in_one_line(tmp_path, capsys, text, where):
     assert main(["show", str(path)]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and f"{path.parent}/{where}" in err
+
+
+def test_hopf_line_on_the_map_crosses_alpha_90_at_the_special_case_root():
+    """At alpha = 90 deg, Phi_j = -4, Psi_j = -1, m = 1 the special case (6.4) is Psi^2 (mu^2 + 1) + Phi m mu^2 = 0:
+    1 - 3 mu^2 = 0, mu = 1/sqrt(3); the map's Hopf curve, from the general condition, changes sign there."""
+    scene = load_scene(EXAMPLES / "brake.toml")
+    data = region_map_data(scene, scene.figure_plan, resolution=121)
+    X, Y, (field,) = data.curves["Hopf line"]
+    column = np.argmin(abs(X[0] - np.pi / 2))
+    signs = np.sign(field[:, column])
+    crossing = Y[np.nonzero(signs[1:] != signs[:-1])[0], column]
+    step = Y[1, 0] - Y[0, 0]
+    assert len(crossing) == 1 and abs(crossing[0] - 1 / np.sqrt(3)) <= step
