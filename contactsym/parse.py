@@ -149,7 +149,13 @@ class _Parser:
         if self.token.kind != "end":
             self.fail(self.token.column, f"expected an operator or the end of the formula, found {self._found()}")
         if expr.has(sp.zoo, sp.nan, sp.oo, sp.S.NegativeInfinity):
-            self.fail(0, f"the formula evaluates to {expr}, which is not finite; check for a division by zero")
+            self.fail(
+                0, f"the formula evaluates to {_short(str(expr))}, which is not finite; check for a division by zero"
+            )
+        if expr.has(sp.I):
+            self.fail(
+                0, f"the formula evaluates to {_short(str(expr))}, which is not real (a root of a negative number?)"
+            )
         return expr
 
     def expression(self) -> sp.Expr:

@@ -74,6 +74,18 @@ def test_sympy_printed_expressions_parse_back(expr):
     assert parsed == expr or sp.expand(parsed - expr) == 0
 
 
+@settings(max_examples=300, deadline=None)
+@given(st.text(alphabet="abcm0123456789.eE+-*/^()', _sinqrtlogpAb\n", max_size=40))
+def test_any_text_gives_an_expression_or_a_parse_error(text):
+    """No other exception escapes, and whatever parses is finite and real."""
+    try:
+        expr = parse_expression(text, NAMES)
+    except ParseError as error:
+        assert str(error).startswith("<formula>:1:")
+        return
+    assert not expr.has(sp.zoo, sp.nan, sp.oo, sp.I)
+
+
 # --- errors: where and what was expected ------------------------------------------------------
 
 
