@@ -35,7 +35,9 @@ or a Lagrangian from any of:
     As the Scene options of the same names; presentation keys are formulas in quotes.
 ``[figures]``
     ``x``, ``y`` (two parameters), ``x_range``, ``y_range`` and ``values`` (numbers for
-    the other symbols) for the report's region maps and phase portrait.
+    the other symbols, by their names in the file, or for symbols the pipeline adds, such
+    as the laws' ``Phi_1``, ``Psi_1`` and the sign symbols ``s_1``) for the report's region
+    maps and phase portrait.
 """
 
 from __future__ import annotations

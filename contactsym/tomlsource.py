@@ -12,6 +12,7 @@ import re
 import sys
 
 from .errors import SceneError
+from .parse import _short
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -27,13 +28,9 @@ class SceneFileError(SceneError):
     """A scene file that cannot be read: bad TOML, an unknown key, a missing table or a bad formula."""
 
 
-def _short(text: str, limit: int = 60) -> str:
-    return text if len(text) <= limit else text[: limit - 3] + "..."
-
-
 def shown(value) -> str:
     """A value as a message shows it: its repr, cut to 40 characters."""
-    return _short(repr(value), 40)
+    return _short(repr(value))
 
 
 class TomlSource:
