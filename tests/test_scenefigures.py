@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import json
 from pathlib import Path
 
@@ -19,6 +20,12 @@ matplotlib.use("Agg")
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
 
+@functools.cache
+def _brake():
+    """The brake example, read once for the tests that only read it (scenes are immutable)."""
+    return load_scene(EXAMPLES / "brake.toml")
+
+
 def _renamed(tmp_path: Path, example: str, name: str) -> Path:
     """An example file whose scene takes a built-in scene's name."""
     text = (EXAMPLES / f"{example}.toml").read_text()
@@ -28,7 +35,7 @@ def _renamed(tmp_path: Path, example: str, name: str) -> Path:
 
 
 def test_region_map_agrees_with_the_regions_at_sampled_points():
-    scene = load_scene(EXAMPLES / "brake.toml")
+    scene = _brake()
     data = region_map_data(scene, scene.figure_plan, resolution=30)
     grid = data.grids["stable for every law"]
     rng = np.random.default_rng(0)
@@ -37,26 +44,19 @@ def test_region_map_agrees_with_the_regions_at_sampled_points():
         assert bool(grid.mask[i, j]) == (mu <= abs(1 / np.tan(alpha)))  # (6.3), checked against the grid
 
 
-def test_own_scene_named_brake_gets_its_own_report(tmp_path, capsys):
-    path = _renamed(tmp_path, "brake", "brake")
+@pytest.mark.parametrize("name", ["brake", "painleve-klein-rod"])
+def test_own_scene_with_a_built_in_name_gets_its_own_report(tmp_path, name):
+    """Built from the sliding point's file: only the name is shared with the built-in."""
+    path = tmp_path / "own.toml"
+    path.write_text((EXAMPLES / "sliding-point.toml").read_text().replace('"sliding-point-file"', f'"{name}"'))
     assert main(["report", str(path), "--out", str(tmp_path / "out"), "--no-pdf"]) == 0
-    report = tmp_path / "out" / "brake"
+    report = tmp_path / "out" / name
     tex = (report / "report.tex").read_text()
     data = json.loads((report / "conditions.json").read_text())
     assert "Errata of the paper" not in tex and "special case" not in tex
-    assert sorted(p.name for p in (report / "figures").iterdir()) == ["regions.png"]
-    assert data["regions"]["stable for every law"]["paper"] == ["(4.4)"]  # not the brake's (6.3)
+    assert sorted(p.name for p in (report / "figures").iterdir()) == ["phase_portrait.png"]  # none of the built-in's
+    assert data["regions"]["stable for every law"]["paper"] == ["(3.2)"]  # Proposition 3, not the built-in's numbers
     assert cs.conditions(cs.scene("brake"))["regions"]["stable for every law"]["paper"] == ["(4.4)", "(6.3)"]
-
-
-def test_own_scene_named_like_the_rod_gets_no_rod_figures(tmp_path):
-    text = (EXAMPLES / "sliding-point.toml").read_text().replace('"sliding-point-file"', '"painleve-klein-rod"')
-    scene = cs.read_scene(text, "rod.toml")
-    assert scene.name == "painleve-klein-rod" and scene is not cs.scene("painleve-klein-rod")
-    result = cs.write_report(scene, tmp_path / "rod", pdf=False)
-    assert [f.path.name for f in result.figures] == ["phase_portrait.png"]  # the rod's are rod_f_cases, ...
-    assert all(f.path.parent == tmp_path / "rod" / "figures" and f.path.stat().st_size > 0 for f in result.figures)
-    assert "Errata of the paper" not in result.tex.read_text()
 
 
 def test_a_built_in_and_a_file_of_the_same_name_cannot_share_a_report(tmp_path, capsys):
@@ -97,7 +97,7 @@ def test_cli_reports_a_bad_file_in_one_line(tmp_path, capsys, text, where):
 def test_hopf_line_on_the_map_crosses_alpha_90_at_the_special_case_root():
     """At alpha = 90 deg, Phi_j = -4, Psi_j = -1, m = 1 the special case (6.4) is Psi^2 (mu^2 + 1) + Phi m mu^2 = 0:
     1 - 3 mu^2 = 0, mu = 1/sqrt(3); the map's Hopf curve, from the general condition, changes sign there."""
-    scene = load_scene(EXAMPLES / "brake.toml")
+    scene = _brake()
     data = region_map_data(scene, scene.figure_plan, resolution=121)
     X, Y, (field,) = data.curves["Hopf line"]
     column = np.argmin(abs(X[0] - np.pi / 2))
