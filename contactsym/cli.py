@@ -1,5 +1,8 @@
 """Command line.
 
+SCENE is a built-in scene's name or the path of a scene file (``my.toml``, see
+:mod:`contactsym.scenefile`).
+
 ``contactsym [show] [SCENE]``            the derivation chain of a scene, as text
 ``contactsym list``                      the built-in scenes
 ``contactsym conditions SCENE --format text|latex|json [--signs +1,-1]``
@@ -25,6 +28,9 @@ from pathlib import Path
 import sympy as sp
 
 from .errors import ContactsymError, SceneError, SignPatternError
+from .parse import ParseError
+from .scene import Scene
+from .scenefile import scene_or_file
 from .scenes import DEFAULT_SCENE, scene, scene_names
 
 __all__ = ["derivation_chain", "main"]
@@ -33,15 +39,15 @@ __all__ = ["derivation_chain", "main"]
 USAGE, FAILURE = 2, 1
 
 
-def derivation_chain(name: str) -> str:
-    """The derivation chain of a scene, as plain text, stage by stage.
+def derivation_chain(name) -> str:
+    """The derivation chain of a scene (a built-in name, a scene file or a Scene), as plain text.
 
     Examples
     --------
     >>> print(derivation_chain("sliding-point").splitlines()[0])
     scene sliding-point: (1.10)-(1.12): a point sliding on a rough line, Kelvin-Voigt contact
     """
-    s = scene(name)
+    s = name if isinstance(name, Scene) else scene_or_file(name)
     fast = s.fast_subsystem()
     lin = s.linearization()
     st = s.stability()
@@ -161,7 +167,7 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _parser() -> argparse.ArgumentParser:
-    names = ", ".join(scene_names())
+    names = ", ".join(scene_names()) + ", or a scene file (.toml)"
     parser = _Parser(prog="contactsym", description="Exact stability of frictional compliant contacts.")
     sub = parser.add_subparsers(dest="command", parser_class=_Parser)
     show = sub.add_parser("show", help="print the derivation chain of a scene")
@@ -189,7 +195,13 @@ def _report(names: list[str], out: str, pdf: bool) -> int:
     from .report import FigureSource, ReportError, conditions, summary_text, write_report
 
     names = names or scene_names()
-    scenes = [scene(name) for name in names]  # unknown names fail before any work
+    scenes = [scene_or_file(name) for name in names]  # unknown names and bad files fail before any work
+    seen: dict = {}
+    for name, s in zip(names, scenes):
+        if seen.setdefault(s.name, name) != name:
+            raise SceneError(
+                f"'{seen[s.name]}' and '{name}' are both named '{s.name}'; give one a different name in its [scene] table."
+            )
     root = Path(out)
     try:
         root.mkdir(parents=True, exist_ok=True)
@@ -224,7 +236,7 @@ def _report(names: list[str], out: str, pdf: bool) -> int:
 def _conditions(name: str, fmt: str, signs: str | None) -> int:
     from .report import conditions
 
-    s = scene(name)
+    s = scene_or_file(name)
     pattern = None if signs is None else s.check_signs(parse_signs(signs))
     data = conditions(s, pattern)
     if fmt == "json":
@@ -271,7 +283,7 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:  # the reader went away (contactsym ... | head): stop quietly
         _silence_stdout()
         return FAILURE
-    except (SceneError, SignPatternError) as error:
+    except (SceneError, SignPatternError, ParseError) as error:  # bad input: a name, a file, a formula
         print(f"contactsym: error: {error}", file=sys.stderr)
         return USAGE
     except ContactsymError as error:

@@ -54,6 +54,7 @@ from scipy.integrate import solve_ivp
 
 from .errors import ContactsymError
 from .laws import Compliance, Generic, KelvinVoigt, Law
+from .parse import sympy_only
 from .scene import t as _time
 
 __all__ = [
@@ -135,7 +136,7 @@ def _positive(value, name: str, why: str) -> float:
 
 
 def _plain_expr(scene, expr) -> sp.Expr:
-    return scene._plain(sp.sympify(expr))
+    return scene._plain(expr)
 
 
 @dataclass(frozen=True)
@@ -265,7 +266,7 @@ def substitute(expr, values: _Values) -> sp.Expr:
     >>> substitute(s.reduced_system().accelerations[x], v)
     -mu*Abs(Y(x, xdot))/2 + 3*x/2
     """
-    expr = sp.sympify(expr)
+    expr = sympy_only(expr, "the expression")
     for function, body in values.functions.items():
         expr = expr.replace(function, body)
     if isinstance(expr, sp.MatrixBase):
@@ -1719,7 +1720,7 @@ def certified_sign(expr, values: Mapping | None = None, *, band: float = 0.0) ->
     >>> certified_sign((x + y)**2 - x**2 - 2*x*y - y**2 - 1e-30, {x: 1e8, y: 1e-8})
     (-1, True)
     """
-    expr = sp.sympify(expr)
+    expr = sympy_only(expr, "the expression")
     env, exact = _environment(values or {})
     try:
         v, e, magnitude = _bounded(expr, env, {})
@@ -1736,6 +1737,8 @@ def certified_sign(expr, values: Mapping | None = None, *, band: float = 0.0) ->
 def decide(boolean, values: Mapping | None = None, *, band: float = 0.0) -> bool:
     """Truth of a SymPy Boolean of relationals at numeric values, never by float luck.
 
+    ``boolean`` is a SymPy object; text is refused, never evaluated.
+
     Examples
     --------
     >>> import sympy as sp
@@ -1745,7 +1748,7 @@ def decide(boolean, values: Mapping | None = None, *, band: float = 0.0) -> bool
     >>> decide(sp.And(x > 0, x**2 < 2), {x: 1.414213562373095})
     True
     """
-    boolean = sp.sympify(boolean)
+    boolean = sympy_only(boolean, "the condition")
     if boolean in (sp.true, True):
         return True
     if boolean in (sp.false, False):
@@ -1859,7 +1862,7 @@ class PointClassifier:
     Parameters
     ----------
     conditions : sequence of sympy expressions
-        Stable exactly when all are > 0 (e.g. ``Stability.hurwitz``).
+        Stable exactly when all are > 0 (e.g. ``Stability.hurwitz``); SymPy objects, not text.
     parameters : sequence of Symbol
         The order of the parameter arrays passed to :meth:`__call__`. Functions such as
         ``sin`` must act on expressions that are exact in floating point (a parameter,
@@ -1889,7 +1892,7 @@ class PointClassifier:
     def __init__(self, conditions: Sequence, parameters: Sequence[sp.Symbol], *, band: float = 1e-12):
         self.parameters = tuple(parameters)
         self.band = float(band)
-        self.conditions = [sp.sympify(c) for c in conditions]
+        self.conditions = [sympy_only(c, "a condition") for c in conditions]
         self.kept: list[sp.Expr] = []  # distinct factors of unknown sign
         self.uses: list[tuple[int, int, int]] = []  # (condition index, sign, position in kept)
         self.always_false: list[int] = []

@@ -18,6 +18,7 @@ from sympy.physics.mechanics import dynamicsymbols
 from .algebra import known_sign
 from .errors import SceneError, SignPatternError
 from .laws import Compliance, Coulomb, Generic, Viscous
+from .parse import sympy_only
 
 __all__ = ["Contact", "Scene", "t"]
 
@@ -61,6 +62,7 @@ class Contact:
     def __post_init__(self):
         if self.compliance is None:
             object.__setattr__(self, "compliance", Generic())
+        object.__setattr__(self, "coordinate", sympy_only(self.coordinate, "the gap of a contact"))
         if not isinstance(self.reaction, sp.Symbol):
             raise SceneError(f"the reaction of a contact must be a sympy Symbol, not {self.reaction!r}.")
 
@@ -101,7 +103,7 @@ def _check_eps(eps) -> sp.Expr:
     """eps is the small positive parameter of (1.6): a positive symbol or number."""
     if eps is None:
         return sp.Symbol("epsilon", positive=True)
-    eps = sp.sympify(eps)
+    eps = sympy_only(eps, "eps")
     if eps.is_positive:
         return eps
     if eps.is_positive is False:
@@ -121,7 +123,9 @@ class Scene:
     coordinates : sequence of dynamicsymbols
         The generalized coordinates q.
     accelerations : sequence of sympy expressions
-        q'' for each coordinate (1.4), in q, q', the reactions and parameters.
+        q'' for each coordinate (1.4), in q, q', the reactions and parameters. Every
+        expression given to contactsym is a SymPy object or a number: text is refused
+        (:func:`contactsym.parse_expression` reads a formula with declared names).
     contacts : sequence of Contact
     name, description : str
         For listings and reports.
@@ -175,10 +179,13 @@ class Scene:
         #: Lagrange's equations in contact-space parts (``mechanics.ContactSpace``), or None.
         self.contact_space = contact_space
         if accelerations is not None:
-            self.accelerations = dict(zip(self.coordinates, (sp.sympify(g) for g in accelerations)))
+            self.accelerations = dict(zip(self.coordinates, (sympy_only(g, "an acceleration") for g in accelerations)))
         self.eps = _check_eps(eps)
-        self.at = dict(at or {})
-        self.presentation = dict(presentation or {})
+        self.at = {sympy_only(k, "a key of at"): sympy_only(v, "a value of at") for k, v in (at or {}).items()}
+        self.presentation = {
+            sympy_only(k, "a presentation key"): sympy_only(v, "a presentation value")
+            for k, v in (presentation or {}).items()
+        }
         self._declared_positive = tuple(self._plain(e) for e in positive)
         #: The parameter that closed-form regions are solved for, where possible.
         self.solve_for = solve_for
@@ -205,7 +212,7 @@ class Scene:
         >>> cs.Scene.from_accelerations([x, y], [0, N - 1], [c]).accelerations[x]
         -mu*Abs(N)
         """
-        accelerations = [sp.sympify(g) for g in accelerations]
+        accelerations = [sympy_only(g, "an acceleration") for g in accelerations]
         if len(accelerations) != len(coordinates):
             raise SceneError(
                 f"got {len(accelerations)} accelerations for {len(coordinates)} coordinates; give one per coordinate."
@@ -240,6 +247,7 @@ class Scene:
         """
         from .mechanics import contact_space
 
+        lagrangian = sympy_only(lagrangian, "the Lagrangian")
         space = contact_space(lagrangian, coordinates, contacts, loads, frame)
         return cls(coordinates, None, contacts, contact_space=space, **options)
 
@@ -331,7 +339,7 @@ class Scene:
 
     def _plain(self, expr: sp.Expr) -> sp.Expr:
         rates = {d: s for d, s in self.frozen_symbols.items() if isinstance(d, sp.Derivative)}
-        return sp.sympify(expr).subs(rates).subs(self.frozen_symbols)
+        return sympy_only(expr, "the expression").subs(rates).subs(self.frozen_symbols)
 
     @cached_property
     def manifold(self) -> dict:
@@ -482,7 +490,7 @@ class Scene:
         """
         from .algebra import reduce_signs, sign_symbols
 
-        expr = sp.sympify(expr)
+        expr = sympy_only(expr, "the expression")
         presentation = self.presentation if presentation is None else presentation
         if not presentation or expr in (sp.true, sp.false):
             return expr
