@@ -111,9 +111,7 @@ def as_grid(grid, *, max_points: int | None = None, outputs: int = 1) -> Grid:
     if not isinstance(grid, Mapping):
         raise AtlasError(f"the grid must be a mapping {{parameter name: values}}, not {type(grid).__name__}.")
     if not grid:
-        raise AtlasError(
-            'the grid is empty; give {parameter name: values}, e.g. {"mu": numpy.linspace(0, 2, 50)}.'
-        )
+        raise AtlasError('the grid is empty; give {parameter name: values}, e.g. {"mu": numpy.linspace(0, 2, 50)}.')
     names = tuple(str(name) for name in grid)
     if len(set(names)) != len(names):
         raise AtlasError(f"the grid names a parameter twice: {list(names)}.")

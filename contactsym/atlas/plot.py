@@ -51,8 +51,9 @@ def _fixed_values(ds) -> dict:
         return {}
 
 
-def atlas_data(ds, variable: str | None = None, *, x: str | None = None, y: str | None = None, scene=None,
-               resolution: int = 300) -> AtlasData:
+def atlas_data(
+    ds, variable: str | None = None, *, x: str | None = None, y: str | None = None, scene=None, resolution: int = 300
+) -> AtlasData:
     """The data of :func:`atlas_plot`: one variable of ``ds`` and the scene's region boundaries.
 
     Regions whose symbols are not among the atlas's axes and fixed numeric values (e.g. the

@@ -165,7 +165,9 @@ def _strict(condition) -> list:
         elif isinstance(atom, sp.StrictLessThan):
             parts.append(atom.rhs - atom.lhs)
         else:
-            raise AtlasError(f"cannot count equilibria: the existence condition {condition} is not strict inequalities.")
+            raise AtlasError(
+                f"cannot count equilibria: the existence condition {condition} is not strict inequalities."
+            )
     return parts or [sp.S.One]
 
 
@@ -255,7 +257,9 @@ def _build_stable_fraction(scene, grid, values, laws=256, magnitudes=(0.1, 10.0)
         raise AtlasError(f"{taken} are sampled by stable_fraction; do not give them in the grid or values.")
     low, high = np.log10(magnitudes[0]), np.log10(magnitudes[1])
     samples = -(10.0 ** np.random.default_rng(seed).uniform(low, high, size=(int(laws), len(law_symbols))))
-    return _StableFraction(setup, _classifier(setup, scene.stability(signs).hurwitz, "the Hurwitz conditions (4.7)", law_symbols), samples)
+    return _StableFraction(
+        setup, _classifier(setup, scene.stability(signs).hurwitz, "the Hurwitz conditions (4.7)", law_symbols), samples
+    )
 
 
 class _EquilibriumCount(Kernel):
@@ -325,7 +329,9 @@ class _Catastrophe(_PerPoint):
 def _build_catastrophe(scene, grid, values, eps=None, span=None, initial=None, **options):
     if eps is None or span is None or initial is None:
         raise AtlasError("the catastrophe quantity needs eps, span and initial: catastrophe(eps, span, initial).")
-    return _Catastrophe(_prepared(scene, grid, values), grid, values, {"args": (eps, span, initial), "keywords": options})
+    return _Catastrophe(
+        _prepared(scene, grid, values), grid, values, {"args": (eps, span, initial), "keywords": options}
+    )
 
 
 class _Function(_PerPoint):

@@ -100,9 +100,9 @@ def _run_distributed(client, kernel, grid, chunk, todo, results, progress) -> No
     """Tasks on a cluster; a worker that dies takes no point with it: the scheduler reruns its tasks."""
     distributed = _require("distributed")
     run = uuid.uuid4().hex[:12]
-    futures = [
-        client.submit(_chunk, kernel, grid, chunk, i, key=f"atlas-chunk-{run}-{i}", retries=0) for i in todo
-    ]
+    # the kernel travels once to every worker (a copy each: a dying worker takes no copy others need)
+    shipped = client.scatter(kernel, broadcast=True, hash=False)
+    futures = [client.submit(_chunk, shipped, grid, chunk, i, key=f"atlas-chunk-{run}-{i}") for i in todo]
     if progress:
         distributed.progress(futures, notebook=False)  # blocks until done; the results are then collected below
     try:
@@ -111,7 +111,7 @@ def _run_distributed(client, kernel, grid, chunk, todo, results, progress) -> No
     except distributed.KilledWorker as error:
         raise AtlasError(f"a chunk of the sweep kept killing its workers and was given up: {error}") from None
     finally:
-        for future in futures:
+        for future in [*futures, shipped]:
             future.release()
 
 
@@ -128,6 +128,7 @@ def sweep(
     workers: int | None = None,
     progress: bool = False,
     max_points: int | None = None,
+    timeout: float = 10.0,
 ):
     """Measure ``quantity`` at every point of ``grid``: an ``xarray.Dataset`` labelled by the grid.
 
@@ -156,6 +157,8 @@ def sweep(
         Show Dask's progress bar.
     max_points : int, optional
         Refuse larger grids (default 10^9; also refused: results beyond half the memory).
+    timeout : float
+        Seconds to wait for a scheduler given by its address.
 
     Returns
     -------
@@ -184,7 +187,7 @@ def sweep(
     grid = as_grid(grid, max_points=max_points)
     if scheduler not in ("processes", "threads", "sync"):
         raise AtlasError(f"scheduler = {scheduler!r}; use 'processes', 'threads' or 'sync'.")
-    connection = connect(client) if client is not None else None  # an unreachable scheduler: before the work
+    connection = connect(client, timeout) if client is not None else None  # an unreachable scheduler: before the work
     try:
         kernel = chosen.build(scene, grid, values)  # the symbolic work, once, here
         chunk = _chunk_size(chunks, grid.size, kernel)
