@@ -94,14 +94,14 @@ def test_stable_fraction_is_one_exactly_where_every_law_is_stable():
     """1 on the closed-form region mu <= |cot alpha| (6.3); elsewhere the fraction of the same
     sampled laws whose eigenvalues all have negative real parts."""
     grid = {"alpha": np.linspace(0.3, 2.8, 5), "mu": [0.2, 0.9, 2.0]}
-    quantity = atlas.stable_fraction(laws=24, seed=3)
+    quantity = atlas.stable_fraction(laws=12, seed=3)
     ds = atlas.sweep("brake", quantity, grid, values={"m": 1})
     region = cs.scene("brake").regions()["stable for every law"]
     A, M = np.meshgrid(grid["alpha"], grid["mu"], indexing="ij")
     robust = region.evaluate(alpha=A, mu=M)
     assert robust.any() and (~robust).any()
     assert np.all(ds.stable_fraction.values[robust] == 1.0)
-    laws = -(10.0 ** np.random.default_rng(3).uniform(-1, 1, size=(24, 4)))
+    laws = -(10.0 ** np.random.default_rng(3).uniform(-1, 1, size=(12, 4)))
     brake = cs.scene("brake")
     for (i, j), alpha in np.ndenumerate(A):
         point = {"m": 1, "alpha": alpha, "mu": M[i, j]}
@@ -268,3 +268,32 @@ def test_unreachable_scheduler_is_one_line():
         atlas.sweep("brake", _never, {"mu": [1.0]}, client="tcp://127.0.0.1:9", timeout=0.5)
     assert str(error.value).startswith("cannot reach the Dask scheduler at tcp://127.0.0.1:9")
     assert "\n" not in str(error.value)
+
+
+# --- the command line -------------------------------------------------------------------------------
+
+
+def test_cli_writes_the_atlas_all_or_nothing(tmp_path, capsys):
+    import xarray as xr
+
+    from contactsym.cli import main
+
+    out = tmp_path / "atlas.nc"
+    grid = ["--grid", "alpha=0.3:2.8:4", "--grid", "mu=0.5,1.5"]
+    assert main(["atlas", "brake", "classification", *grid, "--set", "m=1", "--out", str(out)]) == 0
+    assert "wrote" in capsys.readouterr().out
+    written = xr.open_dataset(out, engine="scipy")
+    direct = atlas.sweep(
+        "brake", "classification", {"alpha": np.linspace(0.3, 2.8, 4), "mu": [0.5, 1.5]}, values={"m": 1}
+    )
+    assert np.array_equal(written.region.values, direct.region.values)
+    assert [p.name for p in tmp_path.iterdir()] == ["atlas.nc"]  # no temporary file left
+    assert main(["atlas", "brake", "cycle", "--grid", "mu=0:1"]) == 2
+    assert main(["atlas", "brake", "cycle", "--grid", "mu=1", "--out", str(tmp_path / "a.txt")]) == 2
+    assert main(["atlas", "brake", "classification", "--grid", "mu=-1,1", "--set", "alpha=1"]) == 1
+    errors = capsys.readouterr().err.splitlines()
+    assert errors == [
+        "contactsym: error: --grid mu=0:1: write NAME=START:STOP:COUNT or NAME=V1,V2,...",
+        f"contactsym: error: --out {tmp_path / 'a.txt'}: the atlas is written as NetCDF; give a file name ending in .nc.",
+        "contactsym: error: grid axis 'mu': mu = -1.0 must be > 0 (the symbol is declared positive).",
+    ]

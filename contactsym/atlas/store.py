@@ -51,7 +51,7 @@ class ZarrResults:
     """A Zarr checkpoint: opened (and checked) if it exists, created otherwise."""
 
     def __init__(self, path, size: int, outputs: tuple, chunk: int, token: str):
-        import zarr  # optional (contactsym[atlas]): only a checkpointed sweep needs it
+        import zarr  # optional (contactsym[atlas]): only a checkpointed sweep needs it; Zarr 2 and 3 both work
 
         self.path, self.outputs, self.chunk = Path(path), outputs, chunk
         n_chunks = -(-size // chunk)
@@ -59,7 +59,9 @@ class ZarrResults:
             try:
                 self.group = zarr.open_group(str(self.path), mode="r+")
             except Exception as error:  # noqa: BLE001 - any unreadable store gets the same advice
-                raise AtlasError(f"{self.path} exists and is not an atlas checkpoint ({error}); choose another path.")
+                raise AtlasError(
+                    f"{self.path} exists and is not an atlas checkpoint ({error}); choose another path."
+                ) from None
             found = self.group.attrs.get("fingerprint")
             if self.group.attrs.get("format") != _FORMAT or found != token:
                 raise AtlasError(
@@ -69,9 +71,9 @@ class ZarrResults:
         else:
             self.group = zarr.open_group(str(self.path), mode="w")
             for name in outputs:
-                self.group.create_array(f"value_{name}", shape=(size,), chunks=(chunk,), dtype="f8", fill_value=np.nan)
-            self.group.create_array("reason", shape=(size,), chunks=(chunk,), dtype=str, fill_value="")
-            self.group.create_array("done", shape=(n_chunks,), chunks=(1,), dtype=bool, fill_value=False)
+                self.group.full(name=f"value_{name}", shape=(size,), chunks=(chunk,), dtype="f8", fill_value=np.nan)
+            self.group.full(name="reason", shape=(size,), chunks=(chunk,), dtype=str, fill_value="")
+            self.group.full(name="done", shape=(n_chunks,), chunks=(1,), dtype=bool, fill_value=False)
             self.group.attrs.update({"format": _FORMAT, "fingerprint": token, "outputs": list(outputs)})
         self.done = np.asarray(self.group["done"][:], dtype=bool)
 
