@@ -49,7 +49,7 @@ def _nothing():
 def run(quick: bool, out) -> list[dict]:
     from distributed import Client, LocalCluster
 
-    count = 4 if quick else 16
+    count = 2 if quick else 16  # one point per worker in --quick: a cycle costs seconds
     grid = {"mu": np.linspace(1.2, 1.8, count), "Phi_1": [-2.5]}  # past the Hopf line (mu = 0.82 here)
     squeal = {"quantity": CYCLE, "grid": grid, "values": SQUEAL, "chunks": 1}
     cpu = time.process_time()
@@ -119,7 +119,8 @@ def _vectorised_and_overhead(client, per_point: float) -> list[dict]:
         f"here); on {NODES} nodes x {CORES_PER_NODE} workers with {CHUNK} points/task: compute "
         f"{compute / 60:.1f} min, Dask overhead {overhead * 1e3:.1f} ms/task -> "
         f"{points / CHUNK * overhead / workers:.2f} s per worker, scheduler {scheduling:.0f} s in all "
-        f"(hidden behind the compute when below it): about {max(compute, scheduling) / 60:.1f} min"
+        f"(hidden behind the compute when below it): about {max(compute, scheduling) / 60:.1f} min; "
+        f"chunks of {int(np.ceil(CHUNK * scheduling / compute))} points or more keep the scheduler below the compute"
     )
     print("  " + estimate, flush=True)
     records.append(record("atlas/dask-task-overhead", seconds, None, None, tasks, estimate))

@@ -16,6 +16,7 @@ from contactsym.atlas import AtlasError
 BRAKE_LAW = {"m": 1, "Phi_1": -2.0, "Phi_2": -2.0, "Psi_1": -1.0, "Psi_2": -1.0}
 SQUEAL = {"m": 1, "alpha": np.pi / 2, "F_x": 2, "F_y": -4, "Phi_1": -2.5, "Phi_2": -2.5, "Psi_1": -1, "Psi_2": -1}
 CYCLE = atlas.cycle(samples=256, tol=1e-6)
+ROD = {"phi": 0.785, "mu_1": 3, "mu_2": 0.5, "X_1": 0, "Y_1": 0, "Y_2": 0, "Phi": -1, "Psi": -1}
 
 
 def _eigenvalues(scene, point: dict) -> np.ndarray:
@@ -216,18 +217,21 @@ def cluster():
 
 
 def test_distributed_equals_local_bit_for_bit(cluster):
-    grid = {"alpha": np.linspace(0.3, 2.8, 7), "mu": np.linspace(0.2, 2.4, 9)}
-    quantity = atlas.stable_fraction(laws=32)
-    local = atlas.sweep("brake", quantity, grid, values={"m": 1}, chunks=10)
-    remote = atlas.sweep("brake", quantity, grid, values={"m": 1}, chunks=10, client=cluster)
+    grid = {"alpha": np.linspace(0.3, 2.8, 5), "mu": np.linspace(0.2, 2.4, 5)}
+    quantity = atlas.stable_fraction(laws=16)
+    local = atlas.sweep("brake", quantity, grid, values={"m": 1}, chunks=7)
+    remote = atlas.sweep("brake", quantity, grid, values={"m": 1}, chunks=7, client=cluster)
     assert remote.identical(local)
-    values = dict(SQUEAL)
-    del values["Phi_1"]
-    grid = {"Phi_1": [-2.0, -2.8], "mu": [1.0]}
-    local = atlas.sweep("brake", CYCLE, grid, values=values, chunks=1, scheduler="sync")
-    remote = atlas.sweep("brake", CYCLE, grid, values=values, chunks=1, client=cluster)
+    # a stiff full simulation per point (Radau): the rod pushed until the impact-type catastrophe
+    quantity = atlas.catastrophe(1e-3, (0, 1), {"x_1": 0, "xdot_1": 1})
+    grid = {"X_2": [-1.0, 2.0]}
+    local = atlas.sweep("painleve-klein-rod", quantity, grid, values=ROD, chunks=1, scheduler="sync")
+    remote = atlas.sweep("painleve-klein-rod", quantity, grid, values=ROD, chunks=1, client=cluster)
     assert remote.identical(local)
-    assert np.isfinite(remote.amplitude.values).any()
+    count = atlas.sweep("painleve-klein-rod", "equilibrium_count", grid, values=ROD)
+    # no catastrophe (inf) exactly where an equilibrium exists: two quantities, two derivations
+    assert np.array_equal(np.isinf(remote.time_to_catastrophe.values), count.equilibrium_count.values > 0)
+    assert np.isfinite(remote.time_to_catastrophe.values).any() and np.isinf(remote.time_to_catastrophe.values).any()
 
 
 def test_a_killed_worker_loses_no_point(cluster, tmp_path):
@@ -255,7 +259,7 @@ def test_resume_on_the_cluster(cluster, tmp_path):
     log.mkdir()
     quantity = atlas.function(_counting(log), outputs=["counted"])
     grid = {"mu": np.arange(1.0, 9.0)}
-    first = atlas.sweep("brake", quantity, grid, chunks=2, store=store, client=cluster)
+    first = atlas.sweep("brake", quantity, grid, chunks=2, store=store, client=cluster, progress=True)
     zarr.open_group(str(store), mode="r+")["done"][1:2] = False  # as if the sweep stopped before chunk 1 was written
     again = atlas.sweep("brake", quantity, grid, chunks=2, store=store, client=cluster)
     assert (again.points_resumed, again.points_computed) == (6, 2)

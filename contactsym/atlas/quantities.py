@@ -7,7 +7,7 @@ picklable object holding generated NumPy code (``numerics.lambdify_cse`` and
 expressions to re-derive. The simulated quantities (:func:`cycle`, :func:`catastrophe`)
 hold the scene with its derivation already done (fast subsystem, equilibria); their
 per-point cost is the integration, plus the substitution of the point's numbers into the
-derived system (a few per cent of it; see ``benchmarks/atlas.py``).
+derived system and its code generation (1.7 % of a brake cycle, measured with cProfile).
 """
 
 from __future__ import annotations
@@ -20,8 +20,11 @@ import sympy as sp
 
 from .. import numerics
 from .grid import AtlasError, Grid
+from .kernel import Kernel, Setup, setup_for
+from .pointwise import PointFailure, build_catastrophe, build_cycle, build_function
 
 __all__ = [
+    "PointFailure",
     "QUANTITIES",
     "Kernel",
     "Quantity",
@@ -34,49 +37,6 @@ __all__ = [
     "leading_eigenvalue",
     "stable_fraction",
 ]
-
-
-class PointFailure(Exception):
-    """A quantity has no value at a point (no cycle found, a failed integration)."""
-
-
-def _reason(error: BaseException) -> str:
-    text = str(error).strip().splitlines()[0] if str(error).strip() else ""
-    return f"{type(error).__name__}: {text}"[:300]
-
-
-class Kernel:
-    """Generated code for one quantity: ``kernel(points) -> (values, reasons)``.
-
-    ``points`` has one row per point and one column per grid axis; ``values`` one row per
-    point and one column per name in ``outputs``. A vectorised kernel evaluates a whole
-    chunk at once; where that fails it is evaluated point by point, so that a failure costs
-    only its own point: NaN, with the error as the point's reason.
-    """
-
-    outputs: tuple = ()
-    vectorised: bool = False
-
-    def evaluate(self, points: np.ndarray) -> np.ndarray:
-        raise NotImplementedError
-
-    def __call__(self, points: np.ndarray) -> tuple[np.ndarray, list[str]]:
-        n = len(points)
-        if self.vectorised:
-            try:
-                with np.errstate(all="ignore"):
-                    return np.asarray(self.evaluate(points), dtype=float).reshape(n, len(self.outputs)), [""] * n
-            except Exception:  # noqa: BLE001 - find the failing points one by one below
-                pass
-        values = np.full((n, len(self.outputs)), np.nan)
-        reasons = [""] * n
-        for i in range(n):
-            try:
-                with np.errstate(all="ignore"):
-                    values[i] = np.asarray(self.evaluate(points[i : i + 1]), dtype=float).reshape(-1)
-            except Exception as error:  # noqa: BLE001 - a failing point is NaN with its reason, never a crash
-                reasons[i] = _reason(error)
-        return values, reasons
 
 
 @dataclass(frozen=True)
@@ -96,57 +56,7 @@ class Quantity:
         return f"{self.name}{items}"
 
 
-# --- the numbers of a point --------------------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class _Setup:
-    """Grid symbols then fixed symbols, the fixed numbers, and the user's function values."""
-
-    symbols: tuple
-    fixed: tuple
-    functions: numerics._Values
-
-    def columns(self, points: np.ndarray) -> list[np.ndarray]:
-        n = len(points)
-        return [points[:, i] for i in range(points.shape[1])] + [np.full(n, v) for v in self.fixed]
-
-    def prepare(self, expr, what: str, extra=()) -> sp.Expr:
-        """The expression with the user's functions substituted; every other symbol is an argument."""
-        expr = numerics.substitute(expr, self.functions)
-        missing = sorted(map(str, expr.free_symbols - set(self.symbols) - set(extra)))
-        if missing:
-            raise AtlasError(f"{what} needs values for {missing}; give them in values= or in the grid.")
-        return expr
-
-
-def _grid_symbols(scene, grid: Grid) -> list:
-    symbols = []
-    for name, axis in zip(grid.names, grid.axes):
-        for end in (axis.min(), axis.max()):  # names and sign assumptions, checked at both ends
-            try:
-                (symbol,) = numerics.numeric_values(scene, {name: float(end)}).numbers
-            except numerics.NumericsError as error:
-                raise AtlasError(f"grid axis {name!r}: {error}") from None
-        symbols.append(symbol)
-    return symbols
-
-
-def _setup(scene, grid: Grid, values) -> _Setup:
-    vals = numerics.numeric_values(scene, values)
-    symbols = _grid_symbols(scene, grid)
-    both = sorted(str(s) for s in set(symbols) & set(vals.numbers))
-    if both:
-        raise AtlasError(f"{both} are both swept (grid) and fixed (values); give each in one place.")
-    fixed = [s for s in vals.numbers if s not in symbols]
-    return _Setup(
-        tuple(symbols) + tuple(fixed),
-        tuple(float(vals.numbers[s]) for s in fixed),
-        numerics._Values({}, vals.functions),
-    )
-
-
-def _classifier(setup: _Setup, conditions, what: str, extra=()) -> numerics.PointClassifier:
+def _classifier(setup: Setup, conditions, what: str, extra=()) -> numerics.PointClassifier:
     conditions = [setup.prepare(c, what, extra) for c in conditions]
     try:
         return numerics.PointClassifier(conditions, setup.symbols + tuple(extra))
@@ -178,7 +88,7 @@ class _LeadingEigenvalue(Kernel):
     outputs = ("leading_eigenvalue", "frequency")
     vectorised = True
 
-    def __init__(self, setup: _Setup, matrix: sp.Matrix):
+    def __init__(self, setup: Setup, matrix: sp.Matrix):
         self.setup, self.size = setup, matrix.rows
         self.function = numerics.lambdify_cse(setup.symbols, list(matrix))
 
@@ -192,7 +102,7 @@ class _LeadingEigenvalue(Kernel):
 
 
 def _build_leading_eigenvalue(scene, grid, values, signs=None):
-    setup = _setup(scene, grid, values)
+    setup = setup_for(scene, grid, values)
     matrix = setup.prepare(scene.linearization(signs).matrix, "the matrix (4.5)")
     return _LeadingEigenvalue(setup, matrix)
 
@@ -201,7 +111,7 @@ class _Classification(Kernel):
     outputs = ("region", "stable")
     vectorised = True
 
-    def __init__(self, setup: _Setup, robust: list, classifier):
+    def __init__(self, setup: Setup, robust: list, classifier):
         self.setup, self.classifier = setup, classifier
         self.function = numerics.lambdify_cse(setup.symbols, robust)
 
@@ -218,7 +128,7 @@ class _Classification(Kernel):
 
 
 def _build_classification(scene, grid, values, signs=None):
-    setup = _setup(scene, grid, values)
+    setup = setup_for(scene, grid, values)
     st = scene.stability(signs)
     robust = [st.robustly_stable, st.robustly_unstable, sp.false if st.law_dependent is None else st.law_dependent]
     robust = [setup.prepare(b, "the robust classification (Propositions 3-8)") for b in robust]
@@ -233,7 +143,7 @@ class _StableFraction(Kernel):
     outputs = ("stable_fraction",)
     vectorised = True
 
-    def __init__(self, setup: _Setup, classifier, laws: np.ndarray):
+    def __init__(self, setup: Setup, classifier, laws: np.ndarray):
         self.setup, self.classifier, self.laws = setup, classifier, laws
 
     def evaluate(self, points):
@@ -245,7 +155,7 @@ class _StableFraction(Kernel):
 
 
 def _build_stable_fraction(scene, grid, values, laws=256, magnitudes=(0.1, 10.0), seed=0, signs=None):
-    setup = _setup(scene, grid, values)
+    setup = setup_for(scene, grid, values)
     lin = scene.linearization(signs)
     law_symbols = tuple(lin.Phi) + tuple(lin.Psi)
     if not all(isinstance(s, sp.Symbol) and s.is_negative for s in law_symbols):
@@ -266,7 +176,7 @@ class _EquilibriumCount(Kernel):
     outputs = ("equilibrium_count",)
     vectorised = True
 
-    def __init__(self, setup: _Setup, classifiers: list):
+    def __init__(self, setup: Setup, classifiers: list):
         self.setup, self.classifiers = setup, classifiers
 
     def evaluate(self, points):
@@ -275,79 +185,9 @@ class _EquilibriumCount(Kernel):
 
 
 def _build_equilibrium_count(scene, grid, values):
-    setup = _setup(scene, grid, values)
+    setup = setup_for(scene, grid, values)
     what = "the existence conditions of the equilibria (4.2)"
     return _EquilibriumCount(setup, [_classifier(setup, _strict(b.condition), what) for b in scene.equilibria()])
-
-
-# --- simulated quantities, point by point -------------------------------------------------------
-
-
-class _PerPoint(Kernel):
-    def __init__(self, scene, grid: Grid, values, options: dict):
-        self.scene, self.names, self.values, self.options = scene, grid.names, dict(values or {}), options
-
-    def at(self, row) -> dict:
-        return {**self.values, **{name: float(x) for name, x in zip(self.names, row)}}
-
-    def evaluate(self, points):
-        return np.array([self.point(self.at(row)) for row in points], dtype=float)
-
-
-class _Cycle(_PerPoint):
-    outputs = ("amplitude", "omega")
-
-    def point(self, values):
-        found = numerics.fast_cycle(self.scene, values, **self.options)
-        if not found.converged:
-            raise PointFailure(found.message)
-        return [float(np.max(np.ptp(found.reactions, axis=1)) / 2), found.omega]
-
-
-def _prepared(scene, grid, values):
-    _setup(scene, grid, values)  # names and values checked before any work
-    scene.fast_subsystem(), scene.equilibria()  # derived once, here; the workers get them with the scene
-    return scene
-
-
-def _build_cycle(scene, grid, values, **options):
-    return _Cycle(_prepared(scene, grid, values), grid, values, options)
-
-
-class _Catastrophe(_PerPoint):
-    outputs = ("time_to_catastrophe",)
-
-    def point(self, values):
-        run = numerics.simulate_full(self.scene, values, *self.options["args"], **self.options["keywords"])
-        if run.status == "impact":
-            return [float(run.t[-1])]
-        if run.status == "ok":
-            return [np.inf]  # none within the span
-        raise PointFailure(run.message)
-
-
-def _build_catastrophe(scene, grid, values, eps=None, span=None, initial=None, **options):
-    if eps is None or span is None or initial is None:
-        raise AtlasError("the catastrophe quantity needs eps, span and initial: catastrophe(eps, span, initial).")
-    return _Catastrophe(
-        _prepared(scene, grid, values), grid, values, {"args": (eps, span, initial), "keywords": options}
-    )
-
-
-class _Function(_PerPoint):
-    def __init__(self, grid, values, fn, outputs):
-        super().__init__(None, grid, values, {})
-        self.fn, self.outputs = fn, tuple(outputs)
-
-    def point(self, values):
-        result = self.fn(values)
-        if isinstance(result, Mapping):
-            return [float(result[name]) for name in self.outputs]
-        return [float(x) for x in np.atleast_1d(result)]
-
-
-def _build_function(scene, grid, values, fn=None, outputs=None):
-    return _Function(grid, values, fn, outputs)
 
 
 # --- the public constructors ------------------------------------------------------------------
@@ -380,12 +220,12 @@ def equilibrium_count() -> Quantity:
 def cycle(**options) -> Quantity:
     """Amplitude (half the peak-to-peak of the reactions, largest over the contacts) and angular
     frequency (stretched time) of the stable cycle from :func:`contactsym.numerics.fast_cycle`."""
-    return Quantity("cycle", _build_cycle, options)
+    return Quantity("cycle", build_cycle, options)
 
 
 def catastrophe(eps, span, initial: Mapping, **options) -> Quantity:
     """Time to the impact-type catastrophe in :func:`contactsym.numerics.simulate_full` (inf: none in span)."""
-    return Quantity("catastrophe", _build_catastrophe, {"eps": eps, "span": tuple(span), "initial": initial, **options})
+    return Quantity("catastrophe", build_catastrophe, {"eps": eps, "span": tuple(span), "initial": initial, **options})
 
 
 def function(fn: Callable, outputs: Sequence[str] | None = None) -> Quantity:
@@ -393,7 +233,7 @@ def function(fn: Callable, outputs: Sequence[str] | None = None) -> Quantity:
     if not callable(fn):
         raise AtlasError(f"{fn!r} is not callable; give a function of a mapping of values.")
     names = tuple(outputs) if outputs is not None else (getattr(fn, "__name__", "value"),)
-    return Quantity(f"function {getattr(fn, '__qualname__', 'value')}", _build_function, {"fn": fn, "outputs": names})
+    return Quantity(f"function {getattr(fn, '__qualname__', 'value')}", build_function, {"fn": fn, "outputs": names})
 
 
 #: Built-in quantities by name, with their default options.

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import os
+import threading
 import uuid
 from pathlib import Path
 
@@ -103,11 +104,15 @@ def _run_distributed(client, kernel, grid, chunk, todo, results, progress) -> No
     # the kernel travels once to every worker (a copy each: a dying worker takes no copy others need)
     shipped = client.scatter(kernel, broadcast=True, hash=False)
     futures = [client.submit(_chunk, shipped, grid, chunk, i, key=f"atlas-chunk-{run}-{i}") for i in todo]
-    if progress:
-        distributed.progress(futures, notebook=False)  # blocks until done; the results are then collected below
+    bar = None
+    if progress:  # Dask's text progress bar blocks: it runs beside the loop that stores the chunks as they finish
+        bar = threading.Thread(target=distributed.progress, args=(futures,), kwargs={"notebook": False}, daemon=True)
+        bar.start()
     try:
         for future in distributed.as_completed(futures):
             results.write(*future.result())
+        if bar is not None:
+            bar.join(timeout=5)
     except distributed.KilledWorker as error:
         raise AtlasError(f"a chunk of the sweep kept killing its workers and was given up: {error}") from None
     finally:
