@@ -72,7 +72,8 @@ def run(quick: bool, out) -> list[dict]:
     for workers in (1, 2):
         with LocalCluster(n_workers=workers, threads_per_worker=1, dashboard_address=None, silence_logs=50) as c:
             with Client(c) as client:
-                atlas.sweep("brake", _nothing(), {"mu": [1.0, 2.0]}, client=client)  # warm the workers: imports
+                warm = {"mu": [1.3, 1.5], "Phi_1": [-2.5]}  # one cycle per worker first: imports, code, caches
+                atlas.sweep("brake", CYCLE, warm, values=SQUEAL, chunks=1, client=client)
                 seconds, ds = _timed(client=client, **squeal)
                 throughput[workers] = count / seconds
                 records.append(

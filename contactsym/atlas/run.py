@@ -8,16 +8,17 @@ written as the chunks finish (memory or a Zarr checkpoint), on the calling machi
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import threading
 import uuid
-from pathlib import Path
 
 import numpy as np
 
 from .grid import AtlasError, Grid, as_grid
-from .quantities import Kernel, as_quantity
+from .kernel import Kernel
+from .quantities import as_quantity
 from .store import MemoryResults, ZarrResults, fingerprint
 
 __all__ = ["sweep"]
@@ -74,12 +75,8 @@ def _run_local(kernel, grid, chunk, todo, results, scheduler, workers, progress)
                 results.write(*result)
 
     tasks = [dask.delayed(_chunk, pure=False)(kernel, grid, chunk, i, dask_key_name=f"atlas-chunk-{i}") for i in todo]
-    with Writer():
-        if progress:
-            with ProgressBar():
-                dask.compute(*tasks, scheduler=scheduler, num_workers=workers)
-        else:
-            dask.compute(*tasks, scheduler=scheduler, num_workers=workers)
+    with Writer(), ProgressBar() if progress else contextlib.nullcontext():
+        dask.compute(*tasks, scheduler=scheduler, num_workers=workers)
 
 
 def connect(client, timeout: float = 10.0):
@@ -87,10 +84,10 @@ def connect(client, timeout: float = 10.0):
     distributed = _require("distributed")
     if isinstance(client, distributed.Client):
         return client, False
-    if isinstance(client, (str, Path)) or hasattr(client, "scheduler_address"):
+    if isinstance(client, str) or hasattr(client, "scheduler_address"):  # an address, or a cluster object
         address = getattr(client, "scheduler_address", client)
         try:
-            return distributed.Client(client if not isinstance(client, Path) else str(client), timeout=timeout), True
+            return distributed.Client(client, timeout=timeout), True
         except (OSError, TimeoutError, ValueError) as error:
             reason = str(error).strip().splitlines()[0] if str(error).strip() else type(error).__name__
             raise AtlasError(f"cannot reach the Dask scheduler at {address}: {reason}") from None
