@@ -91,6 +91,22 @@ def test_leading_eigenvalue_against_sympy_substitution(mus, alpha, phi):
         assert frequency == pytest.approx(abs(top.imag), abs=1e-9)
 
 
+@pytest.mark.parametrize("signs", [(1, -1), (-1, -1)])
+def test_guides_leading_eigenvalue_against_sympy_substitution(signs):
+    """Another scene (k = 2, a 4 x 4 matrix (4.5)), sign patterns, random laws on the grid."""
+    guides = cs.scene("painleve-klein-guides")
+    rng = np.random.default_rng(7)
+    grid = {"mu_1": [0.1, 0.8, 2.5], "Phi_1": -rng.uniform(0.05, 5, 3), "Psi_2": -rng.uniform(0.05, 5, 2)}
+    values = {"phi": 0.6, "mu_2": 0.7, "Phi_2": -1.3, "Psi_1": -0.4}
+    ds = atlas.sweep(guides, atlas.leading_eigenvalue(signs=signs), grid, values=values)
+    matrix = guides.linearization(signs).matrix
+    by_name = {str(s): s for s in matrix.free_symbols}
+    for index, leading in np.ndenumerate(ds.leading_eigenvalue.values):
+        point = values | {name: grid[name][i] for name, i in zip(grid, index)}
+        numeric = matrix.xreplace({by_name[k]: sp.Float(v) for k, v in point.items()}).evalf()
+        assert leading == pytest.approx(np.linalg.eigvals(np.array(numeric, dtype=float)).real.max(), abs=1e-9)
+
+
 def test_stable_fraction_is_one_exactly_where_every_law_is_stable():
     """1 on the closed-form region mu <= |cot alpha| (6.3); elsewhere the fraction of the same
     sampled laws whose eigenvalues all have negative real parts."""
