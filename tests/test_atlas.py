@@ -1,7 +1,6 @@
 """contactsym.atlas: sweeps checked against independent computations, on a real 2-worker LocalCluster."""
 
 import os
-import sys
 
 import numpy as np
 import pytest
