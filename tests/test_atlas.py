@@ -189,6 +189,27 @@ def test_cycle_amplitude_is_born_past_the_hopf_line():
     assert ds.amplitude.values[1] > 0.1 and ds.omega.values[1] > 0 and ds.reason.values[1] == ""
 
 
+def test_plot_the_closed_form_hopf_line_falls_where_the_atlas_changes_sign():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    values = {k: v for k, v in SQUEAL.items() if not k.startswith("F_")}
+    ds = atlas.sweep("brake", "leading_eigenvalue", {"mu": np.linspace(0.3, 1.6, 27)}, values=values)
+    data = atlas.atlas_data(ds, "leading_eigenvalue", resolution=2001)
+    (field,) = data.boundaries["Hopf line"][1]
+    xs, le = data.fine[0], ds.leading_eigenvalue.values
+    line = xs[np.nonzero(np.diff(np.sign(field)))[0]]
+    change = ds.mu.values[np.nonzero(np.diff(np.sign(le)))[0]]
+    assert len(line) == len(change) == 1 and change[0] <= line[0] <= change[0] + 0.05
+    fig, ax = plt.subplots()
+    artists = atlas.atlas_plot(data, ax=ax)
+    assert len(ax.lines) == 1 + 1 + 1  # the atlas, the Hopf line at the sign change, its legend entry
+    assert artists and ax.get_legend() is not None
+    plt.close(fig)
+
+
 # --- checkpoint and resume ------------------------------------------------------------------------
 
 

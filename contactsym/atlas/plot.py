@@ -134,14 +134,17 @@ def atlas_plot(data, ax=None, *, variable: str | None = None, legend: bool = Tru
     else:
         mesh = ax.pcolormesh(data.xs, data.ys, np.ma.masked_invalid(data.values), shading="nearest", cmap="viridis")
         artists += [mesh, ax.figure.colorbar(mesh, ax=ax, label=data.variable)]
+    drawn = False
     for colour, (name, (latex, fields)) in zip(_COLOURS, data.boundaries.items()):
-        artists += _boundaries(ax, data, fields, colour)
-        (proxy,) = ax.plot([], [], "-", color=colour, lw=1.5, label=f"{name}: ${latex}$")
-        artists.append(proxy)
+        lines = _boundaries(ax, data, fields, colour)
+        if lines:  # a legend entry only for a boundary that passes through the atlas
+            (proxy,) = ax.plot([], [], "-", color=colour, lw=1.5, label=f"{name}: ${latex}$")
+            artists += [*lines, proxy]
+            drawn = True
     ax.set_xlabel(data.x)
     ax.set_ylabel(data.y or data.variable)
     ax.set_title(data.title, fontsize=10)
-    if legend and data.boundaries:
+    if legend and drawn:
         artists.append(ax.legend(fontsize=7, loc="best", framealpha=0.9))
     return artists
 

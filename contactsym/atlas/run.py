@@ -166,8 +166,8 @@ def sweep(
     -------
     xarray.Dataset
         One variable per output of the quantity, ``reason`` (why a point is NaN; empty
-        where it has a value), and attributes ``scene``, ``quantity``, ``values``,
-        ``points_computed`` and ``points_resumed``.
+        where it has a value), and attributes ``scene``, ``quantity``, ``fixed`` (the fixed
+        numbers, JSON), ``points_computed`` and ``points_resumed``.
 
     Examples
     --------
