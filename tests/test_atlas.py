@@ -248,8 +248,11 @@ def test_a_resumed_sweep_recomputes_nothing_stored(tmp_path):
 # --- a real LocalCluster with 2 worker processes ----------------------------------------------------
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture(scope="module", autouse=True)
 def cluster():
+    """Started with the module: its workers import contactsym while the local tests above run."""
+    import importlib
+
     import distributed  # in the test extra: this test runs in CI, it is never skipped
 
     with (
@@ -258,6 +261,9 @@ def cluster():
         ) as local,
         distributed.Client(local) as client,
     ):
+        for address in client.scheduler_info()["workers"]:
+            warm = client.submit(importlib.import_module, "contactsym.atlas", workers=[address], pure=False)
+            distributed.fire_and_forget(warm)
         yield client
 
 
@@ -279,7 +285,23 @@ def test_distributed_equals_local_bit_for_bit(cluster):
     assert np.isfinite(remote.time_to_catastrophe.values).any() and np.isinf(remote.time_to_catastrophe.values).any()
 
 
+def test_resume_on_the_cluster(cluster, tmp_path):
+    import zarr
+
+    store, log = tmp_path / "atlas.zarr", tmp_path / "calls"
+    log.mkdir()
+    quantity = atlas.function(_counting(log), outputs=["counted"])
+    grid = {"mu": np.arange(1.0, 9.0)}
+    first = atlas.sweep("brake", quantity, grid, chunks=2, store=store, client=cluster, progress=True)
+    zarr.open_group(str(store), mode="r+")["done"][1:2] = False  # as if the sweep stopped before chunk 1 was written
+    again = atlas.sweep("brake", quantity, grid, chunks=2, store=store, client=cluster)
+    assert (again.points_resumed, again.points_computed) == (6, 2)
+    assert len(list(log.iterdir())) == 8 + 2
+    assert again.identical(first.assign_attrs(points_resumed=6, points_computed=2))
+
+
 def test_a_killed_worker_loses_no_point(cluster, tmp_path):
+    # last on the cluster: the worker that dies comes back cold (its imports again)
     marker = tmp_path / "killed"
 
     def fragile(values):
@@ -295,21 +317,6 @@ def test_a_killed_worker_loses_no_point(cluster, tmp_path):
     assert marker.exists()
     assert ds.fragile.values.tolist() == (np.arange(1.0, 21.0) ** 2).tolist()
     assert (ds.reason.values == "").all()
-
-
-def test_resume_on_the_cluster(cluster, tmp_path):
-    import zarr
-
-    store, log = tmp_path / "atlas.zarr", tmp_path / "calls"
-    log.mkdir()
-    quantity = atlas.function(_counting(log), outputs=["counted"])
-    grid = {"mu": np.arange(1.0, 9.0)}
-    first = atlas.sweep("brake", quantity, grid, chunks=2, store=store, client=cluster, progress=True)
-    zarr.open_group(str(store), mode="r+")["done"][1:2] = False  # as if the sweep stopped before chunk 1 was written
-    again = atlas.sweep("brake", quantity, grid, chunks=2, store=store, client=cluster)
-    assert (again.points_resumed, again.points_computed) == (6, 2)
-    assert len(list(log.iterdir())) == 8 + 2
-    assert again.identical(first.assign_attrs(points_resumed=6, points_computed=2))
 
 
 def test_unreachable_scheduler_is_one_line():

@@ -184,11 +184,11 @@ def sweep(
     xr = _require("xarray")  # checked first: nothing starts without the container of the results
     from ..scenes import scene as scene_by_name
 
-    scene = scene_by_name(scene) if isinstance(scene, str) else scene
     chosen = as_quantity(quantity)
     grid = as_grid(grid, max_points=max_points)
     if scheduler not in ("processes", "threads", "sync"):
         raise AtlasError(f"scheduler = {scheduler!r}; use 'processes', 'threads' or 'sync'.")
+    scene = scene_by_name(scene) if isinstance(scene, str) else scene  # built after the cheap checks
     connection = connect(client, timeout) if client is not None else None  # an unreachable scheduler: before the work
     try:
         kernel = chosen.build(scene, grid, values)  # the symbolic work, once, here
