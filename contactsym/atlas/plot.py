@@ -79,12 +79,14 @@ def atlas_data(
     if len(dims) not in (1, 2):
         raise AtlasError(f"{variable} has {len(dims)} axes {dims}; select one or two (ds.sel / ds.isel) to plot.")
     x = x or dims[0]
-    y = y or (dims[1] if len(dims) == 2 and dims[1] != x else (dims[0] if len(dims) == 2 else None))
+    if y is None and len(dims) == 2:
+        y = next(d for d in dims if d != x)
     values = ds[variable].transpose(*([y, x] if y else [x])).values.astype(float)
     xs = ds[x].values.astype(float)
     ys = ds[y].values.astype(float) if y else None
     scene = scene_by_name(ds.attrs["scene"]) if scene is None else scene
-    known = {**_fixed_values(ds), x: None, **({y: None} if y else {})}
+    cut = {str(c): float(ds[c]) for c in ds.coords if ds[c].ndim == 0}  # an axis fixed by ds.sel(...)
+    known = {**_fixed_values(ds), **cut, x: None, **({y: None} if y else {})}
     fine_x = np.linspace(xs.min(), xs.max(), resolution)
     if y:
         fine = np.meshgrid(fine_x, np.linspace(ys.min(), ys.max(), resolution))
