@@ -19,7 +19,7 @@ from .grid import AtlasError
 __all__ = ["AtlasData", "atlas_data", "atlas_plot"]
 
 #: Colours of the region boundaries, in the order of ``scene.regions()``.
-_COLOURS = ("black", "tab:red", "tab:purple", "tab:green", "tab:orange")
+_COLOURS = ("black", "tab:red", "magenta", "tab:orange", "tab:cyan")
 _REGION_LABELS = {1.0: "stable for every law", -1.0: "unstable for every law", 0.0: "law-dependent"}
 
 
@@ -140,7 +140,8 @@ def atlas_plot(data, ax=None, *, variable: str | None = None, legend: bool = Tru
     for colour, (name, (latex, fields)) in zip(_COLOURS, data.boundaries.items()):
         lines = _boundaries(ax, data, fields, colour)
         if lines:  # a legend entry only for a boundary that passes through the atlas
-            (proxy,) = ax.plot([], [], "-", color=colour, lw=1.5, label=f"{name}: ${latex}$")
+            label = f"{name}: ${latex}$" if len(latex) <= 80 else name  # a long closed form would hide the plot
+            (proxy,) = ax.plot([], [], "-", color=colour, lw=1.5, label=label)
             artists += [*lines, proxy]
             drawn = True
     ax.set_xlabel(data.x)
