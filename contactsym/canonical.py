@@ -236,7 +236,7 @@ def _fourier_terms(poly, pairs) -> dict:
     of two (kept as integer pairs, one common denominator: exact and fast), and the frequencies
     k and -k pair into a cosine and a sine of k.q.
     """
-    ring, domain = poly.ring, poly.ring.domain
+    domain = poly.ring.domain
     trig = {i for pair in pairs for i in pair}
     terms_in = poly.terms()
     top = max(sum(monom[i] for i in trig) for monom, _ in terms_in)

@@ -9,6 +9,8 @@ SCENE is a built-in scene's name or the path of a scene file (``my.toml``, see
 ``contactsym report [SCENE ...] --out DIR [--no-pdf]``
                                          a LaTeX/PDF report per scene, figures and conditions.json
 ``contactsym bench [--quick] [--json FILE]`` the benchmarks (from a source checkout)
+``contactsym atlas SCENE QUANTITY --grid NAME=START:STOP:COUNT [--scheduler ADDRESS] [--out FILE.nc]``
+                                         a parameter sweep (contactsym[atlas]; see contactsym.atlas)
 
 Errors print one line to stderr and give a non-zero exit code: 2 for a bad command
 line (an unknown scene, a bad option), 1 for a failure while working (an unwritable
@@ -184,6 +186,9 @@ def _parser() -> argparse.ArgumentParser:
     bench = sub.add_parser("bench", help="run the benchmarks (source checkout); table and plots in benchmarks/results")
     bench.add_argument("--quick", action="store_true", help="smaller sweeps, under 3 minutes")
     bench.add_argument("--json", metavar="FILE", help="write the records as a JSON list to FILE")
+    from .atlas.cli import add_atlas_command  # the atlas imports Dask and xarray only when it runs
+
+    add_atlas_command(sub)
     return parser
 
 
@@ -308,6 +313,10 @@ def _run(args) -> int:
         return _conditions(args.scene, args.format, args.signs)
     if args.command == "bench":
         return _bench(args.quick, args.json)
+    if args.command == "atlas":
+        from .atlas.cli import run_atlas
+
+        return run_atlas(args)
     print(derivation_chain(getattr(args, "scene", DEFAULT_SCENE)))
     return 0
 

@@ -1911,7 +1911,19 @@ class PointClassifier:
         code = [tuple(_through_tan(g) for g in p) for p in self.parts]
         self.gammas = [_gamma(max(_roundings(g) for g in p) + 3) for p in code]
         self._function = lambdify_cse(self.parameters, [g for p in code for g in p])
-        self._mp_function = [sp.lambdify(self.parameters, list(p), modules="mpmath") for p in self.parts]
+        self._mp_function = self._mp_functions()
+
+    def _mp_functions(self) -> list:
+        return [sp.lambdify(self.parameters, list(p), modules="mpmath") for p in self.parts]
+
+    def __getstate__(self) -> dict:
+        # code generated for mpmath holds mpmath's context, which does not pickle (a Dask
+        # worker receives the classifier by value): it is generated again when first needed
+        return {k: v for k, v in self.__dict__.items() if k != "_mp_function"}
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self._mp_function = None
 
     @staticmethod
     def _reduce(condition: sp.Expr) -> tuple[int, list]:
@@ -2000,6 +2012,8 @@ class PointClassifier:
         """Sign of a kept factor in 256-bit arithmetic from the exact binary inputs, or None."""
         import mpmath
 
+        if self._mp_function is None:  # unpickled: see __getstate__
+            self._mp_function = self._mp_functions()
         with mpmath.workprec(256):
             P, M, *rest = self._mp_function[position](*[mpmath.mpf(x) for x in point])
             U, Ua = rest or (0, 0)
