@@ -925,7 +925,8 @@ class FigureSource:
         plotting, note = self._plotting()
         if plotting is None:
             return [], [note]
-        if paper_name(scene) is None:  # any other scene: the figures its plan asks for, in a directory of its own
+        if paper_name(scene) is None or getattr(scene, "figure_plan", None) is not None:
+            # any other scene, or a built-in one beyond the paper: the figures its plan asks for
             from .scenefigures import plan_figures
 
             self._own += 1
