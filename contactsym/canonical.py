@@ -309,9 +309,15 @@ def _negative_first(k: tuple) -> bool:
     return first < 0
 
 
+#: Polynomials with more terms than this are shown as they are, not converted to Fourier sums.
+_FOURIER_LIMIT = 400
+
+
 def _best_form(poly, pairs) -> sp.Expr:
     """The polynomial in sin q_i, cos q_i, or its Fourier sum when that has fewer terms."""
     if not pairs or not any(poly.degree(c) > 0 or poly.degree(s) > 0 for c, s in pairs):
+        return poly.as_expr()
+    if len(poly) > _FOURIER_LIMIT:  # a form nobody reads whole: not worth the conversion
         return poly.as_expr()
     terms = _fourier_terms(poly, pairs)
     count = sum(bool(a) + bool(b) for a, b in terms.values())
@@ -342,8 +348,14 @@ class TrigField:
 
     def element(self, expr: sp.Expr):
         """``expr`` as a reduced element of the field."""
-        numer, denom = sp.fraction(sp.together(_expand_angles(sympy_only(expr, "the expression"))))
-        return self.reduce(self.field.new(self.ring.from_expr(numer), self.ring.from_expr(denom)))
+        expr = _expand_angles(sympy_only(expr, "the expression"))
+        numer, denom = sp.fraction(expr)
+        try:  # already one fraction of polynomials (a presented form): no together needed
+            parts = self.ring.from_expr(numer), self.ring.from_expr(denom)
+        except (ValueError, sp.polys.polyerrors.CoercionFailed):
+            numer, denom = sp.fraction(sp.together(expr))
+            parts = self.ring.from_expr(numer), self.ring.from_expr(denom)
+        return self.reduce(self.field.new(*parts))
 
     def substituted(self, expr: sp.Expr, values: dict):
         """``expr`` with generators replaced by field elements (``values``), reduced."""
