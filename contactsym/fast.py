@@ -8,6 +8,7 @@ deformations and their rates set to zero, the slow state frozen and N = u.
 
 from __future__ import annotations
 
+import logging
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -18,6 +19,9 @@ from .errors import SceneError
 from .scene import t
 
 __all__ = ["FastSubsystem", "switching_functions", "on_piece"]
+
+#: Stage messages for long derivations: ``logging.basicConfig(level=logging.INFO)`` shows them.
+log = logging.getLogger("contactsym")
 
 
 def _canonical(arg: sp.Expr, u) -> tuple[sp.Expr, int]:
@@ -82,6 +86,14 @@ def contact_accelerations(scene, u) -> list[sp.Expr]:
     from .mechanics import solve_fraction_free
 
     space, freeze = scene.contact_space, scene.freeze
+    log.info(
+        "scene '%s': contact space, adj(M) of the %d x %d mass matrix and the %d x %d Delassus matrix",
+        scene.name,
+        space.M.rows,
+        space.M.rows,
+        scene.k,
+        scene.k,
+    )
     to_u = dict(zip(scene.reactions, u))
     # positions are put on the manifold by substitution, rates inside the field (they are rational)
     rate_symbols = {scene.frozen_symbols[sp.diff(q, t)] for q in scene.coordinates}

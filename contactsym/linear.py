@@ -11,6 +11,7 @@ characteristic polynomial needs only the principal minors of A:
 from __future__ import annotations
 
 import itertools
+import logging
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -21,6 +22,8 @@ from .canonical import to_fraction
 
 __all__ = ["lam", "charpoly", "principal_minors", "Linearization"]
 
+
+log = logging.getLogger("contactsym")
 
 #: The eigenvalue variable of characteristic polynomials.
 lam = sp.Symbol("lambda")
@@ -138,6 +141,9 @@ class Linearization:
 
     @cached_property
     def charpoly(self) -> sp.Poly:
+        log.info(
+            "scene '%s': characteristic polynomial (4.6) from %d principal minors", self.scene.name, 2**self.A.rows
+        )
         return charpoly(self.A, self.Phi, self.Psi, self.scene.positive_expressions)
 
     def _repr_latex_(self) -> str:

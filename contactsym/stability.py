@@ -15,6 +15,7 @@ paper:
 
 from __future__ import annotations
 
+import logging
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -80,6 +81,7 @@ class Stability:
 
     @cached_property
     def hurwitz(self) -> list[sp.Expr]:
+        logging.getLogger("contactsym").info("Hurwitz conditions (4.7) of a degree-%d polynomial", 2 * self.k)
         return self.poly.conditions
 
     @cached_property
