@@ -105,10 +105,6 @@ class Fraction:
         self.numer, self.denom = numer, denom
         self.pairs, self.signs = pairs, signs
 
-    @property
-    def ring(self):
-        return self.numer.ring
-
     def as_expr(self) -> sp.Expr:
         """The presented expression (see the module docstring)."""
         monomial, rest = _split_monomial(self.denom)
@@ -152,6 +148,8 @@ class Fraction:
 def present_factor(poly, pairs) -> tuple[sp.Expr, sp.Rational]:
     """(form, c) with poly = c * form; form in its shorter presentation with integer,
     coprime coefficients and a fixed sign, so one polynomial always reads the same."""
+    if not poly:
+        return sp.S.Zero, sp.S.One
     form = sp.expand(_best_form(poly, pairs))
     terms = sp.Add.make_args(form)
     coefficients = [t.as_coeff_Mul()[0] for t in terms]
