@@ -278,7 +278,8 @@ def decide(A, laws: int = 300, seed: int = 0) -> Robustness:
     lp = LawPolynomials(_numeric_matrix(A))
     k = lp.k
     if lp.minors[tuple(range(k))] == 0:
-        return Robustness("undecided", notes=("det A = 0: the equilibrium is not isolated",))
+        statement = "det A = 0, so p_0 = 0 and lambda = 0 is an eigenvalue of (4.5) for every law"
+        return Robustness("unstable", Certificate("unstable", "det A = 0", statement))
     Af = np.array(lp.A.evalf().tolist(), dtype=float)
     conditions = lp.conditions(expand_minors=False)
     certificate = _coefficient_certificate(lp, conditions)
