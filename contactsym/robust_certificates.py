@@ -57,11 +57,10 @@ def amgm_certificate(g) -> str | None:
     if not negative:
         return "coefficients"
     pairs = {b: [] for b in negative}
-    for a1, a2 in itertools.combinations(positive, 2):
-        total = tuple(x + y for x, y in zip(a1, a2))
-        if all(t % 2 == 0 for t in total):
-            b = tuple(t // 2 for t in total)
-            if b in pairs:
+    for b in negative:
+        for a1 in positive:
+            a2 = tuple(2 * x - y for x, y in zip(b, a1))
+            if a2 in positive and a1 < a2:
                 pairs[b].append((a1, a2))
     uses = {a: 0 for a in positive}
     for found in pairs.values():
@@ -91,13 +90,14 @@ def _vertex_direction(b, others) -> np.ndarray | None:
     return w if (differences @ w >= 1).all() else None
 
 
-def vertex_laws(lp, conditions, per_condition: int = 2) -> list[tuple[list, list]]:
-    """Laws t^w on which a negative vertex coefficient of a condition dominates (P3)."""
+def vertex_laws(lp, conditions, per_condition: int = 2, tries: int = 12) -> list[tuple[list, list]]:
+    """Laws t^w on which a negative vertex coefficient of a condition dominates (P3); at most
+    ``tries`` negative terms per condition, largest first."""
     laws = []
     for g in conditions:
         if g is None:
             continue
-        negative = [e for e, v in g.items() if v < 0]
+        negative = sorted((e for e, v in g.items() if v < 0), key=lambda e: g[e])[:tries]
         found = 0
         for b in negative:
             w = _vertex_direction(b, [a for a in g if a != b])

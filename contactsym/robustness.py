@@ -72,6 +72,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import sympy as sp
+from scipy.optimize import minimize
 from sympy.polys.domains import QQ
 
 from .errors import ContactsymError
@@ -206,6 +207,27 @@ def _sampled(Af: np.ndarray, count: int, seed: int) -> tuple[list, list]:
     return stable, unstable
 
 
+def _climbed(Af: np.ndarray, sign: float, seed: int, starts: int = 3) -> list:
+    """Rational laws found by Nelder-Mead on log(c, d) maximising sign * abscissa, from the best of
+    wide log-uniform samples (1e-6..1e6): the rare unstable (stable) laws sampling misses."""
+    k = Af.shape[0]
+    rng = np.random.default_rng(seed + 1)
+    x = rng.uniform(-6, 6, (4000, 2 * k))
+    top = sign * fast_spectral_abscissa(Af, 10.0 ** x[:, :k], 10.0 ** x[:, k:])
+    found = []
+    for start in x[np.argsort(-top)[:starts]]:
+
+        def objective(y):
+            y = np.clip(y, -8, 8)
+            return -sign * fast_spectral_abscissa(Af, 10.0 ** y[None, :k], 10.0 ** y[None, k:])[0]
+
+        best = minimize(objective, start, method="Nelder-Mead", options={"maxfev": 300, "xatol": 1e-3})
+        y = np.clip(best.x, -8, 8)
+        if -best.fun > 0:
+            found.append(rational_law(10.0 ** y[:k], 10.0 ** y[k:]))
+    return found
+
+
 # --- certificates ------------------------------------------------------------------------
 
 
@@ -291,11 +313,16 @@ def decide(A, laws: int = 300, seed: int = 0) -> Robustness:
     unstable_law = _first_confirmed(lp, Af, unstable_candidates, False)
     if unstable_law is None:
         unstable_law = _first_confirmed(lp, Af, vertex_laws(lp, conditions), False)
+    if unstable_law is None:
+        unstable_law = _first_confirmed(lp, Af, _climbed(Af, 1.0, seed), False)
+    if stable_law is None:
+        stable_law = _first_confirmed(lp, Af, _climbed(Af, -1.0, seed), True)
     if stable_law is not None and unstable_law is not None:
         return Robustness("law-dependent", stable_law=stable_law, unstable_law=unstable_law)
     conditions = lp.conditions()
     if unstable_law is None:
-        unstable_law = _first_confirmed(lp, Af, vertex_laws(lp, conditions), False)
+        minors_only = [g if kind == "Delta" else None for (kind, _), g in zip(lp.labels, conditions)]
+        unstable_law = _first_confirmed(lp, Af, vertex_laws(lp, minors_only), False)
         if stable_law is not None and unstable_law is not None:
             return Robustness("law-dependent", stable_law=stable_law, unstable_law=unstable_law)
         certificate = _stable_certificate(lp, conditions)
