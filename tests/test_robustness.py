@@ -213,3 +213,22 @@ def test_decide_rejects_symbolic_and_bad_matrices():
         decide(sp.Matrix([[1, 2]]))
     with pytest.raises(ContactsymError, match="finite"):
         decide(np.array([[np.nan]]))
+
+
+def test_report_and_latex_show_the_point_decision():
+    from contactsym.latex import latex
+    from contactsym.report import conditions
+
+    q = dynamicsymbols("q_1:4")
+    N = sp.symbols("N_1:4", real=True)
+    A = sp.Matrix([[2, 1, 0], [-1, 2, 1], [0, -1, 2]])
+    G = [sum(A[j, i] * N[i] for i in range(3)) for j in range(3)]
+    scene = cs.Scene.from_accelerations(q, G, [cs.Contact(coordinate=q[j], reaction=N[j]) for j in range(3)])
+    data = conditions(scene)["robustness"]
+    assert data["verdict"] == "law-dependent"
+    for name, stable in (("stable", True), ("unstable", False)):
+        law = data["witness_laws"][name]
+        Phi, Psi = [sp.Rational(x) for x in law["Phi"]], [sp.Rational(x) for x in law["Psi"]]
+        assert all(sp.sympify(c) > 0 for c in Hurwitz(charpoly(A, Phi, Psi)).conditions) == stable
+    text = latex(scene.stability())
+    assert r"\text{robustness}" in text and r"(\Phi, \Psi)_{\text{unstable}}" in text
