@@ -23,6 +23,8 @@ from math import isqrt
 import numpy as np
 from scipy.optimize import linprog
 from sympy.polys.domains import QQ
+from sympy.polys.matrices import DomainMatrix
+from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
 
 __all__ = ["amgm_certificate", "positivstellensatz_certificate", "rational_law", "vertex_laws"]
 
@@ -125,14 +127,20 @@ def _multipliers(gens, degree: int) -> list:
     return found
 
 
-def positivstellensatz_certificate(lp, conditions, degree: int | None = None) -> str | None:
-    """(P5): monomial multipliers s_i >= 0 with every coefficient of sum s_i g_i <= 0, checked exactly."""
+def positivstellensatz_certificate(lp, conditions, degrees: tuple | None = None) -> str | None:
+    """(P5): monomial multipliers s_i >= 0 with every coefficient of sum s_i g_i <= 0, checked exactly;
+    multipliers of degree ``degrees[0]``, then ``degrees[1]``, ..."""
+    for degree in degrees or ((2, 3) if lp.k <= 3 else (1, 2)):
+        statement = _positivstellensatz(lp, conditions, degree)
+        if statement:
+            return statement
+    return None
+
+
+def _positivstellensatz(lp, conditions, degree: int) -> str | None:
     known = [g for g in conditions if g is not None]
-    if degree is None:
-        degree = 2 if lp.k <= 3 else 1
     gens = list(lp.c) + list(lp.d)
-    columns = [(g, mu) for g in known for mu in _multipliers(gens, degree)]
-    products = [g * mu for g, mu in columns]
+    products = [g * mu for g in known for mu in _multipliers(gens, degree)]
     monomials = sorted({e for q in products for e in q})
     row = {e: i for i, e in enumerate(monomials)}
     matrix = np.zeros((len(monomials), len(products)))
@@ -141,14 +149,45 @@ def positivstellensatz_certificate(lp, conditions, degree: int | None = None) ->
             matrix[row[e], j] = float(v)
     scale = np.maximum(np.abs(matrix).max(axis=0), 1e-300)
     matrix /= scale  # columns of comparable size
-    for margin in (1e-7, 1e-10, 0.0):  # a margin keeps the rounded multipliers on the right side
-        statement = _solve_and_check(lp, matrix, scale, products, margin, degree)
+    for margin in (1e-7, 0.0):  # a margin keeps the rounded multipliers on the right side
+        statement = _solve_and_check(lp, matrix, scale, products, monomials, margin, degree)
         if statement:
             return statement
     return None
 
 
-def _solve_and_check(lp, matrix, scale, products, margin, degree) -> str | None:
+def _exact_weights(matrix, scale, products, monomials, x) -> list | None:
+    """Rational multipliers near the float solution x that keep its tight rows exactly at 0.
+
+    The rows x makes (nearly) 0, and sum s = 1, form a linear system K s = r; the rounded x is
+    projected onto it in rationals, s = x + K^T (K K^T)^-1 (r - K x), K reduced to independent
+    rows. The caller re-checks every coefficient exactly."""
+    support = [j for j, value in enumerate(x) if value > 1e-12]
+    if not support:
+        return None
+    values = matrix[:, support] @ x[support]
+    touched = np.abs(matrix[:, support]).max(axis=1) > 0
+    tight = [monomials[i] for i in np.nonzero(touched & (np.abs(values) <= 1e-9))[0]]
+    rows = [[products[j].get(e, QQ(0)) for j in support] for e in tight] + [[QQ(1)] * len(support)]
+    _, independent = DomainMatrix(rows, (len(rows), len(support)), QQ).transpose().rref()
+    K = DomainMatrix([rows[i] for i in independent], (len(independent), len(support)), QQ)
+    target = DomainMatrix([[QQ(int(i == len(rows) - 1))] for i in independent], (len(independent), 1), QQ)
+    rounded = [QQ.convert(Fraction(x[j] / scale[j]).limit_denominator(10**15)) for j in support]
+    start = DomainMatrix([[w] for w in rounded], (len(support), 1), QQ)
+    try:
+        y = (K * K.transpose()).lu_solve(target - K * start)
+    except (ValueError, ZeroDivisionError, DMNonInvertibleMatrixError):
+        return None
+    exact = (start + K.transpose() * y).to_Matrix()
+    if any(w < 0 for w in exact):
+        return None
+    weights = [QQ(0)] * len(products)
+    for position, j in enumerate(support):
+        weights[j] = QQ.convert(exact[position])
+    return weights
+
+
+def _solve_and_check(lp, matrix, scale, products, monomials, margin, degree) -> str | None:
     result = linprog(
         matrix.sum(axis=0),
         A_ub=matrix,
@@ -160,12 +199,14 @@ def _solve_and_check(lp, matrix, scale, products, margin, degree) -> str | None:
     )
     if result.status != 0:
         return None
-    weights = [Fraction(x / s).limit_denominator(10**12) if x > 1e-12 else 0 for x, s in zip(result.x, scale)]
+    weights = _exact_weights(matrix, scale, products, monomials, result.x)
+    if weights is None:
+        return None
     total = lp.ring(0)
     used = 0
     for w, q in zip(weights, products):
         if w:
-            total += q * QQ(w.numerator, w.denominator)
+            total += q * w
             used += 1
     if used == 0 or any(v > 0 for v in total.values()):
         return None
