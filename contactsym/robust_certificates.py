@@ -18,15 +18,27 @@ from __future__ import annotations
 
 import itertools
 from fractions import Fraction
+from functools import cache
 from math import isqrt
 
 import numpy as np
+import sympy as sp
 from scipy.optimize import linprog
-from sympy.polys.domains import QQ
+from scipy.spatial import ConvexHull, QhullError
+from sympy.polys.domains import QQ, ZZ
 from sympy.polys.matrices import DomainMatrix
 from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
+from sympy.polys.rings import ring
 
-__all__ = ["amgm_certificate", "positivstellensatz_certificate", "rational_law", "vertex_laws"]
+from .law_polynomials import _evaluate_terms, _generic_conditions
+
+__all__ = [
+    "amgm_certificate",
+    "generic_vertex_coefficients",
+    "positivstellensatz_certificate",
+    "rational_law",
+    "vertex_laws",
+]
 
 
 def rational_law(c, d, digits: int = 4) -> tuple[list, list]:
@@ -90,6 +102,53 @@ def _vertex_direction(b, others) -> np.ndarray | None:
         return None
     w = np.round(4 * result.x).astype(int)
     return w if (differences @ w >= 1).all() else None
+
+
+@cache
+def generic_vertex_coefficients(k: int) -> tuple[tuple[tuple[int, ...], sp.Expr], ...]:
+    """(subset S, coefficient) pairs: the coefficients, as polynomials in symbols m_S for the
+    principal minors det(A_S), at the vertices of the Newton polytopes of the Hurwitz minors
+    among the Liénard–Chipart conditions of the generic A (P3). A negative value at some A gives an
+    unstable law: the vertex of the generic support is a vertex of any support inside it."""
+    subsets = [S for r in range(1, k + 1) for S in itertools.combinations(range(k), r)]
+    m = {S: sp.Symbol("m_" + "_".join(str(j + 1) for j in S)) for S in subsets}
+    names = [f"c{j}" for j in range(1, k + 1)] + [f"d{j}" for j in range(1, k + 1)]
+    R, *gens = ring(",".join(names), ZZ[tuple(m.values())])
+    c, d = gens[:k], gens[k:]
+    p = [R(0)] * (2 * k + 1)
+    p[2 * k] = R(1)
+    for S in subsets:
+        for size in range(len(S) + 1):
+            for T in itertools.combinations(S, size):
+                term = R(R.domain.convert(m[S]))
+                for j in S:
+                    term *= d[j] if j in T else c[j]
+                p[2 * k - 2 * len(S) + size] += term
+    labels, conditions = _generic_conditions(k)
+    found = []
+    for (kind, _), terms in zip(labels, conditions):
+        if kind != "Delta":
+            continue
+        g = _evaluate_terms(terms, p[::-1][1:], R(1))
+        for b in _vertices(list(g)):
+            found.append((b, R.domain.to_sympy(g[b])))
+    return tuple(found)
+
+
+def _vertices(points: list) -> list:
+    """The vertices of the convex hull of integer points: qhull in their affine hull, each
+    vertex then confirmed by an exact integer direction (P3)."""
+    X = np.array(points, dtype=float)
+    centred = X - X.mean(axis=0)
+    _, singular, basis = np.linalg.svd(centred, full_matrices=False)
+    rank = int((singular > 1e-9 * max(1.0, singular.max())).sum())
+    try:
+        candidates = ConvexHull(centred @ basis[:rank].T).vertices if rank >= 2 else range(len(points))
+    except QhullError:
+        candidates = range(len(points))
+    return [
+        points[i] for i in candidates if _vertex_direction(points[i], [a for a in points if a != points[i]]) is not None
+    ]
 
 
 def vertex_laws(lp, conditions, per_condition: int = 2, tries: int = 12) -> list[tuple[list, list]]:

@@ -79,6 +79,7 @@ from .errors import ContactsymError
 from .law_polynomials import LawPolynomials, fast_spectral_abscissa
 from .robust_certificates import (
     amgm_certificate,
+    generic_vertex_coefficients,
     positivstellensatz_certificate,
     rational_law,
     vertex_laws,
@@ -348,14 +349,17 @@ def _principal_minors(A: sp.Matrix) -> dict:
     return {S: sp.expand(A.extract(list(S), list(S)).det(method="berkowitz")) for S in subsets}
 
 
-def regions(A: sp.Matrix) -> dict[str, sp.Basic]:
-    """Closed-form sufficient regions, any k, in the entries of A.
+def regions(A: sp.Matrix, vertices: bool = False) -> dict[str, sp.Basic]:
+    """Closed-form regions, any k, in the entries of A (all sufficient for what they name).
 
     - ``"unstable for every law"``: some p_s has all coefficients <= 0 (P2): for the weight
       w = 2k - s, every principal minor of a size in [w/2, min(w, k)] is <= 0;
     - ``"stable law exists"``: a nested sequence of positive principal minors (P6);
-    - ``"unstable law exists"``: some principal minor is negative (P3);
-    - ``"law-dependent"``: both of the last two.
+    - ``"unstable law exists"``: some principal minor is negative (P3); with ``vertices``
+      (k <= 3), or some vertex coefficient of a Hurwitz minor is negative (P3);
+    - ``"law-dependent"``: both of the last two;
+    - ``"stable for every law needs"``: the negation of ``"unstable law exists"``, a necessary
+      condition. For k = 2 with ``vertices`` it is Proposition 6's stable region exactly.
 
     Examples
     --------
@@ -374,9 +378,14 @@ def regions(A: sp.Matrix) -> dict[str, sp.Basic]:
         nested.append(sp.And(*[sp.Gt(minors[tuple(sorted(order[: r + 1]))], 0) for r in range(k)]))
     stable_law = sp.Or(*nested)
     unstable_law = sp.Or(*[sp.Lt(m, 0) for m in minors.values()])
+    if vertices and k <= 3:
+        symbols = {sp.Symbol("m_" + "_".join(str(j + 1) for j in S)): m for S, m in minors.items()}
+        coefficients = {c.xreplace(symbols) for _, c in generic_vertex_coefficients(k)}
+        unstable_law = sp.Or(unstable_law, *[sp.Lt(c, 0) for c in coefficients])
     return {
         "unstable for every law": sp.Or(*unstable),
         "stable law exists": stable_law,
         "unstable law exists": unstable_law,
         "law-dependent": sp.And(stable_law, unstable_law),
+        "stable for every law needs": sp.Not(unstable_law),
     }

@@ -155,6 +155,18 @@ def test_k2_reproduces_proposition_6(A):
                 assert hurwitz_signs_by_sympy(A, law) == stable
 
 
+@settings(max_examples=100, deadline=None)
+@given(st.lists(small, min_size=4, max_size=4).map(lambda xs: sp.Matrix(2, 2, xs)))
+@example(sp.Matrix([[1, 0], [5, 1]]))
+@example(sp.Matrix([[2, 1], [-1, 0]]))
+def test_k2_necessary_region_with_vertices_is_proposition_6(A):
+    values = {_a2[i, j]: A[i, j] for i in range(2) for j in range(2)}
+    needs = regions(A, vertices=True)["stable for every law needs"]
+    assert needs in (sp.true, sp.false)
+    if A.det() != 0:
+        assert needs == _stability2.robustly_stable.xreplace(values)
+
+
 # --- closed-form regions ---------------------------------------------------------------------
 
 
@@ -172,6 +184,10 @@ def test_closed_form_regions_agree_with_the_point_decision_and_eigenvalues(A):
         assert result.stable_law is not None
     if closed["unstable law exists"] == sp.true:
         assert result.verdict != "stable"
+    if regions(A, vertices=True)["stable for every law needs"] == sp.false:  # a Newton vertex is negative
+        assert result.verdict != "stable"
+    if result.verdict == "stable":
+        assert regions(A, vertices=True)["stable for every law needs"] == sp.true
     if closed["law-dependent"] == sp.true:
         assert result.verdict == "law-dependent"
 
