@@ -17,8 +17,8 @@ import time
 import numpy as np
 import sympy as sp
 
-from contactsym.law_polynomials import fast_spectral_abscissa
-from contactsym.robustness import decide
+from contactsym.law_polynomials import LawPolynomials, fast_spectral_abscissa
+from contactsym.robustness import decide, nested_sequences
 
 from . import record
 
@@ -66,8 +66,18 @@ def _contradicted(verdict: str, A: np.ndarray, laws: int, seed: int) -> bool:
     return bool((top >= tol).any()) if verdict == "stable" else bool((top <= -tol).any())
 
 
+def _nested_conjecture(A, Af: np.ndarray, laws: int, seed: int) -> int:
+    """1 if A has no nested sequence of positive principal minors, det A > 0, and a sampled law is
+    stable: a counterexample to the conjecture that no stable law exists then (not a certificate)."""
+    lp = LawPolynomials(A)
+    if lp.minors[tuple(range(lp.k))] <= 0 or nested_sequences(lp.minors):
+        return 0
+    return int(_contradicted("unstable", Af, laws, seed))
+
+
 def _case(matrices, laws):
     ours, base, errors, seconds, base_seconds = [], [], 0, [], 0.0
+    counterexamples = 0
     for i, A in enumerate(matrices):
         t0 = time.process_time()  # CPU seconds: the machine may be shared
         result = decide(A)
@@ -78,7 +88,8 @@ def _case(matrices, laws):
         base_seconds += time.process_time() - t0
         ours.append(result.verdict)
         errors += _contradicted(result.verdict, Af, laws, i) + _contradicted(base[-1], Af, laws, i)
-    return ours, base, errors, np.array(seconds), base_seconds / len(matrices)
+        counterexamples += _nested_conjecture(A, Af, laws, i)
+    return ours, base, errors, np.array(seconds), base_seconds / len(matrices), counterexamples
 
 
 def _fractions(verdicts) -> dict:
@@ -126,7 +137,7 @@ def run(quick: bool, out) -> list[dict]:
     records, rows = [], []
     print(f"{'case':<12} {'undecided ours':>15} {'Props 7/8':>10} {'ms/point':>9} {'max ms':>8} {'false claims':>12}")
     for name, matrices in cases.items():
-        ours, base, errors, seconds, base_seconds = _case(matrices, laws)
+        ours, base, errors, seconds, base_seconds, counterexamples = _case(matrices, laws)
         fo, fb = _fractions(ours), _fractions(base)
         rows.append((name, fo, fb))
         print(
@@ -137,7 +148,8 @@ def run(quick: bool, out) -> list[dict]:
             f"{len(matrices)} points; undecided {fo['undecided']:.3f} (Props 7/8: {fb['undecided']:.3f}); ours "
             + ", ".join(f"{v} {fo[v]:.3f}" for v in VERDICTS[:3])
             + f"; per point mean {1e3 * seconds.mean():.1f} ms, max {1e3 * seconds.max():.0f} ms (CPU); "
-            f"claims checked against {laws} sampled laws per point; ratio = baseline time / ours (< 1: ours is slower, "
+            f"claims checked against {laws} sampled laws per point; points without a nested sequence of positive "
+            f"principal minors (det A > 0) where a sampled law is stable: {counterexamples}; ratio = baseline time / ours (< 1: ours is slower, "
             "and decides more)"
         )
         records.append(record(f"robustness/{name}", float(seconds.mean()), base_seconds, errors, len(matrices), notes))
