@@ -208,24 +208,60 @@ def _sampled(Af: np.ndarray, count: int, seed: int) -> tuple[list, list]:
     return stable, unstable
 
 
+def _normalized(c: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(c / t^2, d / t) with t = max(sqrt(c), d) per law: (c, d) -> (t^2 c, t d) scales every
+    eigenvalue of (4.5) by t, so this keeps stability and makes abscissae comparable."""
+    t = np.maximum(np.sqrt(c).max(axis=1), d.max(axis=1))[:, None]
+    return c / t**2, d / t
+
+
+def _weak_damping_laws(Af: np.ndarray, seed: int, count: int = 400) -> list:
+    """Unstable laws with small damping. Left-multiplying lam^2 x + (lam D + C) A x = 0 by the left
+    eigenvector y of CA (CA x = mu x) gives lam^2 + mu s lam + mu = 0 to first order in D, with
+    s = sum_j (d_j / c_j) y_j x_j / (y.x): a non-real mu, or a real mu > 0 with some
+    y_j x_j / (y.x) < 0 (then d concentrated on j makes s < 0), has Re lam > 0 for small D."""
+    k = Af.shape[0]
+    rng = np.random.default_rng(seed + 2)
+    stiffness = np.vstack([np.ones(k), 10.0 ** rng.uniform(-3, 3, (count, k))])
+    mu, X = np.linalg.eig(stiffness[:, :, None] * Af[None])
+    laws = []
+    for c, values, vectors in zip(stiffness, mu, X):
+        if np.abs(values.imag).max() > 1e-6 * np.abs(values).max():
+            laws.append(rational_law(c, 1e-4 * c))
+        elif abs(np.linalg.det(vectors)) > 1e-12:
+            weights = (np.linalg.inv(vectors).T * vectors).real  # column i: y_i x_i with y_i . x_i = 1
+            i, j = np.unravel_index(np.argmin(weights.T), weights.T.shape)
+            if weights[j, i] < -1e-9:
+                d = 1e-6 * abs(weights[j, i]) * c
+                d[j] = 1e-3 * c[j]
+                laws.append(rational_law(c, d))
+        if len(laws) >= 8:
+            break
+    return laws
+
+
 def _climbed(Af: np.ndarray, sign: float, seed: int, starts: int = 3) -> list:
-    """Rational laws found by Nelder-Mead on log(c, d) maximising sign * abscissa, from the best of
-    wide log-uniform samples (1e-6..1e6): the rare unstable (stable) laws sampling misses."""
+    """Rational laws found by Nelder-Mead on log(c, d) maximising sign * (normalized abscissa), from
+    the best of wide log-uniform samples (1e-6..1e6): the rare unstable (stable) laws sampling misses."""
     k = Af.shape[0]
     rng = np.random.default_rng(seed + 1)
     x = rng.uniform(-6, 6, (4000, 2 * k))
-    top = sign * fast_spectral_abscissa(Af, 10.0 ** x[:, :k], 10.0 ** x[:, k:])
+
+    def abscissa(y):
+        return fast_spectral_abscissa(Af, *_normalized(10.0 ** y[:, :k], 10.0 ** y[:, k:]))
+
+    top = sign * abscissa(x)
     found = []
     for start in x[np.argsort(-top)[:starts]]:
-
-        def objective(y):
-            y = np.clip(y, -8, 8)
-            return -sign * fast_spectral_abscissa(Af, 10.0 ** y[None, :k], 10.0 ** y[None, k:])[0]
-
-        best = minimize(objective, start, method="Nelder-Mead", options={"maxfev": 300, "xatol": 1e-3})
-        y = np.clip(best.x, -8, 8)
+        best = minimize(
+            lambda y: -sign * abscissa(np.clip(y, -8, 8)[None])[0],
+            start,
+            method="Nelder-Mead",
+            options={"maxfev": 300, "xatol": 1e-3},
+        )
         if -best.fun > 0:
-            found.append(rational_law(10.0 ** y[:k], 10.0 ** y[k:]))
+            c, d = _normalized(10.0 ** np.clip(best.x[None, :k], -8, 8), 10.0 ** np.clip(best.x[None, k:], -8, 8))
+            found.append(rational_law(c[0], d[0]))
     return found
 
 
@@ -314,6 +350,8 @@ def decide(A, laws: int = 300, seed: int = 0) -> Robustness:
     unstable_law = _first_confirmed(lp, Af, unstable_candidates, False)
     if unstable_law is None:
         unstable_law = _first_confirmed(lp, Af, vertex_laws(lp, conditions), False)
+    if unstable_law is None:
+        unstable_law = _first_confirmed(lp, Af, _weak_damping_laws(Af, seed), False)
     if unstable_law is None:
         unstable_law = _first_confirmed(lp, Af, _climbed(Af, 1.0, seed), False)
     if stable_law is None:
