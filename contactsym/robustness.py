@@ -52,8 +52,27 @@ along the sequence with delta small). With D = C, lam^2 I + (lam D + C) A =
 lam^2 I + (lam + 1) C A, so p(lam) = prod_mu (lam^2 + mu lam + mu): Hurwitz stable. The
 law (c, d) = (diag C, diag C) is an explicit stable law, checked exactly.
 
+(P7) *Weak damping.* Left-multiplying lam^2 x + (lam D + C) A x = 0 by the left eigenvector
+y of CA (CA x = mu x, so A x = mu C^-1 x) gives, to first order in D,
+lam^2 + mu s lam + mu = 0 with s = sum_j (d_j / c_j) y_j x_j / (y.x). A non-real mu, or a
+real mu > 0 with some y_j x_j / (y.x) < 0 (d concentrated on that j makes s < 0), gives
+Re lam > 0 for D small: a candidate unstable law (each is then checked exactly).
+
 Witness laws are confirmed twice: by the exact Liénard–Chipart signs in rationals and by
 the eigenvalues of (4.5) in floating point.
+
+Notes on the approach
+---------------------
+- Newton vertices with several conditions: a negative vertex coefficient of one condition
+  is enough (P1, P3); the interaction of conditions only matters for the sufficient side.
+- Coefficients alone never prove Proposition 6: Delta_3 of k = 2 always holds
+  -2 m_12^2 c1 c2 d1 d2, inside its Newton polytope. Multiplying by (sum of variables)^N
+  (Pólya) does not help either: the conditions vanish on faces of the orthant (Delta_3 = 0
+  at d = 0), where Pólya's theorem needs strict positivity. AM-GM pairs (P4) do prove it.
+- An exact decision of "unstable for every law" is not reached. On every sampled A (random
+  3 x 3, 4 x 4 and the stool of ``tests/stool.py``, see ``benchmarks/robustness.py``) a stable
+  law exists exactly when a nested sequence of positive principal minors does (P6 is one
+  direction); a proof of the other direction would decide that question for every k.
 
 Examples
 --------
