@@ -1,4 +1,4 @@
-"""Certificate and witness search for :mod:`contactsym.robustness` (proofs P3-P5 there).
+"""Certificates and witness-law searches for :mod:`contactsym.robustness` (proofs P3-P7 there).
 
 Polynomials are ``QQ[c1..ck, d1..dk]`` ring elements from
 :class:`contactsym.law_polynomials.LawPolynomials`; every certificate found in floating
@@ -23,17 +23,21 @@ from math import isqrt
 
 import numpy as np
 import sympy as sp
-from scipy.optimize import linprog
+from scipy.optimize import linprog, minimize
 from scipy.spatial import ConvexHull, QhullError
 from sympy.polys.domains import QQ, ZZ
 from sympy.polys.matrices import DomainMatrix
 from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
 from sympy.polys.rings import ring
 
-from .law_polynomials import _evaluate_terms, _generic_conditions
+from .law_polynomials import _evaluate_terms, _generic_conditions, fast_spectral_abscissa
 
 __all__ = [
     "amgm_certificate",
+    "climbed_laws",
+    "fisher_fuller_laws",
+    "sampled_laws",
+    "weak_damping_laws",
     "generic_vertex_coefficients",
     "positivstellensatz_certificate",
     "rational_law",
@@ -86,6 +90,90 @@ def amgm_certificate(g) -> str | None:
         if have < Fraction(int(QQ.numer(need)), int(QQ.denom(need))):
             return None
     return "amgm"
+
+
+# --- witness searches (P6, P7, sampling) ---------------------------------------------
+
+
+def fisher_fuller_laws(order, k) -> list[tuple[list, list]]:
+    """(P6) laws (c, d) = (diag C, diag C), C = diag(delta^r) along the nested sequence ``order``."""
+    laws = []
+    for delta in (sp.Rational(1, 2), sp.Rational(1, 10), sp.Rational(1, 100), sp.Rational(1, 10**4)):
+        c = [None] * k
+        for r, j in enumerate(order):
+            c[j] = delta**r
+        laws.append((c, list(c)))
+    return laws
+
+
+def sampled_laws(Af: np.ndarray, count: int, seed: int) -> tuple[list, list]:
+    """(stable-looking, unstable-looking) rational laws from log-uniform samples, best first."""
+    k = Af.shape[0]
+    rng = np.random.default_rng(seed)
+    c = 10.0 ** rng.uniform(-3, 3, (count, k))
+    d = 10.0 ** rng.uniform(-3, 3, (count, k))
+    top = fast_spectral_abscissa(Af, c, d)
+    order = np.argsort(top)
+    stable = [rational_law(c[i], d[i]) for i in order[:8] if top[i] < 0]
+    unstable = [rational_law(c[i], d[i]) for i in order[::-1][:8] if top[i] > 0]
+    return stable, unstable
+
+
+def _normalized(c: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(c / t^2, d / t) with t = max(sqrt(c), d) per law: (c, d) -> (t^2 c, t d) scales every
+    eigenvalue of (4.5) by t, so this keeps stability and makes abscissae comparable."""
+    t = np.maximum(np.sqrt(c).max(axis=1), d.max(axis=1))[:, None]
+    return c / t**2, d / t
+
+
+def weak_damping_laws(Af: np.ndarray, seed: int, count: int = 400) -> list:
+    """Unstable laws with small damping. Left-multiplying lam^2 x + (lam D + C) A x = 0 by the left
+    eigenvector y of CA (CA x = mu x) gives lam^2 + mu s lam + mu = 0 to first order in D, with
+    s = sum_j (d_j / c_j) y_j x_j / (y.x): a non-real mu, or a real mu > 0 with some
+    y_j x_j / (y.x) < 0 (then d concentrated on j makes s < 0), has Re lam > 0 for small D."""
+    k = Af.shape[0]
+    rng = np.random.default_rng(seed + 2)
+    stiffness = np.vstack([np.ones(k), 10.0 ** rng.uniform(-3, 3, (count, k))])
+    mu, X = np.linalg.eig(stiffness[:, :, None] * Af[None])
+    laws = []
+    for c, values, vectors in zip(stiffness, mu, X):
+        if np.abs(values.imag).max() > 1e-6 * np.abs(values).max():
+            laws.append(rational_law(c, 1e-4 * c))
+        elif abs(np.linalg.det(vectors)) > 1e-12:
+            weights = (np.linalg.inv(vectors).T * vectors).real  # column i: y_i x_i with y_i . x_i = 1
+            i, j = np.unravel_index(np.argmin(weights.T), weights.T.shape)
+            if weights[j, i] < -1e-9:
+                d = 1e-6 * abs(weights[j, i]) * c
+                d[j] = 1e-3 * c[j]
+                laws.append(rational_law(c, d))
+        if len(laws) >= 8:
+            break
+    return laws
+
+
+def climbed_laws(Af: np.ndarray, sign: float, seed: int, starts: int = 3) -> list:
+    """Rational laws found by Nelder-Mead on log(c, d) maximising sign * (normalized abscissa), from
+    the best of wide log-uniform samples (1e-6..1e6): the rare unstable (stable) laws sampling misses."""
+    k = Af.shape[0]
+    rng = np.random.default_rng(seed + 1)
+    x = rng.uniform(-6, 6, (4000, 2 * k))
+
+    def abscissa(y):
+        return fast_spectral_abscissa(Af, *_normalized(10.0 ** y[:, :k], 10.0 ** y[:, k:]))
+
+    top = sign * abscissa(x)
+    found = []
+    for start in x[np.argsort(-top)[:starts]]:
+        best = minimize(
+            lambda y: -sign * abscissa(np.clip(y, -8, 8)[None])[0],
+            start,
+            method="Nelder-Mead",
+            options={"maxfev": 300, "xatol": 1e-3},
+        )
+        if -best.fun > 0:
+            c, d = _normalized(10.0 ** np.clip(best.x[None, :k], -8, 8), 10.0 ** np.clip(best.x[None, k:], -8, 8))
+            found.append(rational_law(c[0], d[0]))
+    return found
 
 
 # --- (P3) vertex laws ----------------------------------------------------------------------

@@ -91,17 +91,19 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import sympy as sp
-from scipy.optimize import minimize
 from sympy.polys.domains import QQ
 
 from .errors import ContactsymError
 from .law_polynomials import LawPolynomials, fast_spectral_abscissa
 from .robust_certificates import (
     amgm_certificate,
+    climbed_laws,
+    fisher_fuller_laws,
     generic_vertex_coefficients,
     positivstellensatz_certificate,
-    rational_law,
+    sampled_laws,
     vertex_laws,
+    weak_damping_laws,
 )
 
 __all__ = ["Law", "Certificate", "Robustness", "decide", "regions", "nested_sequences"]
@@ -169,16 +171,6 @@ def nested_sequences(minors: dict) -> list[tuple[int, ...]]:
     return found
 
 
-def _fisher_fuller_laws(order, k) -> list[tuple[list, list]]:
-    laws = []
-    for delta in (sp.Rational(1, 2), sp.Rational(1, 10), sp.Rational(1, 100), sp.Rational(1, 10**4)):
-        c = [None] * k
-        for r, j in enumerate(order):
-            c[j] = delta**r
-        laws.append((c, list(c)))
-    return laws
-
-
 # --- witnesses ---------------------------------------------------------------------------
 
 
@@ -212,76 +204,6 @@ def _first_confirmed(lp, Af, candidates, want_stable, limit=8) -> Law | None:
         if law is not None:
             return law
     return None
-
-
-def _sampled(Af: np.ndarray, count: int, seed: int) -> tuple[list, list]:
-    """(stable-looking, unstable-looking) rational laws from log-uniform samples, best first."""
-    k = Af.shape[0]
-    rng = np.random.default_rng(seed)
-    c = 10.0 ** rng.uniform(-3, 3, (count, k))
-    d = 10.0 ** rng.uniform(-3, 3, (count, k))
-    top = fast_spectral_abscissa(Af, c, d)
-    order = np.argsort(top)
-    stable = [rational_law(c[i], d[i]) for i in order[:8] if top[i] < 0]
-    unstable = [rational_law(c[i], d[i]) for i in order[::-1][:8] if top[i] > 0]
-    return stable, unstable
-
-
-def _normalized(c: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(c / t^2, d / t) with t = max(sqrt(c), d) per law: (c, d) -> (t^2 c, t d) scales every
-    eigenvalue of (4.5) by t, so this keeps stability and makes abscissae comparable."""
-    t = np.maximum(np.sqrt(c).max(axis=1), d.max(axis=1))[:, None]
-    return c / t**2, d / t
-
-
-def _weak_damping_laws(Af: np.ndarray, seed: int, count: int = 400) -> list:
-    """Unstable laws with small damping. Left-multiplying lam^2 x + (lam D + C) A x = 0 by the left
-    eigenvector y of CA (CA x = mu x) gives lam^2 + mu s lam + mu = 0 to first order in D, with
-    s = sum_j (d_j / c_j) y_j x_j / (y.x): a non-real mu, or a real mu > 0 with some
-    y_j x_j / (y.x) < 0 (then d concentrated on j makes s < 0), has Re lam > 0 for small D."""
-    k = Af.shape[0]
-    rng = np.random.default_rng(seed + 2)
-    stiffness = np.vstack([np.ones(k), 10.0 ** rng.uniform(-3, 3, (count, k))])
-    mu, X = np.linalg.eig(stiffness[:, :, None] * Af[None])
-    laws = []
-    for c, values, vectors in zip(stiffness, mu, X):
-        if np.abs(values.imag).max() > 1e-6 * np.abs(values).max():
-            laws.append(rational_law(c, 1e-4 * c))
-        elif abs(np.linalg.det(vectors)) > 1e-12:
-            weights = (np.linalg.inv(vectors).T * vectors).real  # column i: y_i x_i with y_i . x_i = 1
-            i, j = np.unravel_index(np.argmin(weights.T), weights.T.shape)
-            if weights[j, i] < -1e-9:
-                d = 1e-6 * abs(weights[j, i]) * c
-                d[j] = 1e-3 * c[j]
-                laws.append(rational_law(c, d))
-        if len(laws) >= 8:
-            break
-    return laws
-
-
-def _climbed(Af: np.ndarray, sign: float, seed: int, starts: int = 3) -> list:
-    """Rational laws found by Nelder-Mead on log(c, d) maximising sign * (normalized abscissa), from
-    the best of wide log-uniform samples (1e-6..1e6): the rare unstable (stable) laws sampling misses."""
-    k = Af.shape[0]
-    rng = np.random.default_rng(seed + 1)
-    x = rng.uniform(-6, 6, (4000, 2 * k))
-
-    def abscissa(y):
-        return fast_spectral_abscissa(Af, *_normalized(10.0 ** y[:, :k], 10.0 ** y[:, k:]))
-
-    top = sign * abscissa(x)
-    found = []
-    for start in x[np.argsort(-top)[:starts]]:
-        best = minimize(
-            lambda y: -sign * abscissa(np.clip(y, -8, 8)[None])[0],
-            start,
-            method="Nelder-Mead",
-            options={"maxfev": 300, "xatol": 1e-3},
-        )
-        if -best.fun > 0:
-            c, d = _normalized(10.0 ** np.clip(best.x[None, :k], -8, 8), 10.0 ** np.clip(best.x[None, k:], -8, 8))
-            found.append(rational_law(c[0], d[0]))
-    return found
 
 
 # --- certificates ------------------------------------------------------------------------
@@ -363,18 +285,18 @@ def decide(A, laws: int = 300, seed: int = 0) -> Robustness:
     certificate = _coefficient_certificate(lp, conditions)
     if certificate is not None:
         return Robustness("unstable", certificate)
-    stable_candidates, unstable_candidates = _sampled(Af, laws, seed)
-    fisher_fuller = [law for order in nested_sequences(lp.minors)[:2] for law in _fisher_fuller_laws(order, k)]
+    stable_candidates, unstable_candidates = sampled_laws(Af, laws, seed)
+    fisher_fuller = [law for order in nested_sequences(lp.minors)[:2] for law in fisher_fuller_laws(order, k)]
     stable_law = _first_confirmed(lp, Af, fisher_fuller + stable_candidates, True, limit=16)
     unstable_law = _first_confirmed(lp, Af, unstable_candidates, False)
     if unstable_law is None:
         unstable_law = _first_confirmed(lp, Af, vertex_laws(lp, conditions), False)
     if unstable_law is None:
-        unstable_law = _first_confirmed(lp, Af, _weak_damping_laws(Af, seed), False)
+        unstable_law = _first_confirmed(lp, Af, weak_damping_laws(Af, seed), False)
     if unstable_law is None:
-        unstable_law = _first_confirmed(lp, Af, _climbed(Af, 1.0, seed), False)
+        unstable_law = _first_confirmed(lp, Af, climbed_laws(Af, 1.0, seed), False)
     if stable_law is None:
-        stable_law = _first_confirmed(lp, Af, _climbed(Af, -1.0, seed), True)
+        stable_law = _first_confirmed(lp, Af, climbed_laws(Af, -1.0, seed), True)
     if stable_law is not None and unstable_law is not None:
         return Robustness("law-dependent", stable_law=stable_law, unstable_law=unstable_law)
     conditions = lp.conditions()
