@@ -87,12 +87,13 @@ Examples
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 from sympy.polys.domains import QQ
 
+from .algebra import normalize
 from .errors import ContactsymError
 from .law_polynomials import LawPolynomials, fast_spectral_abscissa
 from .robust_certificates import (
@@ -144,7 +145,6 @@ class Robustness:
     certificate: Certificate | None = None
     stable_law: Law | None = None
     unstable_law: Law | None = None
-    notes: tuple = field(default_factory=tuple)
 
     def summary(self) -> str:
         lines = [f"robustness to the law: {self.verdict}"]
@@ -155,7 +155,7 @@ class Robustness:
                 lines.append(
                     f"  {name} law: Phi = {list(law.Phi)}, Psi = {list(law.Psi)} (max Re lambda = {law.abscissa:.3g})"
                 )
-        return "\n".join(lines + [f"  note: {n}" for n in self.notes])
+        return "\n".join(lines)
 
 
 # --- nested sequences (P6) ----------------------------------------------------------------
@@ -325,7 +325,7 @@ def decide(A, laws: int = 300, seed: int = 0) -> Robustness:
 def _principal_minors(A: sp.Matrix) -> dict:
     k = A.rows
     subsets = [S for r in range(1, k + 1) for S in itertools.combinations(range(k), r)]
-    return {S: sp.expand(A.extract(list(S), list(S)).det(method="berkowitz")) for S in subsets}
+    return {S: normalize(A.extract(list(S), list(S)).det(method="berkowitz")) for S in subsets}
 
 
 def regions(A: sp.Matrix, vertices: bool = False) -> dict[str, sp.Basic]:
