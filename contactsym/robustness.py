@@ -175,7 +175,9 @@ def nested_sequences(minors: dict) -> list[tuple[int, ...]]:
 
 
 def _confirmed(lp: LawPolynomials, Af: np.ndarray, c, d, want_stable: bool) -> Law | None:
-    """The law if the exact signs and the eigenvalues both say ``want_stable``."""
+    """The law if it is admissible (c, d > 0) and the exact signs and the eigenvalues both say ``want_stable``."""
+    if not all(x > 0 for x in list(c) + list(d)):
+        return None
     values = lp.values_at(c, d)
     exact_stable = all(v > 0 for v in values)
     if exact_stable != want_stable or (not want_stable and min(values) >= 0):
