@@ -170,7 +170,7 @@ def test_k2_necessary_region_with_vertices_is_proposition_6(A):
 # --- closed-form regions ---------------------------------------------------------------------
 
 
-@settings(max_examples=20, deadline=None)
+@settings(max_examples=15, deadline=None)
 @given(uniform_matrices(3))
 def test_closed_form_regions_agree_with_the_point_decision_and_eigenvalues(A):
     symbols = sp.Matrix(3, 3, lambda i, j: sp.Symbol(f"x_{i}{j}", real=True))
