@@ -131,6 +131,7 @@ class LawPolynomials:
         self.k = self.A.rows
         self.ring, gens = law_ring(self.k)
         self.c, self.d = gens[: self.k], gens[self.k :]
+        self._minors: dict[int, PolyElement] = {}
 
     @cached_property
     def minors(self) -> dict[tuple[int, ...], Fraction]:
@@ -165,13 +166,14 @@ class LawPolynomials:
             expand_minors = self.k <= EXPAND_UP_TO_K
         return [self._condition(i) if expand_minors or kind == "p" else None for i, (kind, _) in enumerate(self.labels)]
 
-    @cache  # noqa: B019  (one object per A; the cache lives as long as it)
     def _condition(self, index: int) -> PolyElement:
         kind, order = self.labels[index]
         if kind == "p":
             return self.p[order]
-        terms = _generic_conditions(self.k)[1][index]
-        return _evaluate_terms(terms, self.p[::-1][1:], self.ring(1))
+        if index not in self._minors:  # expanded once per object (k = 3: ~0.1 s)
+            terms = _generic_conditions(self.k)[1][index]
+            self._minors[index] = _evaluate_terms(terms, self.p[::-1][1:], self.ring(1))
+        return self._minors[index]
 
     def values_at(self, c, d) -> list[Fraction]:
         """Exact values of the conditions at the rational law (c, d)."""
@@ -179,7 +181,3 @@ class LawPolynomials:
         p = [_evaluate_poly(q, point) for q in self.p]
         terms = _generic_conditions(self.k)[1]
         return [_evaluate_terms(t, p[::-1][1:], QQ(1)) for t in terms]
-
-    def is_stable_at(self, c, d) -> bool:
-        """Exact: every Liénard–Chipart condition is positive at the law."""
-        return all(v > 0 for v in self.values_at(c, d))
