@@ -68,7 +68,7 @@ def _contradicted(verdict: str, A: np.ndarray, laws: int, seed: int) -> bool:
 
 def _nested_conjecture(A, Af: np.ndarray, laws: int, seed: int) -> int:
     """1 if A has no nested sequence of positive principal minors, det A > 0, and a sampled law is
-    stable: a counterexample to the conjecture that no stable law exists then (not a certificate)."""
+    stable: P6's converse fails there (rare; such points are why the unstable side needs P5)."""
     lp = LawPolynomials(A)
     if lp.minors[tuple(range(lp.k))] <= 0 or nested_sequences(lp.minors):
         return 0

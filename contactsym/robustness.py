@@ -69,10 +69,12 @@ Notes on the approach
   -2 m_12^2 c1 c2 d1 d2, inside its Newton polytope. Multiplying by (sum of variables)^N
   (Pólya) does not help either: the conditions vanish on faces of the orthant (Delta_3 = 0
   at d = 0), where Pólya's theorem needs strict positivity. AM-GM pairs (P4) do prove it.
-- An exact decision of "unstable for every law" is not reached. On every sampled A (random
-  3 x 3, 4 x 4 and the stool of ``tests/stool.py``, see ``benchmarks/robustness.py``) a stable
-  law exists exactly when a nested sequence of positive principal minors does (P6 is one
-  direction); a proof of the other direction would decide that question for every k.
+- An exact decision of "unstable for every law" is not reached. P6's converse is false:
+  A = [[1.605, -0.411, 0.698], [1.762, -0.478, -1.444], [-1.948, 0.559, -0.922]] has no
+  nested sequence of positive principal minors, yet Phi = (-198.8, -2.839, -0.3529),
+  Psi = (-46.56, -25.54, -9.211) is exactly stable (``tests/test_robustness.py``). Such
+  matrices are rare among random ones (3 in 1500 with det A > 0 and no nested sequence,
+  k = 3), which is where the Positivstellensatz certificates (P5) and ``undecided`` live.
 
 Examples
 --------

@@ -222,6 +222,18 @@ def test_positivstellensatz_certificate_is_exact():
     assert result.verdict == "unstable" and result.certificate.kind == "Positivstellensatz"
 
 
+def test_a_stable_law_without_a_nested_sequence():
+    """P6's converse is false: no nested sequence of positive principal minors, yet a stable law."""
+    A = sp.Matrix([[1605, -411, 698], [1762, -478, -1444], [-1948, 559, -922]]) / 1000
+    lp = LawPolynomials(A)
+    assert lp.minors[(0, 1, 2)] > 0 and not nested_sequences(lp.minors)
+    assert not regions(A)["stable law exists"]
+    Phi = (-sp.Rational(9940, 50), -sp.Rational(2839, 1000), -sp.Rational(3529, 10000))
+    Psi = (-sp.Rational(1164, 25), -sp.Rational(1277, 50), -sp.Rational(9211, 1000))
+    assert all(sp.sympify(c) > 0 for c in Hurwitz(charpoly(A, Phi, Psi)).conditions)
+    assert check_claims(A).verdict == "law-dependent"
+
+
 def test_decide_rejects_symbolic_and_bad_matrices():
     with pytest.raises(ContactsymError, match="numeric A"):
         decide(sp.Matrix([[sp.Symbol("a")]]))
