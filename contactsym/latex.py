@@ -341,6 +341,21 @@ def _stability_formulas(st, present=False) -> list[Formula]:
         rows.append(Formula(key, lhs, show(value), ":", numbers, note))
     if st.hopf_frequency is not None:
         rows.append(_formula(scene, "hopf frequency", r"\omega", show(st.hopf_frequency)))
+    return rows + robustness_formulas(st.robustness)
+
+
+def robustness_formulas(robustness) -> list[Formula]:
+    """The point decision of :func:`contactsym.robustness.decide`: verdict, certificate, witness laws."""
+    if robustness is None:
+        return []
+    rows = [Formula("robustness", r"\text{robustness}", r"\text{" + robustness.verdict + "}", ":")]
+    if robustness.certificate is not None:
+        statement = robustness.certificate.statement.replace("_", r"\_")
+        rows.append(Formula("certificate", r"\text{certificate}", r"\text{" + statement + "}", ":"))
+    for name, law in (("stable", robustness.stable_law), ("unstable", robustness.unstable_law)):
+        if law is not None:
+            values = r",\ ".join([tex(sp.Tuple(*law.Phi)), tex(sp.Tuple(*law.Psi))])
+            rows.append(Formula("witness", r"(\Phi, \Psi)_{\text{" + name + "}}", values))
     return rows
 
 

@@ -34,7 +34,7 @@ import sympy as sp
 
 from .errata import AGREE, latex_table, text_to_latex
 from .errors import ContactsymError
-from .latex import Formula, hurwitz_names, paper_equations, tex
+from .latex import Formula, hurwitz_names, paper_equations, robustness_formulas, tex
 from .scenes import paper_name
 
 __all__ = [
@@ -544,6 +544,7 @@ def _hurwitz_section(scene, named: _Named) -> str:
         numbers, note = paper_equations(scene, "hopf frequency")
         omega2 = _tidy(show(st.poly.omega_squared))
         text.append(_display(Formula("hopf frequency", r"\omega^{2}", omega2, "=", numbers, note), named))
+    text += [_display(formula, named) for formula in robustness_formulas(st.robustness)]
     return "\n".join(text)
 
 
@@ -807,6 +808,8 @@ def conditions(scene, signs=None) -> dict:
         data["hurwitz"].append({"name": name, **_entry(condition, *paper_equations(scene, key))})
     if st.hopf_frequency is not None:
         data["hopf_frequency"] = _entry(st.hopf_frequency)
+    if st.robustness is not None:
+        data["robustness"] = _robustness_entry(st.robustness)
     try:
         for branch in scene.equilibria(signs).branches:
             data["equilibria"].append(
@@ -826,6 +829,20 @@ def conditions(scene, signs=None) -> dict:
     elif note:
         data["equilibrium_counts_note"] = note
     return data
+
+
+def _robustness_entry(robustness) -> dict:
+    """The point decision for a numeric A (k >= 3): verdict, certificate and witness laws."""
+    laws = {}
+    for name, law in (("stable", robustness.stable_law), ("unstable", robustness.unstable_law)):
+        if law is not None:
+            laws[name] = {"Phi": [sp.sstr(x) for x in law.Phi], "Psi": [sp.sstr(x) for x in law.Psi]}
+    certificate = robustness.certificate
+    return {
+        "verdict": robustness.verdict,
+        "certificate": None if certificate is None else {"kind": certificate.kind, "statement": certificate.statement},
+        "witness_laws": laws,
+    }
 
 
 def summary_text(data: dict) -> str:

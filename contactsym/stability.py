@@ -10,7 +10,11 @@ paper:
 - k = 2: Proposition 6 with Remarks 1-2: stable for every law, unstable for every law,
   or law-dependent (a Hopf bifurcation is possible);
 - k >= 3: Propositions 7 (A symmetric positive definite) and 8 (det A < 0 or all
-  a_ss < 0). What they do not decide is ``undecided``; ``law_dependent`` is None.
+  a_ss < 0), widened by the closed-form certificates of :mod:`contactsym.robustness`
+  (some p_s <= 0 for every law; law-dependent where a nested sequence of positive
+  principal minors gives a stable law and a negative principal minor an unstable one).
+  For a numeric A, ``robustness`` holds the point decision with its certificate or
+  witness laws, and ``undecided`` is True only where neither decides.
 """
 
 from __future__ import annotations
@@ -24,6 +28,8 @@ import sympy as sp
 from .algebra import normalize
 from .errors import SingularJacobianError
 from .hurwitz import Hurwitz
+from .robustness import Robustness, decide
+from .robustness import regions as robustness_regions
 
 __all__ = ["Stability"]
 
@@ -42,8 +48,10 @@ class Stability:
         Expressions that are all > 0 exactly when (4.5) is asymptotically stable.
     robustly_stable, robustly_unstable : sympy Boolean
         Stable (unstable) for every admissible law (1.5).
-    law_dependent : sympy Boolean or None
-        Stable for some laws and unstable for others (None for k >= 3: not decided).
+    law_dependent : sympy Boolean
+        Stable for some laws and unstable for others (for k >= 3 a sufficient region).
+    robustness : Robustness or None
+        For a numeric A and k >= 3: the point decision with its certificate or witness laws.
     undecided : sympy Boolean
         Where the propositions say nothing (det A = 0 for k <= 2).
     hopf : sympy Boolean
@@ -98,10 +106,11 @@ class Stability:
             not_unstable = sp.Or(*[_gt(a) for a in diagonal])
             not_stable = sp.Or(*[sp.Le(a, 0) for a in diagonal], sp.Lt(coupling, 0))
             return stable, unstable, sp.And(_gt(det), not_unstable, not_stable)
-        unstable = sp.Or(sp.Lt(det, 0), sp.And(*[sp.Lt(a, 0) for a in diagonal]))
+        closed = robustness_regions(A)
+        unstable = sp.Or(sp.Lt(det, 0), sp.And(*[sp.Lt(a, 0) for a in diagonal]), closed["unstable for every law"])
         symmetric = [sp.Eq(A[i, j], A[j, i]) for i in range(self.k) for j in range(i) if sp.expand(A[i, j] - A[j, i])]
         leading = [_gt(normalize(A[:m, :m].det(method="berkowitz"))) for m in range(1, self.k + 1)]
-        return sp.And(*symmetric, *leading), unstable, None
+        return sp.And(*symmetric, *leading), unstable, closed["law-dependent"]
 
     @cached_property
     def robustly_stable(self) -> sp.Basic:
@@ -116,10 +125,19 @@ class Stability:
         return self._classification[2]
 
     @cached_property
+    def robustness(self) -> Robustness | None:
+        """The point decision of :func:`contactsym.robustness.decide` for a numeric A (k >= 3), else None."""
+        if self.k < 3 or self.A.free_symbols or self.linearization.det_A == 0:
+            return None
+        return decide(self.A)
+
+    @cached_property
     def undecided(self) -> sp.Basic:
         decided = [self.robustly_stable, self.robustly_unstable]
         if self.law_dependent is not None:
             decided.append(self.law_dependent)
+        if self.robustness is not None and self.robustness.verdict != "undecided":
+            return sp.false
         return sp.Not(sp.Or(*decided))
 
     @cached_property
@@ -152,9 +170,13 @@ class Stability:
                 "Proposition 6 (unstable for every law)": self.robustly_unstable,
                 "Remarks 1-2 (law-dependent, Hopf possible)": self.law_dependent,
             }
+        closed = robustness_regions(self.A)
         return {
             "Proposition 7 (stable for every law)": self.robustly_stable,
             "Proposition 8 (unstable for every law)": self.robustly_unstable,
+            "some p_s <= 0 for every law (unstable for every law)": closed["unstable for every law"],
+            "nested positive principal minors (a stable law exists)": closed["stable law exists"],
+            "a negative principal minor (an unstable law exists)": closed["unstable law exists"],
         }
 
     @cached_property

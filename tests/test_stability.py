@@ -470,13 +470,13 @@ def test_k1_nonlinear_law_has_no_proposition_5():
     assert stability.linearization.Psi == (-d,)
 
 
-def test_k3_law_dependent_is_none_and_undecided_is_boolean():
+def test_k3_law_dependent_is_a_region_and_undecided_is_boolean():
     A, stability = symbolic(3)
-    assert stability.law_dependent is None
+    assert isinstance(stability.law_dependent, Boolean)
     assert isinstance(stability.undecided, Boolean)
     names = " ".join(stability.propositions)
     assert "Proposition 7" in names and "Proposition 8" in names
-    # a non-symmetric A with det A > 0 and a positive diagonal: neither proposition decides
+    # a non-symmetric A with all principal minors positive: no closed form decides
     B = sp.Matrix([[2, 1, 0], [-1, 2, 1], [0, -1, 2]])
     values = {A[i, j]: B[i, j] for i in range(3) for j in range(3)}
     assert truth(stability.undecided, values)
@@ -484,14 +484,15 @@ def test_k3_law_dependent_is_none_and_undecided_is_boolean():
     assert truth(stability.robustly_stable, spd)
     assert not truth(stability.undecided, spd)
     numeric = user_scene(B).stability()
-    assert numeric.law_dependent is None
-    assert numeric.undecided == sp.true
+    assert numeric.law_dependent == sp.false
+    assert numeric.robustness.verdict == "law-dependent"  # the point decision finds witness laws
+    assert numeric.undecided == sp.false
 
 
-def test_k4_law_dependent_is_none():
+def test_k4_law_dependent_is_decided():
     A = sp.Matrix([[3, 1, 0, 0], [1, 3, 1, 0], [0, 1, 3, 1], [0, 0, 1, 3]])
     stability = user_scene(A).stability()
-    assert stability.law_dependent is None
+    assert stability.law_dependent == sp.false
     assert stability.robustly_stable == sp.true
     assert isinstance(stability.undecided, Boolean) and stability.undecided == sp.false
     assert isinstance(stability, Stability)
