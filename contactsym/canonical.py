@@ -308,7 +308,7 @@ def _negative_first(k: tuple) -> bool:
 
 
 #: Polynomials with more terms than this are shown as they are, not converted to Fourier sums.
-_FOURIER_LIMIT = 400
+_FOURIER_LIMIT = 3000
 
 
 def _best_form(poly, pairs) -> sp.Expr:

@@ -460,3 +460,32 @@ def test_a_singular_mass_matrix_names_the_coordinates():
     coupled = m * (x.diff() + y.diff()) ** 2 / 2  # only x + y has inertia: det M = 0
     with pytest.raises(cs.SceneError, match=r"det M = 0.*\['x', 'y'\]"):
         cs.Scene.from_lagrangian(coupled, [x, y], [cs.Contact(coordinate=y, reaction=N)])
+
+
+def _naive_contact_accelerations(scene):
+    """g'' with the accelerations of an LU solve of the symbolic mass matrix, unsimplified."""
+    from contactsym.scene import t
+
+    space = scene.contact_space
+    accelerations = space.M.LUsolve(space.forcing)
+    second = {sp.diff(q, t, 2): a for q, a in zip(space.coordinates, accelerations)}
+    to_u = dict(zip(scene.reactions, scene.fast_subsystem().u))
+    return [scene.freeze(sp.diff(g, t, 2).subs(second)).subs(to_u) for g in scene.gaps]
+
+
+def test_stepladder_contact_accelerations_match_the_unsimplified_derivation():
+    """Four coordinates, three contacts: f(u) from the contact space equals g'' of the LU-solved
+    equations at random points (a wrong simplification would be a wrong result)."""
+    from contactsym.scenes.stepladder import build
+
+    scene = build()
+    fast = scene.fast_subsystem()
+    naive = _naive_contact_accelerations(scene)
+    symbols = sorted(set().union(*(e.free_symbols for e in list(fast.f) + naive)), key=str)
+    ours_f = sp.lambdify(symbols, list(fast.f), "math")
+    naive_f = sp.lambdify(symbols, naive, "math")
+    rng = random.Random(5)
+    for _ in range(20):
+        values = [rng.uniform(-2, 2) if s.is_positive is not True else rng.uniform(0.3, 2) for s in symbols]
+        expected = naive_f(*values)
+        assert ours_f(*values) == pytest.approx(expected, rel=1e-9, abs=1e-9)
