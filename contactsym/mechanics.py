@@ -23,7 +23,7 @@ built only when a stage asks for them (:attr:`ContactSpace.accelerations`).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import sympy as sp
 from sympy.physics.mechanics import LagrangesMethod, dynamicsymbols
@@ -172,14 +172,27 @@ def solve_fraction_free(
 
 
 def _adjugate_and_det(field, M: sp.Matrix):
-    """adj M and det M as field elements; in the polynomial ring (no gcds) when M's entries are
-    polynomials, as a mass matrix usually is."""
+    """adj M and det M as elements of ``field``; in the polynomial ring of M's own entries (no
+    gcds, computed once per matrix) when they are polynomials, as a mass matrix usually is."""
+    polynomial = _polynomial_adjugate(sp.ImmutableMatrix(M))
+    if polynomial is not None:
+        adj, det = polynomial
+        return [[field.field.new(x.set_ring(field.ring)) for x in row] for row in adj], field.field.new(
+            det.set_ring(field.ring)
+        )
     entries = [[field.element(x) for x in row] for row in M.tolist()]
-    if all(x.denom == 1 for row in entries for x in row):
-        polys = [[x.numer for x in row] for row in entries]
-        adj, det = adjugate_and_det(polys, field._reduce_poly)
-        return [[field.field.new(x) for x in row] for row in adj], field.field.new(det)
     return adjugate_and_det(entries, field.reduce)
+
+
+@lru_cache(maxsize=16)
+def _polynomial_adjugate(M: sp.ImmutableMatrix):
+    """(adj M, det M) as reduced polynomials of M's own field's ring, or None when an entry is
+    not a polynomial; cached: the fast subsystem and the sign of det M both need it."""
+    field = TrigField(list(M))
+    entries = [[field.element(x) for x in row] for row in M.tolist()]
+    if any(x.denom != 1 for row in entries for x in row):
+        return None
+    return adjugate_and_det([[x.numer for x in row] for row in entries], field._reduce_poly)
 
 
 def mass_determinant(M: sp.Matrix):
@@ -218,7 +231,31 @@ def _check_mass_matrix(M: sp.Matrix, coordinates) -> None:
 
 
 def mass_determinant_is_zero(M: sp.Matrix) -> bool:
-    return not _adjugate_and_det(TrigField(list(M)), M)[1]
+    """det M = 0 identically. A nonzero value at one exact point proves det M != 0: the point
+    puts rationals (2t/(1 + t^2), (1 - t^2)/(1 + t^2)) for each angle's sine and cosine, so the
+    test is exact and costs one rational determinant; only a zero there needs the symbolic det."""
+    field = TrigField(list(M))
+    entries = [[field.element(x) for x in row] for row in M.tolist()]
+    trig = {i for pair in field.pairs for i in pair}
+    if any(not g.is_Symbol and i not in trig for i, g in enumerate(field.ring.symbols)):
+        return not adjugate_and_det(entries, field.reduce)[1]  # sqrt(m) and m are not independent
+    point = [sp.Rational(k + 2, 2 * k + 7) for k in range(field.ring.ngens)]
+    for c, s in field.pairs:
+        t = sp.Rational(c + 1, c + 5)
+        point[c], point[s] = (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
+    try:
+        values = sp.Matrix([[_evaluate(x, point) for x in row] for row in entries])
+        if values.det() != 0:
+            return False
+    except ZeroDivisionError:  # the point hit a pole of an entry: decide symbolically
+        pass
+    return not adjugate_and_det(entries, field.reduce)[1]
+
+
+def _evaluate(value, point) -> sp.Rational:
+    numer = value.numer.evaluate(list(zip(value.numer.ring.gens, point)))
+    denom = value.denom.evaluate(list(zip(value.denom.ring.gens, point)))
+    return sp.Rational(numer) / sp.Rational(denom)
 
 
 def contact_space(lagrangian, coordinates, contacts, loads=(), frame=None) -> ContactSpace:
