@@ -238,6 +238,11 @@ class Coulomb:
     direction: object
     point: object = None
 
+    def __post_init__(self):
+        from .validate import friction_coefficient
+
+        object.__setattr__(self, "mu", friction_coefficient(self.mu))
+
     def magnitude(self, reaction: sp.Expr, slip_speed: sp.Expr | None) -> sp.Expr:
         return self.mu * sp.Abs(reaction)
 
@@ -258,6 +263,11 @@ class Viscous:
     c: sp.Expr
     direction: object
     point: object = None
+
+    def __post_init__(self):
+        from .validate import friction_coefficient
+
+        object.__setattr__(self, "c", friction_coefficient(self.c, "the viscous coefficient c"))
 
     def magnitude(self, reaction: sp.Expr, slip_speed: sp.Expr | None) -> sp.Expr:
         return self.c * slip_speed

@@ -13,6 +13,7 @@ from sympy.physics.vector import Point, Vector
 
 from .algebra import normalize
 from .errors import SceneError
+from .validate import mass_matrix
 
 __all__ = ["lagrangian_accelerations"]
 
@@ -75,5 +76,6 @@ def lagrangian_accelerations(lagrangian, coordinates, contacts, loads=(), frame=
         if gradient.is_zero_matrix:
             raise SceneError(f"the gap {contact.coordinate} does not depend on the coordinates {list(coordinates)}.")
         forcing = forcing + contact.reaction * gradient
+    mass_matrix(method.mass_matrix, coordinates)
     accelerations = method.mass_matrix.LUsolve(forcing)
     return [normalize(a) for a in accelerations]

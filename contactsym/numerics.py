@@ -52,6 +52,7 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
+from . import validate
 from .errors import ContactsymError
 from .laws import Compliance, Generic, KelvinVoigt, Law
 from .scene import t as _time
@@ -952,7 +953,9 @@ def integrate(
     ('ok', -0.68247)
     """
     start, end = _check_span(span, "span")
-    z0 = np.asarray(z0, dtype=float).ravel()
+    method = validate.solver_method(method)
+    t_eval = validate.output_times(t_eval, (start, end))
+    z0 = validate.real_array(z0, "the initial state").ravel()
     if z0.shape != (len(system.names),):
         raise NumericsError(
             f"the initial state has {z0.size} components; {system.description} has {len(system.names)}."
@@ -1949,7 +1952,7 @@ class PointClassifier:
             raise NumericsError(
                 f"give {len(self.parameters)} arrays, one per parameter {list(map(str, self.parameters))}."
             )
-        return [np.asarray(array, dtype=float) for array in arrays]
+        return [validate.real_array(array, f"the values of {symbol}") for symbol, array in zip(self.parameters, arrays)]
 
     def _check_values(self, arrays) -> None:
         for symbol, a in zip(self.parameters, arrays):
@@ -2006,6 +2009,7 @@ class PointClassifier:
         return None
 
     def __call__(self, *arrays, chunk: int = 1 << 15) -> _PointsResult:
+        chunk = validate.chunk_size(chunk)
         arrays = self._check(arrays)
         shape = np.broadcast(*arrays).shape if arrays else ()
         arrays = [np.ascontiguousarray(np.broadcast_to(a, shape)).ravel() for a in arrays]

@@ -17,6 +17,15 @@ from sympy.physics.mechanics import dynamicsymbols
 
 from .errors import SceneError, SignPatternError
 from .laws import Compliance, Coulomb, Generic, Viscous
+from .validate import (
+    contact_fields,
+    finite_expression,
+    positive_parameter,
+    reactions_act,
+    scene_parts,
+    shorten,
+    sign_pattern,
+)
 
 __all__ = ["Contact", "Scene", "t"]
 
@@ -58,10 +67,11 @@ class Contact:
     unilateral: bool = False
 
     def __post_init__(self):
+        contact_fields(self.coordinate, self.compliance, self.friction, self.unilateral)
         if self.compliance is None:
             object.__setattr__(self, "compliance", Generic())
         if not isinstance(self.reaction, sp.Symbol):
-            raise SceneError(f"the reaction of a contact must be a sympy Symbol, not {self.reaction!r}.")
+            raise SceneError(f"the reaction of a contact must be a sympy Symbol, not {shorten(self.reaction)}.")
 
     def __repr__(self) -> str:
         side = ", unilateral" if self.unilateral else ""
@@ -101,6 +111,7 @@ def _check_eps(eps) -> sp.Expr:
     if eps is None:
         return sp.Symbol("epsilon", positive=True)
     eps = sp.sympify(eps)
+    positive_parameter(eps, "eps", "it is the small time scale of the deformations (1.6)")
     if eps.is_positive:
         return eps
     if eps.is_positive is False:
@@ -166,6 +177,7 @@ class Scene:
         description: str = "",
         eps: sp.Symbol | None = None,
     ):
+        coordinates, accelerations, contacts = scene_parts(coordinates, accelerations, contacts)
         self.name = name
         self.description = description
         self.coordinates = tuple(coordinates)
@@ -201,11 +213,8 @@ class Scene:
         >>> cs.Scene.from_accelerations([x, y], [0, N - 1], [c]).accelerations[x]
         -mu*Abs(N)
         """
+        coordinates, accelerations, contacts = scene_parts(coordinates, accelerations, contacts)
         accelerations = [sp.sympify(g) for g in accelerations]
-        if len(accelerations) != len(coordinates):
-            raise SceneError(
-                f"got {len(accelerations)} accelerations for {len(coordinates)} coordinates; give one per coordinate."
-            )
         for contact in contacts:
             if contact.coordinate not in coordinates:
                 raise SceneError(
@@ -236,10 +245,13 @@ class Scene:
         """
         from .mechanics import lagrangian_accelerations
 
+        coordinates, _, contacts = scene_parts(coordinates, None, contacts)
         accelerations = lagrangian_accelerations(lagrangian, coordinates, contacts, loads, frame)
         return cls(coordinates, accelerations, contacts, **options)
 
     def _check(self, accelerations, parameters) -> None:
+        for q, g in self.accelerations.items():
+            finite_expression(g, f"the acceleration of {q}")
         if not self.contacts:
             raise SceneError("a scene needs at least one Contact.")
         for contact in self.contacts:
@@ -258,6 +270,7 @@ class Scene:
                 f"no acceleration depends on the reactions {sorted(map(str, reactions))}; "
                 "the contacts must act on the system (check the reaction symbols)."
             )
+        reactions_act(self.accelerations, self.contacts)
         if parameters is not None:
             declared = set(parameters) | reactions | {self.eps}
             unknown = {s for g in self.accelerations.values() for s in g.free_symbols} - declared - {t}
@@ -358,10 +371,10 @@ class Scene:
     def check_signs(self, signs) -> tuple:
         """Validate a sign pattern against the switching functions of the fast subsystem."""
         switching = self.fast_subsystem().switching
-        signs = tuple(signs)
+        signs = sign_pattern(signs)
         if len(signs) != len(switching):
             raise SignPatternError(
-                f"the sign pattern {signs} has length {len(signs)}, but scene '{self.name}' has "
+                f"the sign pattern {signs} has length {len(signs)}, but scene {shorten(self.name)} has "
                 f"{len(switching)} switching functions {list(switching)}; give one sign (+1 or -1) each."
             )
         for value, s in zip(signs, switching):
@@ -408,13 +421,15 @@ class Scene:
         """Hurwitz conditions (4.7) and the robustness classification (Props. 3-8)."""
         from .stability import Stability
 
-        return self._stage(("stability", signs and tuple(signs)), lambda: Stability(self.linearization(signs)))
+        key = None if signs is None else self.check_signs(signs)
+        return self._stage(("stability", key), lambda: Stability(self.linearization(key)))
 
     def regions(self, signs=None) -> dict:
         """Named closed-form regions: stable / unstable for every law, law-dependent, Hopf line."""
         from .regions import scene_regions
 
-        return self._stage(("regions", signs and tuple(signs)), lambda: scene_regions(self, signs))
+        key = None if signs is None else self.check_signs(signs)
+        return self._stage(("regions", key), lambda: scene_regions(self, key))
 
     def equilibrium_counts(self) -> dict:
         """Named closed-form regions by the number of equilibria (see :mod:`contactsym.counts`)."""
