@@ -992,15 +992,33 @@ def write_report(
     pdf: bool = True,
     figures: FigureSource | None = None,
     progress: Callable[[str], None] | None = None,
+    force: bool = False,
 ) -> ReportResult:
     """Write ``directory/report.tex``, ``conditions.json``, ``figures/*.png`` and ``report.pdf``.
 
     ``figures`` shares drawn figures between scenes (one is made when not given);
     ``progress`` receives short messages. ``report.pdf`` is made when ``pdf`` is true and
-    pdflatex is installed.
+    pdflatex is installed. All or nothing: the files are written to a directory beside
+    ``directory`` that replaces it only when all succeeded (see :mod:`contactsym.atomic`);
+    an existing directory that contactsym did not write is replaced only with ``force``.
     """
-    say = progress or (lambda message: None)
+    from .atomic import replaced_directory
+
     directory = Path(directory)
+    with replaced_directory(directory, force=force, error=ReportError) as work:
+        result = _write_files(scene, work, pdf, figures, progress or (lambda message: None))
+    return ReportResult(
+        scene.name,
+        directory,
+        directory / result.tex.name,
+        directory / result.conditions.name,
+        None if result.pdf is None else directory / result.pdf.name,
+        [Figure(directory / "figures" / f.path.name, f.caption) for f in result.figures],
+        result.notes,
+    )
+
+
+def _write_files(scene, directory: Path, pdf: bool, figures: FigureSource | None, say) -> ReportResult:
     try:
         (directory / "figures").mkdir(parents=True, exist_ok=True)
     except OSError as error:
