@@ -54,6 +54,7 @@ from scipy.integrate import solve_ivp
 
 from . import validate
 from .errors import ContactsymError
+from .intervals import interval_sign
 from .laws import Compliance, Generic, KelvinVoigt, Law
 from .scene import t as _time
 
@@ -1689,6 +1690,9 @@ def _exact_sign(expr: sp.Expr) -> int:
         raise NumericsError(
             f"cannot decide the sign of {expr}: values are missing for {sorted(map(str, expr.free_symbols))}."
         )
+    found = interval_sign(expr)  # proven by outward rounding; evalf's strict mode gives up on deep cancellation
+    if found is not None:
+        return found
     for precision in (30, 100, 300):
         try:
             value = expr.evalf(precision, strict=True)
