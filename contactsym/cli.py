@@ -163,6 +163,7 @@ class _Parser(argparse.ArgumentParser):
     """argparse with one-line errors."""
 
     def error(self, message: str):
+        message = message if len(message) <= 200 else f"{message[:200]}... ({len(message)} characters)"
         self.exit(USAGE, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 

@@ -67,14 +67,18 @@ class Generic(Compliance):
 
 
 def _require_positive(value: sp.Expr, what: str) -> sp.Expr:
+    from .validate import positive_parameter, shorten
+
+    positive_parameter(value, what, "(1.5) needs a positive law", ComplianceError)
     value = sp.sympify(value)
+    positive_parameter(value, what, "(1.5) needs a positive law", ComplianceError)
     if value.is_positive:
         return value
     if value.is_positive is False:
-        raise ComplianceError(f"{what} = {value} is not positive, so (1.5) fails; use a positive {what}.")
+        raise ComplianceError(f"{what} = {shorten(value)} is not positive, so (1.5) fails; use a positive {what}.")
     raise ComplianceError(
-        f"cannot show {what} = {value} > 0 as (1.5) requires; "
-        f"declare its symbols with positive=True, e.g. sympy.Symbol('{value}', positive=True)."
+        f"cannot show {what} = {shorten(value)} > 0 as (1.5) requires; "
+        f"declare its symbols with positive=True, e.g. sympy.Symbol('{shorten(value)}', positive=True)."
     )
 
 

@@ -100,9 +100,11 @@ class NumericsError(ContactsymError):
 def _number(value, name: str) -> sp.Expr:
     """A finite real number as a SymPy number; never parses text."""
     if isinstance(value, (str, bytes)):
-        raise NumericsError(f"{name} = {value!r} is text; pass a number (contactsym never parses text).")
+        raise NumericsError(
+            f"{name} = {validate.shorten(value)} is text; pass a number (contactsym never parses text)."
+        )
     if isinstance(value, (bool, np.bool_)):
-        raise NumericsError(f"{name} = {value!r} is a truth value; pass a number.")
+        raise NumericsError(f"{name} = {validate.shorten(value)} is a truth value; pass a number.")
     if isinstance(value, (int, np.integer)):
         return sp.Integer(int(value))
     if isinstance(value, Fraction):
@@ -115,18 +117,18 @@ def _number(value, name: str) -> sp.Expr:
     if isinstance(value, sp.Basic):
         if value.free_symbols:
             raise NumericsError(
-                f"{name} = {value} still contains the symbols {sorted(map(str, value.free_symbols))}; pass a number."
+                f"{name} = {validate.shorten(value)} still contains the symbols {sorted(map(str, value.free_symbols))}; pass a number."
             )
         if value.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or value.is_finite is False:
-            raise NumericsError(f"{name} = {value} is not finite; pass a finite number.")
+            raise NumericsError(f"{name} = {validate.shorten(value)} is not finite; pass a finite number.")
         if value.is_real is False:
-            raise NumericsError(f"{name} = {value} is not real; pass a real number.")
+            raise NumericsError(f"{name} = {validate.shorten(value)} is not real; pass a real number.")
         if not value.is_number:
-            raise NumericsError(f"{name} = {value} is not a number.")
+            raise NumericsError(f"{name} = {validate.shorten(value)} is not a number.")
         if not math.isfinite(float(value)):
-            raise NumericsError(f"{name} = {value} is not finite; pass a finite number.")
+            raise NumericsError(f"{name} = {validate.shorten(value)} is not finite; pass a finite number.")
         return value
-    raise NumericsError(f"{name} = {value!r} of type {type(value).__name__} is not a number.")
+    raise NumericsError(f"{name} = {validate.shorten(value)} of type {type(value).__name__} is not a number.")
 
 
 def _positive(value, name: str, why: str) -> float:
@@ -905,7 +907,7 @@ class Simulation:
 
 def _check_span(span, name: str) -> tuple[float, float]:
     if not isinstance(span, (tuple, list)) or len(span) != 2:
-        raise NumericsError(f"{name} = {span!r} must be a pair (start, end).")
+        raise NumericsError(f"{name} = {validate.shorten(span)} must be a pair (start, end).")
     start, end = (float(_number(v, name)) for v in span)
     if not end > start:
         raise NumericsError(f"{name} = ({start}, {end}): the end must come after the start.")

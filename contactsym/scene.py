@@ -110,13 +110,17 @@ def _check_eps(eps) -> sp.Expr:
     """eps is the small positive parameter of (1.6): a positive symbol or number."""
     if eps is None:
         return sp.Symbol("epsilon", positive=True)
+    why = "it is the small time scale of the deformations (1.6)"
+    positive_parameter(eps, "eps", why)
     eps = sp.sympify(eps)
-    positive_parameter(eps, "eps", "it is the small time scale of the deformations (1.6)")
+    positive_parameter(eps, "eps", why)
     if eps.is_positive:
         return eps
     if eps.is_positive is False:
-        raise SceneError(f"eps = {eps} must be > 0: it is the small time scale of the deformations (1.6).")
-    raise SceneError(f"cannot show eps = {eps} > 0; use sympy.Symbol('{eps}', positive=True) or a positive number.")
+        raise SceneError(f"eps = {shorten(eps)} must be > 0: {why}.")
+    raise SceneError(
+        f"cannot show eps = {shorten(eps)} > 0; use sympy.Symbol('epsilon', positive=True) or a positive number."
+    )
 
 
 class Scene:

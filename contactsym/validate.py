@@ -95,9 +95,18 @@ def finite_expression(expr, what: str, error=SceneError) -> sp.Expr:
     return expr
 
 
-def positive_parameter(value: sp.Expr, what: str, why: str, error=SceneError) -> None:
-    """Reject nan and infinities in a parameter that must be a finite positive number or symbol."""
-    if isinstance(value, sp.Basic) and value.has(*_NOT_FINITE):
+def positive_parameter(value, what: str, why: str, error=SceneError) -> None:
+    """Reject wrong types, nan and infinities in a parameter that must be a finite positive number or symbol.
+
+    Text is let through: whoever parses it checks the result again.
+    """
+    if isinstance(value, str):
+        return
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (sp.Basic, *_NUMBER_TYPES)):
+        raise error(f"{what} must be a number or a SymPy symbol, not {type(value).__name__} {shorten(value)}.")
+    if isinstance(value, _NUMBER_TYPES):
+        value = sp.sympify(value)
+    if value.has(*_NOT_FINITE):
         kind = "not a number" if value.has(sp.nan) else "infinite"
         raise error(f"{what} = {shorten(value)} is {kind}; {why}: pass a finite positive number or positive Symbol.")
 
