@@ -251,7 +251,8 @@ def cli_case(rng: random.Random) -> Case:
             raise cs.ContactsymError(lines[0])
         return code
 
-    return Case(f"cli {argv[0][:12]!r}", call, is_bad)
+    command = argv[0] if argv[0] in ("show", "list", "conditions", "report", "bench") else "(no command)"
+    return Case(f"cli {command}", call, is_bad)
 
 
 CASES = [

@@ -100,7 +100,7 @@ def parse_signs(text: str) -> tuple[int, ...]:
         raise SignPatternError("--signs is empty; write e.g. --signs +1,-1.")
     for token in tokens:
         if token not in values:
-            raise SignPatternError(f"--signs: '{token}' is not a sign; write e.g. --signs +1,-1.")
+            raise SignPatternError(f"--signs: {shorten(token)} is not a sign; write e.g. --signs +1,-1.")
     return tuple(values[token] for token in tokens)
 
 

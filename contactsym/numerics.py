@@ -56,6 +56,7 @@ from . import validate
 from .errors import ContactsymError
 from .intervals import interval_sign
 from .laws import Compliance, Generic, KelvinVoigt, Law
+from .progress import Budget, Progress
 from .scene import t as _time
 
 __all__ = [
@@ -914,6 +915,30 @@ def _check_span(span, name: str) -> tuple[float, float]:
     return start, end
 
 
+def _budget_message(method: str, analytic: bool, counter: dict, max_rhs: int, budget, span, time_name) -> str:
+    """What ran out, how far the run got, and advice that is not what was already done."""
+    start, end = span
+    spent = (
+        f"{budget.elapsed:.0f} s (max_seconds = {budget.max_seconds:g})"
+        if counter["n"] <= max_rhs
+        else f"{max_rhs} right-hand-side evaluations (max_rhs)"
+    )
+    reached = (
+        f"stopped at {time_name} = {counter['t']:.6g}, {100 * (counter['t'] - start) / (end - start):.3g}% of the span"
+    )
+    if analytic:  # the stiff solver with the exact Jacobian was already in use: the work itself is large
+        advice = (
+            f"{method} already had the analytic Jacobian, so the cost is the number of fast time scales in the "
+            "span: shorten the span, take a larger eps, or use the reduced system (simulate_reduced) for the "
+            "slow motion; raise the limit only if the whole run is needed"
+        )
+    elif method in _IMPLICIT:
+        advice = "pass jacobian=True so that the solver gets the analytic Jacobian"
+    else:
+        advice = f"{method} is explicit and contacts are stiff: use method='Radau' or 'BDF' with the analytic Jacobian"
+    return f"{method} used up its budget of {spent}; {reached}. {advice}."
+
+
 def integrate(
     system: OdeSystem,
     span,
@@ -928,6 +953,8 @@ def integrate(
     max_rhs: int = 2_000_000,
     reaction_bound: float | None = None,
     events: Sequence = (),
+    progress: Progress | None = None,
+    max_seconds: float | None = None,
 ) -> Simulation:
     """Integrate a generated system with ``scipy.integrate.solve_ivp``.
 
@@ -944,6 +971,10 @@ def integrate(
         Stop with status ``"failed"`` after this many right-hand-side evaluations.
     reaction_bound : float, optional
         Stop with status ``"impact"`` when some |N_j| exceeds it.
+    progress : callable, optional
+        ``progress(fraction of the span done, message)``, a few times per second.
+    max_seconds : float, optional
+        Stop with status ``"failed"`` after this much wall time, saying how far the run got.
 
     Examples
     --------
@@ -971,11 +1002,15 @@ def integrate(
         atol = rtol * np.maximum(magnitude, max(1e-12 * float(magnitude.max(initial=0.0)), 1e-300))
         if not magnitude.any():
             atol = np.full_like(z0, rtol)
-    counter = {"n": 0}
+    counter = {"n": 0, "t": start}
+    budget = Budget(progress, max_seconds)
 
     def fun(t, y):
         counter["n"] += 1
+        counter["t"] = t
         if counter["n"] > max_rhs:
+            raise _Budget
+        if counter["n"] % 64 == 0 and budget.report((t - start) / (end - start), f"{system.time} = {t:.4g}"):
             raise _Budget
         out = system.fun(t, y)
         if not np.all(np.isfinite(out)):
@@ -1021,14 +1056,13 @@ def integrate(
             )
     except _Budget:
         status = "failed"
-        message = (
-            f"{method} needed more than {max_rhs} right-hand-side evaluations; the problem is stiff: "
-            "use method='Radau' or 'BDF' with the analytic Jacobian, or raise max_rhs."
-        )
+        message = _budget_message(method, analytic, counter, max_rhs, budget, (start, end), system.time)
     except _NotFinite as stop:
         status = "failed"
         message = f"the right-hand side is not finite at {system.time} = {stop.args[0]:.6g}; check the parameters."
     wall, cpu = time.perf_counter() - started, time.process_time() - cpu
+    if status == "ok":
+        budget.report(1.0, f"{system.time} = {end:.4g}")
     if result is None:
         empty = np.empty((len(system.names), 0))
         return Simulation(
@@ -1174,6 +1208,8 @@ def simulate_full(
     reaction_bound: float | None = None,
     bound_factor: float = 1e6,
     max_rhs: int = 2_000_000,
+    progress: Progress | None = None,
+    max_seconds: float | None = None,
 ) -> Simulation:
     """Simulate the full compliant system (1.9) at ``eps`` in the original time t.
 
@@ -1187,6 +1223,8 @@ def simulate_full(
         at the equilibrium u* (to leading order on the slow manifold).
     laws, unilateral
         See :func:`full_system`.
+    progress, max_seconds
+        Progress reports and a wall-time limit; see :func:`integrate`.
     reaction_bound : float, optional
         |N_j| beyond which the run stops as an impact-type catastrophe; default
         ``bound_factor`` times the scale of the reactions (|u*|, or the loads'
@@ -1317,6 +1355,8 @@ def simulate_full(
         dense_output=dense_output,
         max_rhs=max_rhs,
         reaction_bound=bound,
+        progress=progress,
+        max_seconds=max_seconds,
     )
     extra = {
         "eps": eps,
@@ -2014,8 +2054,13 @@ class PointClassifier:
                 return 1 if value > 0 else -1
         return None
 
-    def __call__(self, *arrays, chunk: int = 1 << 15) -> _PointsResult:
+    def __call__(
+        self, *arrays, chunk: int = 1 << 15, progress: Progress | None = None, max_seconds: float | None = None
+    ) -> _PointsResult:
+        """Classify the points; ``progress(fraction, message)`` follows the exact path, which
+        ``max_seconds`` bounds (a NumericsError then says how many points were decided)."""
         chunk = validate.chunk_size(chunk)
+        budget = Budget(progress, max_seconds)
         arrays = self._check(arrays)
         shape = np.broadcast(*arrays).shape if arrays else ()
         arrays = [np.ascontiguousarray(np.broadcast_to(a, shape)).ravel() for a in arrays]
@@ -2033,11 +2078,18 @@ class PointClassifier:
         for position in range(len(self.kept)):
             in_band |= factor_signs[position] == 0
         points = np.nonzero(in_band)[0]
-        for i in points:
+        for done, i in enumerate(points):
+            if budget.report(done / len(points), f"{done} of {len(points)} points decided exactly"):
+                raise NumericsError(
+                    f"the exact path decided {done} of {len(points)} points near a boundary within max_seconds = "
+                    f"{max_seconds:g} (the float stage decided the other {size - len(points)}); raise max_seconds, "
+                    "or classify fewer points at a time."
+                )
             point = [float(a[i]) for a in arrays]
             for position in np.nonzero(factor_signs[:, i] == 0)[0]:
                 factor_signs[position, i] = self._exact_factor_sign(position, point)
             self._combine(factor_signs[:, i : i + 1], signs[:, i : i + 1], stable[i : i + 1])
+        budget.report(1.0, f"{size} points, {len(points)} decided exactly")
         bands = [max(self.band, 2 * g) for g in self.gammas]
         return _PointsResult(
             stable.reshape(shape),
