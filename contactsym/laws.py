@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from .errors import ComplianceError
+from .validate import friction_coefficient, positive_parameter, shorten
 
 __all__ = ["Compliance", "Generic", "KelvinVoigt", "Law", "Coulomb", "Viscous"]
 
@@ -67,9 +68,7 @@ class Generic(Compliance):
 
 
 def _require_positive(value: sp.Expr, what: str) -> sp.Expr:
-    from .validate import positive_parameter, shorten
-
-    positive_parameter(value, what, "(1.5) needs a positive law", ComplianceError)
+    positive_parameter(value, what, "(1.5) needs a positive law", ComplianceError)  # before parsing, and after
     value = sp.sympify(value)
     positive_parameter(value, what, "(1.5) needs a positive law", ComplianceError)
     if value.is_positive:
@@ -243,8 +242,6 @@ class Coulomb:
     point: object = None
 
     def __post_init__(self):
-        from .validate import friction_coefficient
-
         object.__setattr__(self, "mu", friction_coefficient(self.mu))
 
     def magnitude(self, reaction: sp.Expr, slip_speed: sp.Expr | None) -> sp.Expr:
@@ -269,8 +266,6 @@ class Viscous:
     point: object = None
 
     def __post_init__(self):
-        from .validate import friction_coefficient
-
         object.__setattr__(self, "c", friction_coefficient(self.c, "the viscous coefficient c"))
 
     def magnitude(self, reaction: sp.Expr, slip_speed: sp.Expr | None) -> sp.Expr:

@@ -111,7 +111,7 @@ def _check_eps(eps) -> sp.Expr:
     if eps is None:
         return sp.Symbol("epsilon", positive=True)
     why = "it is the small time scale of the deformations (1.6)"
-    positive_parameter(eps, "eps", why)
+    positive_parameter(eps, "eps", why)  # types and non-finite numbers before parsing, a parsed nan after
     eps = sp.sympify(eps)
     positive_parameter(eps, "eps", why)
     if eps.is_positive:
