@@ -924,7 +924,7 @@ def _budget_message(method: str, analytic: bool, counter: dict, max_rhs: int, bu
         else f"{max_rhs} right-hand-side evaluations (max_rhs)"
     )
     reached = (
-        f"stopped at {time_name} = {counter['t']:.6g}, {100 * (counter['t'] - start) / (end - start):.3g}% of the span"
+        f"it reached {time_name} = {counter['t']:.6g}, {100 * (counter['t'] - start) / (end - start):.3g}% of the span"
     )
     if analytic:  # the stiff solver with the exact Jacobian was already in use: the work itself is large
         advice = (
@@ -1002,15 +1002,15 @@ def integrate(
         atol = rtol * np.maximum(magnitude, max(1e-12 * float(magnitude.max(initial=0.0)), 1e-300))
         if not magnitude.any():
             atol = np.full_like(z0, rtol)
-    counter = {"n": 0, "t": start}
+    counter = {"n": 0, "t": start}  # t: the furthest time evaluated, for progress and for a spent budget
     budget = Budget(progress, max_seconds)
 
     def fun(t, y):
         counter["n"] += 1
-        counter["t"] = t
+        counter["t"] = max(counter["t"], t)
         if counter["n"] > max_rhs:
             raise _Budget
-        if counter["n"] % 64 == 0 and budget.report((t - start) / (end - start), f"{system.time} = {t:.4g}"):
+        if counter["n"] % 64 == 0 and budget.report((counter["t"] - start) / (end - start), f"{system.time} = {t:.4g}"):
             raise _Budget
         out = system.fun(t, y)
         if not np.all(np.isfinite(out)):

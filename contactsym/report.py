@@ -1006,7 +1006,7 @@ def write_report(
 
     directory = Path(directory)
     with replaced_directory(directory, force=force, error=ReportError) as work:
-        result = _write_files(scene, work, pdf, figures, progress or (lambda message: None))
+        result = _write_files(scene, work, pdf, figures, progress or (lambda message: None), directory)
     return ReportResult(
         scene.name,
         directory,
@@ -1018,7 +1018,20 @@ def write_report(
     )
 
 
-def _write_files(scene, directory: Path, pdf: bool, figures: FigureSource | None, say) -> ReportResult:
+def _compile_keeping_log(tex: Path, target: Path) -> Path | None:
+    """compile_pdf; on failure the log is copied beside ``target``, since the directory of ``tex`` is removed."""
+    try:
+        return compile_pdf(tex)
+    except ReportError as error:
+        log, kept = tex.with_suffix(".log"), target.with_name(f"{target.name}-pdflatex.log")
+        message = str(error).replace(str(tex), str(target / tex.name))
+        if log.exists():
+            shutil.copyfile(log, kept)
+            message = message.replace(str(log), str(kept))
+        raise ReportError(f"{message} The previous report is unchanged.") from error
+
+
+def _write_files(scene, directory: Path, pdf: bool, figures: FigureSource | None, say, final: Path) -> ReportResult:
     try:
         (directory / "figures").mkdir(parents=True, exist_ok=True)
     except OSError as error:
@@ -1042,7 +1055,7 @@ def _write_files(scene, directory: Path, pdf: bool, figures: FigureSource | None
     result.tex.write_text(report_tex(scene, placed, notes))
     if pdf:
         say("pdflatex")
-        result.pdf = compile_pdf(result.tex)
+        result.pdf = _compile_keeping_log(result.tex, final)
         if result.pdf is None:
             result.notes.append(
                 "pdflatex is not installed: report.pdf was not made (apt-get install texlive-latex-base)."

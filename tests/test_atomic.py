@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -111,6 +112,22 @@ def test_a_report_that_fails_midway_leaves_the_old_report_whole(tmp_path, monkey
         report.write_report(cs.scene("sliding-point"), target, pdf=True)
     assert _snapshot(target) == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["sliding-point"]
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed")
+def test_a_pdflatex_failure_keeps_the_old_report_and_the_log(tmp_path, monkeypatch):
+    target = tmp_path / "sliding-point"
+    before = _old_report(target)
+    bad = r"\documentclass{article}\begin{document}\undefinedmacro\end{document}"
+    monkeypatch.setattr(report, "report_tex", lambda *args: bad)
+    with pytest.raises(report.ReportError) as caught:
+        report.write_report(cs.scene("sliding-point"), target, pdf=True)
+    kept = tmp_path / "sliding-point-pdflatex.log"
+    assert "Undefined control sequence" in str(caught.value) and str(kept) in str(caught.value)
+    assert "previous report is unchanged" in str(caught.value) and ".new-" not in str(caught.value)
+    assert "undefinedmacro" in kept.read_text(errors="replace")
+    assert _snapshot(target) == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["sliding-point", "sliding-point-pdflatex.log"]
 
 
 def test_a_report_replaces_its_own_old_report_but_not_a_users_files(tmp_path):

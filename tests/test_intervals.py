@@ -17,19 +17,19 @@ small_ints = st.integers(min_value=-5, max_value=5)
 
 
 def _reference_sign(expr) -> int:
-    """The sign at 2000 digits (mpmath, not the interval code)."""
-    value = sp.N(expr, 2000)
-    assert abs(value) > sp.Float(10, 2000) ** -1500, "too close to zero for the reference"
+    """The sign at 1000 digits (mpmath, not the interval code)."""
+    value = sp.N(expr, 1000)
+    assert abs(value) > sp.Float(10, 1000) ** -700, "too close to zero for the reference"
     return 1 if value > 0 else -1
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=25, deadline=None)
 @given(rationals, st.lists(small_ints, min_size=4, max_size=4), st.integers(min_value=0, max_value=40))
 def test_interval_sign_agrees_with_high_precision_on_random_trigonometric_polynomials(angle, coefficients, shift):
     a, b, c, d = coefficients
     expr = a * sp.sin(angle) ** 2 + b * sp.cos(angle) ** 3 + c * sp.tan(angle / 7) + d * sp.exp(angle / 50)
     expr += sp.Rational(1, 2**shift)  # near-cancellation at small scales
-    if sp.N(expr, 2000) == 0:
+    if sp.N(expr, 1000) == 0:
         return
     assert interval_sign(expr) == _reference_sign(expr)
 
@@ -73,7 +73,7 @@ def test_classify_decides_the_guides_point_of_issue_14():
     """evalf(strict=True) gave up here ("agrees with 0 to 300 digits"); the intervals decide it."""
     st_ = cs.scene("painleve-klein-guides").stability((1, 1))
     verdict = nm.classify(st_, GUIDES_POINT)
-    # independent check: every Hurwitz condition in 300-digit mpmath from the same binary inputs
+    # independent check: every Hurwitz condition in 1000-digit mpmath from the same binary inputs
     exact = {sp.Symbol(k, real=True): sp.Rational(v) for k, v in GUIDES_POINT.items()}
     by_name = {str(s): s for c in st_.hurwitz for s in c.free_symbols}
     at = {by_name[str(k)]: v for k, v in exact.items() if str(k) in by_name}

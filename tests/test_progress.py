@@ -70,7 +70,7 @@ def test_the_stiff_brake_at_eps_1e_6_stops_at_its_time_limit_without_advising_wh
     assert run.status == "failed" and run.analytic_jacobian and run.method == "Radau"
     assert "max_seconds = 1" in run.message
     assert "already had the analytic Jacobian" in run.message and "simulate_reduced" in run.message
-    reached = float(run.message.split("stopped at t = ")[1].split(",")[0])
+    reached = float(run.message.split("it reached t = ")[1].split(",")[0])
     assert 0 <= reached < 1
 
 
