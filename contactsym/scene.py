@@ -20,8 +20,10 @@ from .laws import Compliance, Coulomb, Generic, Viscous
 from .validate import (
     contact_fields,
     finite_expression,
+    lagrangian_parts,
     positive_parameter,
     reactions_act,
+    scene_options,
     scene_parts,
     shorten,
     sign_pattern,
@@ -182,6 +184,7 @@ class Scene:
         eps: sp.Symbol | None = None,
     ):
         coordinates, accelerations, contacts = scene_parts(coordinates, accelerations, contacts)
+        scene_options(name, description, at, presentation, parameters, positive, solve_for)
         self.name = name
         self.description = description
         self.coordinates = tuple(coordinates)
@@ -250,6 +253,7 @@ class Scene:
         from .mechanics import lagrangian_accelerations
 
         coordinates, _, contacts = scene_parts(coordinates, None, contacts)
+        lagrangian_parts(lagrangian, loads, frame)
         accelerations = lagrangian_accelerations(lagrangian, coordinates, contacts, loads, frame)
         return cls(coordinates, accelerations, contacts, **options)
 

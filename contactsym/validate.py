@@ -190,6 +190,41 @@ def scene_parts(coordinates, accelerations, contacts) -> tuple[tuple, tuple, tup
     return coordinates, accelerations, contacts
 
 
+def scene_options(name, description, at, presentation, parameters, positive, solve_for) -> None:
+    """The keyword options of a Scene: text, mappings, sequences of SymPy objects."""
+    for what, text in (("name", name), ("description", description)):
+        if not isinstance(text, str):
+            raise SceneError(f"{what} must be text, not {type(text).__name__} {shorten(text)}.")
+    for what, mapping in (("at", at), ("presentation", presentation)):
+        if mapping is not None and not isinstance(mapping, dict):
+            raise SceneError(f"{what} must be a dict {{symbol: expression}}, not {type(mapping).__name__}.")
+        for key, value in (mapping or {}).items():
+            finite_expression(key, f"a key of {what}")
+            finite_expression(value, f"{what}[{shorten(key)}]")
+    if parameters is not None:
+        for symbol in _sequence(parameters, "parameters", "give a list of sympy Symbols"):
+            if not isinstance(symbol, sp.Symbol):
+                raise SceneError(f"parameter {shorten(symbol)} is not a sympy Symbol.")
+    for expr in _sequence(positive, "positive", "give a tuple of expressions positive in the scene's domain"):
+        finite_expression(expr, "an expression of positive")
+    if solve_for is not None and not isinstance(solve_for, sp.Symbol):
+        raise SceneError(f"solve_for = {shorten(solve_for)} must be a sympy Symbol (a parameter).")
+
+
+def lagrangian_parts(lagrangian, loads, frame) -> None:
+    """A finite Lagrangian, loads as (Point or ReferenceFrame, Vector) pairs, and an optional frame."""
+    from sympy.physics.vector import Point, ReferenceFrame, Vector
+
+    finite_expression(lagrangian, "the Lagrangian")
+    for load in _sequence(loads, "loads", "give a list of (Point or ReferenceFrame, Vector) pairs"):
+        if not (isinstance(load, (tuple, list)) and len(load) == 2 and isinstance(load[0], (Point, ReferenceFrame))):
+            raise SceneError(f"load {shorten(load)} must be a pair (Point or ReferenceFrame, Vector).")
+        if not isinstance(load[1], Vector) and load[1] != 0:
+            raise SceneError(f"the force or torque of load {shorten(load)} must be a sympy Vector.")
+    if frame is not None and not isinstance(frame, ReferenceFrame):
+        raise SceneError(f"frame = {shorten(frame)} must be the inertial ReferenceFrame (or None).")
+
+
 def _check_accelerations(coordinates: tuple, accelerations) -> tuple:
     accelerations = _sequence(accelerations, "accelerations", "give one expression per coordinate")
     if len(accelerations) != len(coordinates):

@@ -22,6 +22,13 @@ def _scene(accelerations=(X, N + Y), contacts=(CONTACT,), **options):
     return cs.Scene.from_accelerations([x, y], list(accelerations), contacts, **options)
 
 
+LAGRANGIAN = x.diff() ** 2 / 2 + y.diff() ** 2 / 2 - y
+
+
+def _lagrangian(lagrangian=LAGRANGIAN, **options):
+    return cs.Scene.from_lagrangian(lagrangian, [x, y], [CONTACT], **options)
+
+
 SCENE_CASES = [
     # (label, call, error type, words the message must contain)
     ("inf*N acceleration", lambda: _scene([X, float("inf") * N + Y]), SceneError, "not finite"),
@@ -61,6 +68,18 @@ SCENE_CASES = [
     ("stability((1.0, 1))", lambda: cs.scene("brake").stability((1.0, 1)), SignPatternError, "+1 or -1"),
     ("stability((True, 1))", lambda: cs.scene("brake").stability((True, 1)), SignPatternError, "+1 or -1"),
     ("equilibria(5)", lambda: cs.scene("brake").equilibria(5), SignPatternError, "must be a list"),
+    ("name=None", lambda: _scene(name=None), SceneError, "name must be text"),
+    ("at=5", lambda: _scene(at=5), SceneError, "at must be a dict"),
+    ("at with nan", lambda: _scene(at={X: sp.nan}), SceneError, "not a number"),
+    ("parameters=5", lambda: _scene(parameters=5), SceneError, "parameters must be a list"),
+    ("parameters of text", lambda: _scene(parameters=["X"]), SceneError, "not a sympy Symbol"),
+    ("positive=None", lambda: _scene(positive=None), SceneError, "positive must be a list"),
+    ("solve_for='mu'", lambda: _scene(solve_for="mu"), SceneError, "must be a sympy Symbol"),
+    ("Lagrangian None", lambda: _lagrangian(None), SceneError, "the Lagrangian must be a SymPy expression"),
+    ("Lagrangian with nan", lambda: _lagrangian(sp.nan * x.diff() ** 2), SceneError, "not a number"),
+    ("loads=[1, 2]", lambda: _lagrangian(loads=[1, 2]), SceneError, "must be a pair"),
+    ("loads=None", lambda: _lagrangian(loads=None), SceneError, "loads must be a list"),
+    ("frame=3", lambda: _lagrangian(frame=3), SceneError, "inertial ReferenceFrame"),
     ("scene(None)", lambda: cs.scene(None), SceneError, "must be text"),
     ("scene(3)", lambda: cs.scene(3), SceneError, "must be text"),
 ]
