@@ -96,12 +96,17 @@ def _finite(values) -> bool:
 def scene_case(rng: random.Random) -> Case:
     contact = cs.Contact(coordinate=y, reaction=N)
     slots = {"coordinates": [x, y], "accelerations": [X - MU * sp.Abs(N), N + Y], "contacts": [contact], "eps": None}
+    slots |= {"name": "user", "at": None, "parameters": None, "positive": ()}
     bad = {
         "coordinates": [None, 5, "xy", [], [x], [x, 3], [x, x], [x, y, y], [SENTINEL, y]],
         "accelerations": [None, [X], [X, N + Y, 7], [X, sp.nan * N + Y], [X, sp.oo * N + Y], [X, sp.zoo + N]]
         + [[X, [N]], [X, None], [X, N * float("nan")], [X, float("inf")], [X, SENTINEL]],
         "contacts": [None, [(y, N)], [], [contact, cs.Contact(coordinate=x, reaction=N2)], "contact", [None]],
         "eps": [*NOT_FINITE, -1, 0, -1e-3, 1j, [], object(), SENTINEL, "x" * 100_000],
+        "name": [None, 3, b"user", ["user"]],
+        "at": [5, "h", {X: sp.nan}, {X: None}, [X]],
+        "parameters": [5, ["X"], "X", [X, None]],
+        "positive": [None, 5, [sp.nan], [None]],
     }
     arguments, is_bad = _corrupt(rng, slots, bad)
     eps = arguments.pop("eps")
@@ -255,8 +260,28 @@ def cli_case(rng: random.Random) -> Case:
     return Case(f"cli {command}", call, is_bad)
 
 
+def lagrangian_case(rng: random.Random) -> Case:
+    from sympy.physics.vector import Point, ReferenceFrame
+
+    frame = ReferenceFrame("O")
+    slots = {"lagrangian": x.diff() ** 2 / 2 + y.diff() ** 2 / 2 - y, "loads": [], "frame": None}
+    bad = {
+        "lagrangian": [None, [x], sp.nan * x, sp.oo * x.diff() ** 2, x.diff() ** 2 / 2, "x" * 100_000, object()],
+        "loads": [None, [1, 2], [(Point("P"),)], [(frame, 3)], "loads"],
+        "frame": [3, "O", Point("P")],
+    }
+    arguments, is_bad = _corrupt(rng, slots, bad)
+    contact = cs.Contact(coordinate=y, reaction=N)
+    return Case(
+        "Scene.from_lagrangian",
+        lambda: cs.Scene.from_lagrangian(**arguments, coordinates=[x, y], contacts=[contact]),
+        is_bad,
+    )
+
+
 CASES = [
     scene_case,
+    lagrangian_case,
     contact_case,
     law_case,
     signs_case,
