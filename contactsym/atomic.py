@@ -61,6 +61,8 @@ class Interrupted(KeyboardInterrupt):
 def _check_replaceable(target: Path, force: bool, error: type[ContactsymError]) -> None:
     if not os.path.lexists(target):
         return
+    if Path.cwd().resolve().is_relative_to(target.resolve()):
+        raise error(f"{shorten(str(target))} is or contains the current directory; name a new subdirectory.")
     if target.is_symlink() or not target.is_dir():
         raise error(f"{shorten(str(target))} exists and is not a directory; choose another directory.")
     if force or (target / MARKER).is_file() or not any(target.iterdir()):
@@ -117,7 +119,7 @@ def replaced_directory(
     error : ContactsymError subclass
         The exception raised when ``target`` may not be replaced or cannot be created.
     """
-    target = Path(target)
+    target = Path(os.path.abspath(target))  # '.' and 'a/..' get a name and a parent
     _check_replaceable(target, force, error)
     try:
         target.parent.mkdir(parents=True, exist_ok=True)

@@ -79,6 +79,16 @@ def test_a_directory_contactsym_did_not_write_needs_force(tmp_path):
         pass
 
 
+def test_the_current_directory_is_never_replaced(tmp_path, monkeypatch):
+    (tmp_path / "inner").mkdir()
+    monkeypatch.chdir(tmp_path / "inner")
+    for target in (".", "..", str(tmp_path)):
+        with pytest.raises(ContactsymError, match="current directory"):
+            with replaced_directory(target, force=True):
+                pass
+    assert (tmp_path / "inner").is_dir()
+
+
 def test_a_file_in_the_way_is_an_error(tmp_path):
     (tmp_path / "out").write_text("a file")
     with pytest.raises(ContactsymError, match="not a directory"):
