@@ -39,7 +39,6 @@ __all__ = [
     "finite_number",
     "friction_coefficient",
     "lagrangian_parts",
-    "mass_matrix",
     "output_times",
     "positive_parameter",
     "reactions_act",
@@ -158,8 +157,10 @@ def _coordinate(q) -> sp.Basic:
     return q
 
 
-def scene_parts(coordinates, accelerations, contacts) -> tuple[tuple, tuple, tuple]:
+def scene_parts(coordinates, accelerations, contacts, *, derived: bool = False) -> tuple[tuple, tuple | None, tuple]:
     """Coordinates, accelerations and contacts of a scene, checked for type and shape.
+
+    ``derived``: the accelerations come later from a Lagrangian, so None is expected.
 
     Examples
     --------
@@ -180,9 +181,7 @@ def scene_parts(coordinates, accelerations, contacts) -> tuple[tuple, tuple, tup
         raise SceneError("a scene needs at least one coordinate.")
     if len(set(coordinates)) != len(coordinates):
         raise SceneError(f"a coordinate is listed twice in {shorten(list(coordinates))}; list each once.")
-    if accelerations is None:  # a Lagrangian scene: derived later
-        accelerations = ()
-    else:
+    if not (derived and accelerations is None):
         accelerations = _check_accelerations(coordinates, accelerations)
     contacts = _sequence(contacts, "contacts", "give a list of Contact(coordinate=..., reaction=...)")
     for index, contact in enumerate(contacts):
@@ -271,29 +270,6 @@ def reactions_act(accelerations: dict, contacts: Sequence) -> None:
                 f"the reaction {contact.reaction} of contact {index} (gap {shorten(contact.coordinate)}) appears in "
                 "no acceleration, so the contact does not act; add it to the accelerations or remove the contact."
             )
-
-
-def mass_matrix(matrix: sp.Matrix, coordinates: Sequence) -> None:
-    """Raise a SceneError naming the coordinates that move without kinetic energy, if det M = 0.
-
-    Examples
-    --------
-    >>> import sympy as sp
-    >>> from sympy.physics.mechanics import dynamicsymbols
-    >>> x, y = dynamicsymbols("x y")
-    >>> mass_matrix(sp.Matrix([[1, 0], [0, 0]]), [x, y])
-    Traceback (most recent call last):
-    ...
-    contactsym.errors.SceneError: the mass matrix of the Lagrangian is singular (det M = 0): the coordinates [y(t)] can move without kinetic energy; give them inertia or drop them from the coordinates.
-    """
-    if sp.expand(matrix.det(method="berkowitz")) != 0:
-        return
-    moving = {q for vector in matrix.nullspace() for q, entry in zip(coordinates, vector) if entry != 0}
-    named = [q for q in coordinates if q in moving] or list(coordinates)
-    raise SceneError(
-        f"the mass matrix of the Lagrangian is singular (det M = 0): the coordinates {shorten(named)} "
-        "can move without kinetic energy; give them inertia or drop them from the coordinates."
-    )
 
 
 def sign_pattern(signs) -> tuple[int, ...]:

@@ -1,4 +1,4 @@
-"""Built-in scenes: the paper's four examples, written at the level of mechanics."""
+"""Built-in scenes: the paper's four examples and mechanisms beyond it, written at the level of mechanics."""
 
 from __future__ import annotations
 
@@ -14,6 +14,7 @@ _MODULES = {
     "painleve-klein-rod": "painleve_klein_rod",
     "painleve-klein-guides": "painleve_klein_guides",
     "brake": "brake",
+    "double-pendulum-tip": "double_pendulum_tip",
 }
 
 #: The scene that ``contactsym`` shows when no scene is named.
@@ -28,7 +29,7 @@ def scene_names() -> list[str]:
     Examples
     --------
     >>> scene_names()
-    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake']
+    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake', 'double-pendulum-tip']
     """
     return list(_MODULES)
 
@@ -43,7 +44,7 @@ def scene(name: str):
     >>> scene("break")
     Traceback (most recent call last):
     ...
-    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake.
+    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, double-pendulum-tip.
     """
     name = scene_name(name)
     if name not in _MODULES:
