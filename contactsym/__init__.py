@@ -23,8 +23,11 @@ from .errors import (
 from .latex import latex
 from .laws import Compliance, Coulomb, Generic, KelvinVoigt, Law, Viscous
 from .linear import lam
+from .parse import ParseError, parse_expression
 from .regions import Region, closed_form
+from .report import ReportError, ReportResult, conditions, report_tex, write_report
 from .scene import Contact, Scene
+from .scenefile import FigurePlan, SceneFileError, load_scene, read_scene
 from .scenes import DEFAULT_SCENE, scene, scene_names
 
 __all__ = [
@@ -34,21 +37,32 @@ __all__ = [
     "ContactsymError",
     "Coulomb",
     "DEFAULT_SCENE",
+    "FigurePlan",
     "Generic",
     "KelvinVoigt",
     "Law",
+    "ParseError",
     "Region",
+    "ReportError",
+    "ReportResult",
     "Scene",
     "SceneError",
+    "SceneFileError",
     "SignPatternError",
     "SignSymbol",
     "SingularJacobianError",
     "Viscous",
     "closed_form",
+    "conditions",
     "lam",
     "latex",
+    "load_scene",
+    "parse_expression",
+    "read_scene",
+    "report_tex",
     "scene",
     "scene_names",
+    "write_report",
 ]
 
 __version__ = "0.1.0"

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import sympy as sp
 
+from .parse import sympy_only
+
 __all__ = ["SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "normalize", "known_sign"]
 
 
@@ -93,7 +95,7 @@ def known_sign(expr: sp.Expr, positive=()) -> int | None:
     (1, None, 1)
     """
     stand_ins = {p: sp.Dummy(positive=True) for p in positive}
-    expr = sp.sympify(expr).subs(stand_ins)
+    expr = sympy_only(expr, "the expression").subs(stand_ins)
     if expr.is_positive:
         return 1
     if expr.is_negative:

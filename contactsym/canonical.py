@@ -50,6 +50,7 @@ from sympy.core.function import AppliedUndef
 from sympy.polys.fields import FracField
 
 from .algebra import SignSymbol, known_sign
+from .parse import sympy_only
 
 __all__ = ["canonical", "Fraction", "TrigField", "to_fraction"]
 
@@ -168,7 +169,7 @@ def _as_poly(expr: sp.Expr, ring, pairs, signs):
     """``expr`` (a polynomial in ``ring``'s generators after expanding angles) in ``ring``,
     reduced, or None."""
     try:
-        poly = ring.from_expr(_expand_angles(sp.sympify(expr)))
+        poly = ring.from_expr(_expand_angles(sympy_only(expr, "the expression")))
     except (ValueError, sp.polys.polyerrors.CoercionFailed):
         return None
     return _reduce(poly, pairs, signs)
@@ -235,7 +236,7 @@ def _fourier_terms(poly, pairs) -> dict:
     of two (kept as integer pairs, one common denominator: exact and fast), and the frequencies
     k and -k pair into a cosine and a sine of k.q.
     """
-    ring, domain = poly.ring, poly.ring.domain
+    domain = poly.ring.domain
     trig = {i for pair in pairs for i in pair}
     terms_in = poly.terms()
     top = max(sum(monom[i] for i in trig) for monom, _ in terms_in)
@@ -329,7 +330,7 @@ class TrigField:
     """
 
     def __init__(self, exprs):
-        exprs = [_expand_angles(sp.sympify(e)) for e in exprs]
+        exprs = [_expand_angles(sympy_only(e, "an expression")) for e in exprs]
         gens = _generators(sp.Tuple(*exprs)) or [sp.Dummy("one")]
         self.field = FracField(gens, sp.QQ)
         self.ring = self.field.ring
@@ -341,7 +342,7 @@ class TrigField:
 
     def element(self, expr: sp.Expr):
         """``expr`` as a reduced element of the field."""
-        numer, denom = sp.fraction(sp.together(_expand_angles(sp.sympify(expr))))
+        numer, denom = sp.fraction(sp.together(_expand_angles(sympy_only(expr, "the expression"))))
         return self.reduce(self.field.new(self.ring.from_expr(numer), self.ring.from_expr(denom)))
 
     def substituted(self, expr: sp.Expr, values: dict):
@@ -407,7 +408,7 @@ def _integral(numer, denom):
 
 def canonical(expr: sp.Expr) -> sp.Expr:
     """``expr`` in the canonical rational form (see the module docstring)."""
-    expr = sp.sympify(expr)
+    expr = sympy_only(expr, "the expression")
     if expr.is_Number or expr.is_Symbol:
         return expr
     return to_fraction(expr).as_expr()

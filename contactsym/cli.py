@@ -1,11 +1,16 @@
 """Command line.
 
+SCENE is a built-in scene's name or the path of a scene file (``my.toml``, see
+:mod:`contactsym.scenefile`).
+
 ``contactsym [show] [SCENE]``            the derivation chain of a scene, as text
 ``contactsym list``                      the built-in scenes
 ``contactsym conditions SCENE --format text|latex|json [--signs +1,-1]``
 ``contactsym report [SCENE ...] --out DIR [--no-pdf] [--force]``
                                          a LaTeX/PDF report per scene, figures and conditions.json
 ``contactsym bench [--quick] [--out DIR] [--json FILE]`` the benchmarks (from a source checkout)
+``contactsym atlas SCENE QUANTITY --grid NAME=START:STOP:COUNT [--scheduler ADDRESS] [--out FILE.nc]``
+                                         a parameter sweep (contactsym[atlas]; see contactsym.atlas)
 
 Output directories are written all or nothing (:mod:`contactsym.atomic`): a report or
 benchmark directory appears whole or not at all, and one that contactsym did not write
@@ -30,6 +35,9 @@ import sympy as sp
 
 from .atomic import replaced_directory, signals_as_exceptions
 from .errors import ContactsymError, SceneError, SignPatternError
+from .parse import ParseError
+from .scene import Scene
+from .scenefile import scene_or_file
 from .scenes import DEFAULT_SCENE, scene, scene_names
 from .validate import shorten
 
@@ -39,15 +47,15 @@ __all__ = ["derivation_chain", "main"]
 USAGE, FAILURE = 2, 1
 
 
-def derivation_chain(name: str) -> str:
-    """The derivation chain of a scene, as plain text, stage by stage.
+def derivation_chain(name) -> str:
+    """The derivation chain of a scene (a built-in name, a scene file or a Scene), as plain text.
 
     Examples
     --------
     >>> print(derivation_chain("sliding-point").splitlines()[0])
     scene sliding-point: (1.10)-(1.12): a point sliding on a rough line, Kelvin-Voigt contact
     """
-    s = scene(name)
+    s = name if isinstance(name, Scene) else scene_or_file(name)
     fast = s.fast_subsystem()
     lin = s.linearization()
     st = s.stability()
@@ -168,7 +176,7 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _parser() -> argparse.ArgumentParser:
-    names = ", ".join(scene_names())
+    names = ", ".join(scene_names()) + ", or a scene file (.toml)"
     parser = _Parser(prog="contactsym", description="Exact stability of frictional compliant contacts.")
     sub = parser.add_subparsers(dest="command", parser_class=_Parser)
     show = sub.add_parser("show", help="print the derivation chain of a scene")
@@ -195,6 +203,9 @@ def _parser() -> argparse.ArgumentParser:
         help="folder for the table and plots (default: contactsym-bench)",
     )
     bench.add_argument("--force", action="store_true", help="replace an --out folder that contactsym did not write")
+    from .atlas.cli import add_atlas_command  # the atlas imports Dask and xarray only when it runs
+
+    add_atlas_command(sub)
     return parser
 
 
@@ -213,7 +224,13 @@ def _report(names: list[str], out: str, pdf: bool, force: bool = False) -> int:
     from .report import FigureSource, ReportError, conditions, summary_text, write_report
 
     names = names or scene_names()
-    scenes = [scene(name) for name in names]  # unknown names fail before any work
+    scenes = [scene_or_file(name) for name in names]  # unknown names and bad files fail before any work
+    seen: dict = {}
+    for name, s in zip(names, scenes):
+        if seen.setdefault(s.name, name) != name:
+            raise SceneError(
+                f"'{seen[s.name]}' and '{name}' are both named '{s.name}'; give one a different name in its [scene] table."
+            )
     root = Path(out)
     try:
         root.mkdir(parents=True, exist_ok=True)
@@ -248,7 +265,7 @@ def _report(names: list[str], out: str, pdf: bool, force: bool = False) -> int:
 def _conditions(name: str, fmt: str, signs: str | None) -> int:
     from .report import conditions
 
-    s = scene(name)
+    s = scene_or_file(name)
     pattern = None if signs is None else s.check_signs(parse_signs(signs))
     data = conditions(s, pattern)
     if fmt == "json":
@@ -311,7 +328,7 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:  # the reader went away (contactsym ... | head): stop quietly
         _silence_stdout()
         return FAILURE
-    except (SceneError, SignPatternError) as error:
+    except (SceneError, SignPatternError, ParseError) as error:  # bad input: a name, a file, a formula
         print(f"contactsym: error: {error}", file=sys.stderr)
         return USAGE
     except ContactsymError as error:
@@ -336,6 +353,10 @@ def _run(args) -> int:
         return _conditions(args.scene, args.format, args.signs)
     if args.command == "bench":
         return _bench(args.quick, args.json, args.out, args.force)
+    if args.command == "atlas":
+        from .atlas.cli import run_atlas
+
+        return run_atlas(args)
     print(derivation_chain(getattr(args, "scene", DEFAULT_SCENE)))
     return 0
 

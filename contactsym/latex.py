@@ -28,6 +28,8 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
+from .scenes import paper_name
+
 __all__ = ["Formula", "PAPER_EQUATIONS", "formulas", "hurwitz_names", "latex", "paper_equations", "tex"]
 
 
@@ -187,7 +189,7 @@ def paper_equations(scene, key: str, detail: str | None = None) -> tuple[tuple, 
     """
     k = getattr(scene, "k", 2)
     numbers, note = _generic(key, k)
-    own = PAPER_EQUATIONS.get(getattr(scene, "name", ""), {})
+    own = PAPER_EQUATIONS.get(paper_name(scene) or "", {})  # by identity: a user scene named "brake" has none
     extra_numbers, extra_note = own.get(f"{key}:{detail}", own.get(key, ((), "")))
     numbers = tuple(dict.fromkeys(numbers + tuple(extra_numbers)))
     note = "; ".join(n for n in (note, extra_note) if n)

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from .errors import ComplianceError
+from .parse import sympy_only
 from .validate import friction_coefficient, positive_parameter, shorten
 
 __all__ = ["Compliance", "Generic", "KelvinVoigt", "Law", "Coulomb", "Viscous"]
@@ -68,8 +69,7 @@ class Generic(Compliance):
 
 
 def _require_positive(value: sp.Expr, what: str) -> sp.Expr:
-    positive_parameter(value, what, "(1.5) needs a positive law", ComplianceError)  # before parsing, and after
-    value = sp.sympify(value)
+    value = sympy_only(value, what)
     positive_parameter(value, what, "(1.5) needs a positive law", ComplianceError)
     if value.is_positive:
         return value
@@ -122,7 +122,8 @@ class Law(Compliance):
     Parameters
     ----------
     expr : sympy expression
-        The reaction as a function of the deformation ``q``, its rate ``qdot`` and ``eps``.
+        The reaction as a function of the deformation ``q``, its rate ``qdot`` and ``eps``
+        (a SymPy object: text is refused, see :func:`contactsym.parse_expression`).
     q, qdot, eps : sympy.Symbol
         The symbols that ``expr`` uses for them.
     check : bool
@@ -144,7 +145,7 @@ class Law(Compliance):
     """
 
     def __init__(self, expr, q: sp.Symbol, qdot: sp.Symbol, eps: sp.Symbol, *, check: bool = True):
-        self.expr, self.q, self.qdot, self.eps = sp.sympify(expr), q, qdot, eps
+        self.expr, self.q, self.qdot, self.eps = sympy_only(expr, "the law's expression"), q, qdot, eps
         self.Q = sp.Dummy("Q", real=True)
         self.V = sp.Dummy("V", real=True)
         self.scaled = self._scaled()

@@ -56,6 +56,7 @@ from . import validate
 from .errors import ContactsymError
 from .intervals import interval_sign
 from .laws import Compliance, Generic, KelvinVoigt, Law
+from .parse import sympy_only
 from .progress import Budget, Progress
 from .scene import t as _time
 
@@ -140,7 +141,7 @@ def _positive(value, name: str, why: str) -> float:
 
 
 def _plain_expr(scene, expr) -> sp.Expr:
-    return scene._plain(sp.sympify(expr))
+    return scene._plain(expr)
 
 
 @dataclass(frozen=True)
@@ -270,7 +271,7 @@ def substitute(expr, values: _Values) -> sp.Expr:
     >>> substitute(s.reduced_system().accelerations[x], v)
     -mu*Abs(Y(x, xdot))/2 + 3*x/2
     """
-    expr = sp.sympify(expr)
+    expr = sympy_only(expr, "the expression")
     for function, body in values.functions.items():
         expr = expr.replace(function, body)
     if isinstance(expr, sp.MatrixBase):
@@ -1768,7 +1769,7 @@ def certified_sign(expr, values: Mapping | None = None, *, band: float = 0.0) ->
     >>> certified_sign((x + y)**2 - x**2 - 2*x*y - y**2 - 1e-30, {x: 1e8, y: 1e-8})
     (-1, True)
     """
-    expr = sp.sympify(expr)
+    expr = sympy_only(expr, "the expression")
     env, exact = _environment(values or {})
     try:
         v, e, magnitude = _bounded(expr, env, {})
@@ -1785,6 +1786,8 @@ def certified_sign(expr, values: Mapping | None = None, *, band: float = 0.0) ->
 def decide(boolean, values: Mapping | None = None, *, band: float = 0.0) -> bool:
     """Truth of a SymPy Boolean of relationals at numeric values, never by float luck.
 
+    ``boolean`` is a SymPy object; text is refused, never evaluated.
+
     Examples
     --------
     >>> import sympy as sp
@@ -1794,7 +1797,7 @@ def decide(boolean, values: Mapping | None = None, *, band: float = 0.0) -> bool
     >>> decide(sp.And(x > 0, x**2 < 2), {x: 1.414213562373095})
     True
     """
-    boolean = sp.sympify(boolean)
+    boolean = sympy_only(boolean, "the condition")
     if boolean in (sp.true, True):
         return True
     if boolean in (sp.false, False):
@@ -1908,7 +1911,7 @@ class PointClassifier:
     Parameters
     ----------
     conditions : sequence of sympy expressions
-        Stable exactly when all are > 0 (e.g. ``Stability.hurwitz``).
+        Stable exactly when all are > 0 (e.g. ``Stability.hurwitz``); SymPy objects, not text.
     parameters : sequence of Symbol
         The order of the parameter arrays passed to :meth:`__call__`. Functions such as
         ``sin`` must act on expressions that are exact in floating point (a parameter,
@@ -1938,7 +1941,7 @@ class PointClassifier:
     def __init__(self, conditions: Sequence, parameters: Sequence[sp.Symbol], *, band: float = 1e-12):
         self.parameters = tuple(parameters)
         self.band = float(band)
-        self.conditions = [sp.sympify(c) for c in conditions]
+        self.conditions = [sympy_only(c, "a condition") for c in conditions]
         self.kept: list[sp.Expr] = []  # distinct factors of unknown sign
         self.uses: list[tuple[int, int, int]] = []  # (condition index, sign, position in kept)
         self.always_false: list[int] = []
@@ -1957,7 +1960,19 @@ class PointClassifier:
         code = [tuple(_through_tan(g) for g in p) for p in self.parts]
         self.gammas = [_gamma(max(_roundings(g) for g in p) + 3) for p in code]
         self._function = lambdify_cse(self.parameters, [g for p in code for g in p])
-        self._mp_function = [sp.lambdify(self.parameters, list(p), modules="mpmath") for p in self.parts]
+        self._mp_function = self._mp_functions()
+
+    def _mp_functions(self) -> list:
+        return [sp.lambdify(self.parameters, list(p), modules="mpmath") for p in self.parts]
+
+    def __getstate__(self) -> dict:
+        # code generated for mpmath holds mpmath's context, which does not pickle (a Dask
+        # worker receives the classifier by value): it is generated again when first needed
+        return {k: v for k, v in self.__dict__.items() if k != "_mp_function"}
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self._mp_function = None
 
     @staticmethod
     def _reduce(condition: sp.Expr) -> tuple[int, list]:
@@ -2046,6 +2061,8 @@ class PointClassifier:
         """Sign of a kept factor in 256-bit arithmetic from the exact binary inputs, or None."""
         import mpmath
 
+        if self._mp_function is None:  # unpickled: see __getstate__
+            self._mp_function = self._mp_functions()
         with mpmath.workprec(256):
             P, M, *rest = self._mp_function[position](*[mpmath.mpf(x) for x in point])
             U, Ua = rest or (0, 0)

@@ -816,9 +816,10 @@ def phase_portrait_data(
 
     Parameters
     ----------
-    scene : str
+    scene : str or Scene
         A built-in scene with one contact, or a key of :data:`ROD_CASES` (the rod in that
-        case, at its first load).
+        case, at its first load), or any Scene with one contact (then ``values`` has no
+        default).
     values : dict, optional
         Numbers for its presentation symbols (by name; a load such as ``Y(x, xdot)`` by
         its function name); default :data:`PORTRAIT_VALUES`.
@@ -847,13 +848,16 @@ def phase_portrait_data(
     """
     from .scenes import scene as built_in
 
-    name = scene
-    if name in ROD_CASES:
+    name = scene if isinstance(scene, str) else scene.name
+    if not isinstance(scene, str):  # a Scene object: its own values only, never a built-in's by name
+        defaults = {}
+    elif name in ROD_CASES:
         case = {k: v for k, v in ROD_CASES[name].items() if k != "loads"}
         defaults, name = {**case, "X^*": ROD_CASES[name]["loads"][0]}, "painleve-klein-rod"
+        scene = built_in(name)
     else:
         defaults = PORTRAIT_VALUES.get(name, {})
-    scene = built_in(name)
+        scene = built_in(name)
     values = dict(defaults if values is None else values)
     fast = scene.fast_subsystem()
     if scene.k != 1:
@@ -870,8 +874,12 @@ def phase_portrait_data(
         slope = float(_by_name(scene.present(scene.linearization(signs=branch.signs).A[0]), values))
         equilibria.append((root, slope > 0))
     equilibria.sort()
-    counts = scene.equilibrium_counts()
-    count = next((n for n, r in counts.items() if bool(r.evaluate(**{k: values[k] for k in r._by_name}))), "undecided")
+    try:
+        counts = scene.equilibrium_counts()
+    except (ValueError, NotImplementedError):  # a scene whose counts are not derived: the title says so
+        counts = {}
+    known = [(n, r) for n, r in counts.items() if set(r._by_name) <= set(values)]
+    count = next((n for n, r in known if bool(r.evaluate(**{k: values[k] for k in r._by_name}))), "undecided")
     centre = float(np.mean([r for r, _ in equilibria])) if equilibria else 0.0
     us = np.linspace(centre - extent[0], centre + extent[0], resolution)
     vs = np.linspace(-extent[1], extent[1], resolution)

@@ -30,6 +30,7 @@ from sympy.logic.boolalg import BooleanFunction
 
 from .algebra import known_sign, normalize
 from .latex import tex
+from .parse import sympy_only
 
 __all__ = ["Region", "closed_form", "known_sign"]
 
@@ -220,7 +221,7 @@ def closed_form(condition, scene=None, solve_for: sp.Symbol | None = None, signs
     ((v_1 + 1)*(v_2 + 1) >= 0) & (v_1 < 2*kappa**2 + 1) & (v_2 < 2*kappa**2 + 1) & (v_1 + v_2 < 2*kappa**2)
     """
     positive = tuple(getattr(scene, "positive_expressions", ()))
-    condition = scene.present(condition, signs) if scene is not None else sp.sympify(condition)
+    condition = scene.present(condition, signs) if scene is not None else sympy_only(condition, "the condition")
     reduced = _reduce(condition, positive, solve_for)
     if len(reduced.free_symbols) == 1 and isinstance(reduced, BooleanFunction):
         return _univariate(reduced)
@@ -300,7 +301,7 @@ class Region:
     symbols: tuple = field(default=())
 
     def __post_init__(self):
-        object.__setattr__(self, "condition", sp.sympify(self.condition))
+        object.__setattr__(self, "condition", sympy_only(self.condition, "a region's condition"))
         if not self.symbols:
             object.__setattr__(self, "symbols", tuple(sorted(self.condition.free_symbols, key=str)))
 

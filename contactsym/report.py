@@ -35,6 +35,7 @@ import sympy as sp
 from .errata import AGREE, latex_table, text_to_latex
 from .errors import ContactsymError
 from .latex import Formula, hurwitz_names, paper_equations, tex
+from .scenes import paper_name
 
 __all__ = [
     "Figure",
@@ -584,7 +585,7 @@ COUNT_EQUATIONS = {
 
 
 def _count_tag(scene, name: str) -> tuple:
-    for word, numbers in COUNT_EQUATIONS.get(scene.name, ()):
+    for word, numbers in COUNT_EQUATIONS.get(paper_name(scene) or "", ()):
         if word in name.lower():
             return numbers
     return ()
@@ -615,7 +616,7 @@ def _regions_section(scene, named: _Named) -> str:
 
 def _special_cases(scene, named: _Named) -> list[str]:
     """The paper's special cases of a scene, derived here: the brake's (6.4) and its frequency."""
-    if scene.name != "brake":
+    if paper_name(scene) != "brake":  # the built-in brake itself, not a scene that shares its name
         return []
     from .regions import closed_form
 
@@ -699,6 +700,7 @@ def report_tex(scene, figures: list[Figure] | tuple = (), notes: list[str] | tup
     remarks printed under the figures (e.g. a figure that could not be drawn).
     """
     named = _Named()
+    paper = paper_name(scene) is not None  # the paper's own scene object, not one that shares its name
     title = _escape(f"contactsym: {scene.name}")
     description = _escape(scene.description) if scene.description else ""
     body = [
@@ -708,8 +710,12 @@ def report_tex(scene, figures: list[Figure] | tuple = (), notes: list[str] | tup
         description + r"\par" if description else "",
         r"Derived by contactsym from the mechanics. Numbers on the right, as (4.3), are the equations "
         r"of A.\,P.~Ivanov, \emph{On the properties of solutions of the basic problem of dynamics in "
-        r"systems with non-ideal constraints}, PMM, 2005; where the print differs, the derived form is "
-        r"shown and the errata table at the end says why.",
+        r"systems with non-ideal constraints}, PMM, 2005"
+        + (
+            r"; where the print differs, the derived form is shown and the errata table at the end says why."
+            if paper
+            else r", whose general results this scene's formulas instantiate."
+        ),
         _parameters(scene),
         r"{\small",
     ]
@@ -719,7 +725,8 @@ def report_tex(scene, figures: list[Figure] | tuple = (), notes: list[str] | tup
     body.append(_reduced_section(scene, named))
     body.append("}")
     body.append(_figures_section(list(figures), list(notes)))
-    body.append(_errata_section())
+    if paper:
+        body.append(_errata_section())
     body.append(r"\end{document}")
     return "\n\n".join(part for part in body if part) + "\n"
 
@@ -904,6 +911,7 @@ class FigureSource:
     def __init__(self, workdir: Path):
         self.workdir = workdir
         self._paper: list[tuple[Path, str]] | None = None
+        self._own = 0  # scenes other than the paper's, numbered for their figure directories
         self.notes: list[str] = []
 
     def _plotting(self):
@@ -917,6 +925,15 @@ class FigureSource:
         plotting, note = self._plotting()
         if plotting is None:
             return [], [note]
+        if paper_name(scene) is None or getattr(scene, "figure_plan", None) is not None:
+            # any other scene, or a built-in one beyond the paper: the figures its plan asks for
+            from .scenefigures import plan_figures
+
+            self._own += 1
+            try:
+                return plan_figures(scene, self.workdir / f"own-{self._own}")
+            except Exception as error:  # a figure that fails must not cost the rest of the report
+                return [], [f"No figures: drawing them failed with {type(error).__name__}: {error}"]
         try:
             if hasattr(plotting, "scene_figures"):
                 directory = self.workdir / scene.name
@@ -996,11 +1013,34 @@ def write_report(
 ) -> ReportResult:
     """Write ``directory/report.tex``, ``conditions.json``, ``figures/*.png`` and ``report.pdf``.
 
+    Works for any Scene: a built-in one, one read from a scene file
+    (:func:`contactsym.load_scene`) or one built in Python. The paper's errata, its
+    scene-specific equation numbers and figures appear only for the built-in scene objects
+    (decided by identity, not by name). Other scenes get the figures of their
+    ``figure_plan`` (a scene file's ``[figures]``, or ``scene.figure_plan =
+    contactsym.FigurePlan(x, y, x_range, y_range, values)``): region maps in that plane and,
+    for one contact, the phase portrait of (2.1).
+
     ``figures`` shares drawn figures between scenes (one is made when not given);
     ``progress`` receives short messages. ``report.pdf`` is made when ``pdf`` is true and
     pdflatex is installed. All or nothing: the files are written to a directory beside
     ``directory`` that replaces it only when all succeeded (see :mod:`contactsym.atomic`);
     an existing directory that contactsym did not write is replaced only with ``force``.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> import sympy as sp
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> import contactsym as cs
+    >>> x, y = dynamicsymbols("x y")
+    >>> N, mu = sp.Symbol("N", real=True), sp.Symbol("mu", positive=True)
+    >>> own = cs.Scene.from_accelerations([x, y], [-mu*sp.Abs(N), N - 1], [cs.Contact(y, N)], name="brake")
+    >>> with tempfile.TemporaryDirectory() as directory:
+    ...     result = write_report(own, directory, pdf=False)
+    ...     text = result.tex.read_text()
+    >>> "Errata" in text, result.figures, result.notes[0][:40]
+    (False, [], 'No figures: give the scene a [figures] t')
     """
     from .atomic import replaced_directory
 

@@ -18,6 +18,7 @@ from sympy.physics.mechanics import dynamicsymbols
 from .algebra import known_sign
 from .errors import SceneError, SignPatternError
 from .laws import Compliance, Coulomb, Generic, Viscous
+from .parse import sympy_only
 from .validate import (
     contact_fields,
     finite_expression,
@@ -73,6 +74,7 @@ class Contact:
         contact_fields(self.coordinate, self.compliance, self.friction, self.unilateral)
         if self.compliance is None:
             object.__setattr__(self, "compliance", Generic())
+        object.__setattr__(self, "coordinate", sympy_only(self.coordinate, "the gap of a contact"))
         if not isinstance(self.reaction, sp.Symbol):
             raise SceneError(f"the reaction of a contact must be a sympy Symbol, not {shorten(self.reaction)}.")
 
@@ -114,8 +116,7 @@ def _check_eps(eps) -> sp.Expr:
     if eps is None:
         return sp.Symbol("epsilon", positive=True)
     why = "it is the small time scale of the deformations (1.6)"
-    positive_parameter(eps, "eps", why)  # types and non-finite numbers before parsing, a parsed nan after
-    eps = sp.sympify(eps)
+    eps = sympy_only(eps, "eps")
     positive_parameter(eps, "eps", why)
     if eps.is_positive:
         return eps
@@ -138,7 +139,9 @@ class Scene:
     coordinates : sequence of dynamicsymbols
         The generalized coordinates q.
     accelerations : sequence of sympy expressions
-        q'' for each coordinate (1.4), in q, q', the reactions and parameters.
+        q'' for each coordinate (1.4), in q, q', the reactions and parameters. Every
+        expression given to contactsym is a SymPy object or a number: text is refused
+        (:func:`contactsym.parse_expression` reads a formula with declared names).
     contacts : sequence of Contact
     name, description : str
         For listings and reports.
@@ -195,10 +198,13 @@ class Scene:
         #: Lagrange's equations in contact-space parts (``mechanics.ContactSpace``), or None.
         self.contact_space = contact_space
         if accelerations is not None:
-            self.accelerations = dict(zip(self.coordinates, (sp.sympify(g) for g in accelerations)))
+            self.accelerations = dict(zip(self.coordinates, (sympy_only(g, "an acceleration") for g in accelerations)))
         self.eps = _check_eps(eps)
-        self.at = dict(at or {})
-        self.presentation = dict(presentation or {})
+        self.at = {sympy_only(k, "a key of at"): sympy_only(v, "a value of at") for k, v in (at or {}).items()}
+        self.presentation = {
+            sympy_only(k, "a presentation key"): sympy_only(v, "a presentation value")
+            for k, v in (presentation or {}).items()
+        }
         self._declared_positive = tuple(self._plain(e) for e in positive)
         #: The parameter that closed-form regions are solved for, where possible.
         self.solve_for = solve_for
@@ -226,7 +232,7 @@ class Scene:
         -mu*Abs(N)
         """
         coordinates, accelerations, contacts = scene_parts(coordinates, accelerations, contacts)
-        accelerations = [sp.sympify(g) for g in accelerations]
+        accelerations = [sympy_only(g, "an acceleration") for g in accelerations]
         for contact in contacts:
             if contact.coordinate not in coordinates:
                 raise SceneError(
@@ -258,6 +264,7 @@ class Scene:
         from .mechanics import contact_space
 
         coordinates, _, contacts = scene_parts(coordinates, None, contacts, derived=True)
+        lagrangian = sympy_only(lagrangian, "the Lagrangian")
         lagrangian_parts(lagrangian, loads, frame)
         space = contact_space(lagrangian, coordinates, contacts, loads, frame)
         return cls(coordinates, None, contacts, contact_space=space, **options)
@@ -355,7 +362,7 @@ class Scene:
 
     def _plain(self, expr: sp.Expr) -> sp.Expr:
         rates = {d: s for d, s in self.frozen_symbols.items() if isinstance(d, sp.Derivative)}
-        return sp.sympify(expr).subs(rates).subs(self.frozen_symbols)
+        return sympy_only(expr, "the expression").subs(rates).subs(self.frozen_symbols)
 
     @cached_property
     def manifold(self) -> dict:
@@ -508,7 +515,7 @@ class Scene:
         """
         from .algebra import reduce_signs, sign_symbols
 
-        expr = sp.sympify(expr)
+        expr = sympy_only(expr, "the expression")
         presentation = self.presentation if presentation is None else presentation
         if not presentation or expr in (sp.true, sp.false):
             return expr

@@ -203,9 +203,11 @@ def scene_options(name, description, at, presentation, parameters, positive, sol
     for what, mapping in (("at", at), ("presentation", presentation)):
         if mapping is not None and not isinstance(mapping, dict):
             raise SceneError(f"{what} must be a dict {{symbol: expression}}, not {type(mapping).__name__}.")
-        for key, value in (mapping or {}).items():
-            finite_expression(key, f"a key of {what}")
-            finite_expression(value, f"{what}[{shorten(key)}]")
+        for key, value in (mapping or {}).items():  # text is refused by parse.sympy_only
+            if not isinstance(key, (str, bytes)):
+                finite_expression(key, f"a key of {what}")
+            if not isinstance(value, (str, bytes)):
+                finite_expression(value, f"{what}[{shorten(key)}]")
     if parameters is not None:
         for symbol in _sequence(parameters, "parameters", "give a list of sympy Symbols"):
             if not isinstance(symbol, sp.Symbol):
@@ -246,12 +248,13 @@ def contact_fields(coordinate, compliance, friction, unilateral) -> None:
     """The fields of a Contact other than its reaction (checked by the Contact itself)."""
     from .laws import Compliance, Coulomb, Viscous
 
-    if not isinstance(coordinate, sp.Basic):
-        raise SceneError(
-            f"the coordinate of a contact must be a SymPy expression (a dynamicsymbol or a gap function), "
-            f"not {type(coordinate).__name__} {shorten(coordinate)}."
-        )
-    finite_expression(coordinate, "the gap of a contact")
+    if not isinstance(coordinate, (str, bytes)):  # text is refused by parse.sympy_only, with its own message
+        if not isinstance(coordinate, sp.Basic):
+            raise SceneError(
+                f"the coordinate of a contact must be a SymPy expression (a dynamicsymbol or a gap function), "
+                f"not {type(coordinate).__name__} {shorten(coordinate)}."
+            )
+        finite_expression(coordinate, "the gap of a contact")
     if compliance is not None and not isinstance(compliance, Compliance):
         raise SceneError(
             f"compliance = {shorten(compliance)} is not a law; use Generic(), KelvinVoigt(...) or Law(...)."

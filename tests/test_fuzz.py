@@ -18,18 +18,13 @@ from hypothesis import strategies as st
 import contactsym as cs
 from benchmarks import fuzz
 
-#: Entry points that still hand text to sympify; the safe parser of issue #13 replaces it there.
-TEXT_PARSED = {fuzz.scene_case, fuzz.law_case}
-
-
 @pytest.mark.parametrize("make", fuzz.CASES, ids=[f.__name__ for f in fuzz.CASES])
 @settings(max_examples=15, deadline=None)
 @given(seed=st.integers(min_value=0, max_value=2**32 - 1))
 def test_fuzz_gives_a_clear_error_or_a_sound_result(make, seed):
     case = make(random.Random(seed))
     kind, detail = fuzz.outcome(case, seconds=20)
-    allowed = {"clear error", "accepted"} | ({"evaluated text"} if make in TEXT_PARSED else set())
-    assert kind in allowed, f"{case.target}: {kind}: {detail}"
+    assert kind in ("clear error", "accepted"), f"{case.target}: {kind}: {detail}"
 
 
 def test_the_fuzz_notices_each_kind_of_failure():
@@ -55,8 +50,7 @@ def test_the_fuzz_notices_each_kind_of_failure():
     assert fuzz.FLAG not in os.environ
 
 
-@pytest.mark.xfail(strict=True, reason="sympify still parses text here; issue #13's safe parser replaces it")
-def test_text_reaching_sympify_is_not_executed():
+def test_text_is_never_executed_where_expressions_are_taken():
     x, y = fuzz.x, fuzz.y
     contact = cs.Contact(coordinate=y, reaction=fuzz.N)
     calls = [

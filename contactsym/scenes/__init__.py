@@ -7,7 +7,7 @@ from importlib import import_module
 from ..errors import SceneError
 from ..validate import scene_name, shorten
 
-__all__ = ["scene", "scene_names", "DEFAULT_SCENE"]
+__all__ = ["scene", "scene_names", "paper_name", "DEFAULT_SCENE"]
 
 _MODULES = {
     "sliding-point": "sliding_point",
@@ -56,3 +56,22 @@ def scene(name: str):
     if name not in _built:
         _built[name] = import_module(f".{_MODULES[name]}", __name__).build()
     return _built[name]
+
+
+def paper_name(scene) -> str | None:
+    """The built-in name of ``scene`` when it is the built-in scene object itself, else None.
+
+    Output that belongs to the paper's scenes (equation numbers, errata, figures) is chosen
+    by this test of identity, so a user's scene that shares a built-in name gets none of it.
+
+    Examples
+    --------
+    >>> paper_name(scene("brake"))
+    'brake'
+    >>> from contactsym.scenefile import load_scene
+    >>> from pathlib import Path
+    >>> paper_name(load_scene(Path(__file__).parents[2] / "examples" / "brake.toml")) is None
+    True
+    """
+    name = getattr(scene, "name", None)
+    return name if isinstance(name, str) and _built.get(name) is scene else None

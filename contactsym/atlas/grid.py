@@ -1,0 +1,132 @@
+"""The parameter grid of an atlas: named 1-D axes, their outer product, validated up front."""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import ContactsymError
+
+__all__ = ["AtlasError", "Grid", "as_grid"]
+
+#: The largest grid :func:`as_grid` accepts unless told otherwise.
+MAX_POINTS = 10**9
+#: Bytes an atlas keeps per point and output (a float64 value, and room for the reason).
+_BYTES_PER_POINT = 64
+
+
+class AtlasError(ContactsymError):
+    """A sweep that cannot start (bad grid, unknown quantity, unreachable scheduler, foreign store)."""
+
+
+@dataclass(frozen=True, eq=False)
+class Grid:
+    """Named axes; the grid is their outer product, points in C order (the last axis fastest).
+
+    Examples
+    --------
+    >>> g = as_grid({"mu": [0.5, 1.0, 1.5], "alpha": [1.0, 2.0]})
+    >>> g.shape, g.size
+    ((3, 2), 6)
+    >>> g.points(2, 5).tolist()
+    [[1.0, 1.0], [1.0, 2.0], [1.5, 1.0]]
+    """
+
+    names: tuple
+    axes: tuple
+
+    @property
+    def shape(self) -> tuple:
+        return tuple(len(a) for a in self.axes)
+
+    @property
+    def size(self) -> int:
+        return math.prod(self.shape)
+
+    def points(self, start: int, stop: int) -> np.ndarray:
+        """Points ``start:stop`` of the flattened grid, one row each: computed, never stored whole."""
+        index = np.unravel_index(np.arange(start, stop), self.shape)
+        return np.column_stack([axis[i] for axis, i in zip(self.axes, index)]).reshape(stop - start, len(self.axes))
+
+    def token(self) -> bytes:
+        """The grid's identity, for a checkpoint's fingerprint."""
+        return repr(self.names).encode() + b"".join(a.tobytes() for a in self.axes)
+
+
+def _axis(name: str, values) -> np.ndarray:
+    if isinstance(values, (str, bytes)):
+        raise AtlasError(f"the grid axis {name!r} is text; give a sequence of numbers (nothing is parsed).")
+    try:
+        axis = np.asarray(values, dtype=float)
+    except (TypeError, ValueError) as error:
+        raise AtlasError(f"the grid axis {name!r} is not a sequence of numbers: {error}.") from None
+    if axis.ndim == 0:
+        axis = axis.reshape(1)
+    if axis.ndim != 1:
+        raise AtlasError(f"the grid axis {name!r} has shape {axis.shape}; give a 1-D sequence of values.")
+    if axis.size == 0:
+        raise AtlasError(f"the grid axis {name!r} is empty; give at least one value.")
+    bad = ~np.isfinite(axis)
+    if bad.any():
+        raise AtlasError(f"the grid axis {name!r} has non-finite values {axis[bad][:3].tolist()}; give finite numbers.")
+    return axis
+
+
+def _memory_bytes() -> int | None:
+    try:
+        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    except (AttributeError, ValueError, OSError):
+        return None
+
+
+def as_grid(grid, *, max_points: int | None = None, outputs: int = 1) -> Grid:
+    """Validate a grid ``{name: values}`` before any work: non-empty, finite, and small enough.
+
+    Names are parameter names of the scene (or symbols, taken by name). The grid is too
+    large when it has more than ``max_points`` points (default 10^9) or when its results
+    (``outputs`` float64 arrays and the reasons) would not fit in half of this machine's
+    memory.
+
+    Examples
+    --------
+    >>> as_grid({})
+    Traceback (most recent call last):
+    ...
+    contactsym.atlas.grid.AtlasError: the grid is empty; give {parameter name: values}, e.g. {"mu": numpy.linspace(0, 2, 50)}.
+    >>> as_grid({"mu": [1.0, float("inf")]})
+    Traceback (most recent call last):
+    ...
+    contactsym.atlas.grid.AtlasError: the grid axis 'mu' has non-finite values [inf]; give finite numbers.
+    >>> as_grid({"mu": range(1000), "alpha": range(1000)}, max_points=10**5)
+    Traceback (most recent call last):
+    ...
+    contactsym.atlas.grid.AtlasError: the grid has 1000000 points, more than max_points = 100000; sweep a coarser grid or raise max_points.
+    """
+    if isinstance(grid, Grid):
+        return grid
+    if not isinstance(grid, Mapping):
+        raise AtlasError(f"the grid must be a mapping {{parameter name: values}}, not {type(grid).__name__}.")
+    if not grid:
+        raise AtlasError('the grid is empty; give {parameter name: values}, e.g. {"mu": numpy.linspace(0, 2, 50)}.')
+    names = tuple(str(name) for name in grid)
+    if len(set(names)) != len(names):
+        raise AtlasError(f"the grid names a parameter twice: {list(names)}.")
+    axes = tuple(_axis(name, values) for name, values in zip(names, grid.values()))
+    result = Grid(names, axes)
+    limit = MAX_POINTS if max_points is None else int(max_points)
+    if result.size > limit:
+        raise AtlasError(
+            f"the grid has {result.size} points, more than max_points = {limit}; sweep a coarser grid or raise max_points."
+        )
+    memory = _memory_bytes()
+    needed = result.size * (outputs + 1) * _BYTES_PER_POINT
+    if memory is not None and needed > memory // 2:
+        raise AtlasError(
+            f"the grid has {result.size} points; its results need about {needed / 2**30:.1f} GiB, more than half of "
+            f"this machine's {memory / 2**30:.1f} GiB; sweep a coarser grid or split it."
+        )
+    return result

@@ -1,0 +1,237 @@
+"""Running a sweep: in this process, on Dask's local scheduler, or on a ``dask.distributed`` cluster.
+
+Every way runs the same task, :func:`_chunk`: a kernel (generated code, see
+:mod:`contactsym.atlas.quantities`) on the points ``index * chunk`` to ``(index + 1) *
+chunk`` of the flattened grid, returning their values and reasons. The results are
+written as the chunks finish (memory or a Zarr checkpoint), on the calling machine only.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import os
+import threading
+import uuid
+
+import numpy as np
+
+from .grid import AtlasError, Grid, as_grid
+from .kernel import Kernel
+from .quantities import as_quantity
+from .store import MemoryResults, ZarrResults, fingerprint
+
+__all__ = ["sweep"]
+
+#: Points per task: a vectorised kernel takes many at once; a simulation is worth a task of its own.
+VECTOR_CHUNK, POINT_CHUNK = 4096, 16
+
+
+def _require(module: str):
+    """Import an optional dependency of the atlas (contactsym[atlas]), or say how to get it."""
+    import importlib
+
+    try:
+        return importlib.import_module(module)
+    except ImportError:
+        raise AtlasError(
+            f"contactsym.atlas needs {module}; install it with: python3 -m pip install 'contactsym[atlas]'"
+        ) from None
+
+
+def _chunk(kernel: Kernel, grid: Grid, chunk: int, index: int) -> tuple:
+    """One task: the kernel on one chunk of the grid."""
+    start = index * chunk
+    values, reasons = kernel(grid.points(start, min(start + chunk, grid.size)))
+    return index, values, reasons
+
+
+def _chunk_size(chunks, size: int, kernel: Kernel) -> int:
+    if chunks is None:
+        return min(size, VECTOR_CHUNK) if kernel.vectorised else max(1, min(POINT_CHUNK, size // 64))
+    if isinstance(chunks, bool) or not isinstance(chunks, (int, np.integer)) or chunks < 1:
+        raise AtlasError(f"chunks = {chunks!r}: give the number of points per task, a positive integer.")
+    return int(chunks)
+
+
+def _run_here(kernel, grid, chunk, todo, results, progress) -> None:
+    for number, index in enumerate(todo, 1):
+        results.write(*_chunk(kernel, grid, chunk, index))
+        if progress:
+            print(f"\r[atlas] {number}/{len(todo)} chunks", end="", flush=True)
+    if progress:
+        print()
+
+
+def _run_local(kernel, grid, chunk, todo, results, scheduler, workers, progress) -> None:
+    """Dask's local scheduler; each finished chunk is written by a callback in this process."""
+    dask = _require("dask")
+    from dask.callbacks import Callback
+    from dask.diagnostics import ProgressBar
+
+    class Writer(Callback):
+        def _posttask(self, key, result, dsk, state, worker_id):
+            if isinstance(key, str) and key.startswith("atlas-chunk-"):
+                results.write(*result)
+
+    tasks = [dask.delayed(_chunk, pure=False)(kernel, grid, chunk, i, dask_key_name=f"atlas-chunk-{i}") for i in todo]
+    with Writer(), ProgressBar() if progress else contextlib.nullcontext():
+        dask.compute(*tasks, scheduler=scheduler, num_workers=workers)
+
+
+def connect(client, timeout: float = 10.0):
+    """(a ``distributed.Client``, whether we opened it) from a Client, a cluster or an address."""
+    distributed = _require("distributed")
+    if isinstance(client, distributed.Client):
+        return client, False
+    if isinstance(client, str) or hasattr(client, "scheduler_address"):  # an address, or a cluster object
+        address = getattr(client, "scheduler_address", client)
+        try:
+            return distributed.Client(client, timeout=timeout), True
+        except (OSError, TimeoutError, ValueError) as error:
+            reason = str(error).strip().splitlines()[0] if str(error).strip() else type(error).__name__
+            raise AtlasError(f"cannot reach the Dask scheduler at {address}: {reason}") from None
+    raise AtlasError(f"client = {client!r}: give a distributed.Client, a cluster or a scheduler address.")
+
+
+def _run_distributed(client, kernel, grid, chunk, todo, results, progress) -> None:
+    """Tasks on a cluster; a worker that dies takes no point with it: the scheduler reruns its tasks."""
+    distributed = _require("distributed")
+    run = uuid.uuid4().hex[:12]
+    # the kernel travels once to every worker (a copy each: a dying worker takes no copy others need)
+    shipped = client.scatter(kernel, broadcast=True, hash=False)
+    futures = [client.submit(_chunk, shipped, grid, chunk, i, key=f"atlas-chunk-{run}-{i}") for i in todo]
+    bar = None
+    if progress:  # Dask's text progress bar blocks: it runs beside the loop that stores the chunks as they finish
+        bar = threading.Thread(target=distributed.progress, args=(futures,), kwargs={"notebook": False}, daemon=True)
+        bar.start()
+    try:
+        for future in distributed.as_completed(futures):
+            results.write(*future.result())
+        if bar is not None:
+            bar.join(timeout=5)
+    except distributed.KilledWorker as error:
+        raise AtlasError(f"a chunk of the sweep kept killing its workers and was given up: {error}") from None
+    finally:
+        for future in [*futures, shipped]:
+            future.release()
+
+
+def sweep(
+    scene,
+    quantity,
+    grid,
+    *,
+    values=None,
+    client=None,
+    chunks: int | None = None,
+    store=None,
+    scheduler: str = "processes",
+    workers: int | None = None,
+    progress: bool = False,
+    max_points: int | None = None,
+    timeout: float = 10.0,
+):
+    """Measure ``quantity`` at every point of ``grid``: an ``xarray.Dataset`` labelled by the grid.
+
+    Parameters
+    ----------
+    scene : Scene or str
+        A scene or a built-in scene's name.
+    quantity : Quantity, str or callable
+        ``"classification"``, ``"leading_eigenvalue"``, ``"stable_fraction"``,
+        ``"equilibrium_count"``, ``"cycle"``, a :class:`~contactsym.atlas.Quantity` with
+        options (``atlas.cycle(samples=512)``, ``atlas.catastrophe(eps, span, initial)``),
+        or a function of a point's values ``{name: number}``.
+    grid : mapping
+        ``{parameter name: 1-D values}``; the sweep covers their outer product.
+    values : mapping, optional
+        The other parameters, fixed (as for :func:`contactsym.numerics.numeric_values`).
+    client : distributed.Client, cluster or address, optional
+        Run there. Without one: vectorised quantities run in this process, the others on
+        Dask's local ``scheduler`` ("processes", "threads" or "sync") with ``workers``.
+    chunks : int, optional
+        Points per task (default 4096 for vectorised quantities, up to 16 for simulations).
+    store : path, optional
+        A Zarr checkpoint: chunks are written there as they finish; a sweep started again
+        with the same arguments computes only the chunks not stored yet.
+    progress : bool
+        Show Dask's progress bar.
+    max_points : int, optional
+        Refuse larger grids (default 10^9; also refused: results beyond half the memory).
+    timeout : float
+        Seconds to wait for a scheduler given by its address.
+
+    Returns
+    -------
+    xarray.Dataset
+        One variable per output of the quantity, ``reason`` (why a point is NaN; empty
+        where it has a value), and attributes ``scene``, ``quantity``, ``fixed`` (the fixed
+        numbers, JSON), ``points_computed`` and ``points_resumed``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> ds = sweep("brake", "leading_eigenvalue", {"mu": [0.5, 1.5], "Phi_1": [-3.0, -1.0]},
+    ...            values={"alpha": np.pi / 2, "m": 1, "Phi_2": -2, "Psi_1": -1, "Psi_2": -1})
+    >>> ds.leading_eigenvalue.dims, bool((ds.leading_eigenvalue < 0).all())
+    (('mu', 'Phi_1'), False)
+    >>> sweep("brake", "cycle", {"mu": []})
+    Traceback (most recent call last):
+    ...
+    contactsym.atlas.grid.AtlasError: the grid axis 'mu' is empty; give at least one value.
+    """
+    xr = _require("xarray")  # checked first: nothing starts without the container of the results
+    from ..scenes import scene as scene_by_name
+
+    chosen = as_quantity(quantity)
+    grid = as_grid(grid, max_points=max_points)
+    if scheduler not in ("processes", "threads", "sync"):
+        raise AtlasError(f"scheduler = {scheduler!r}; use 'processes', 'threads' or 'sync'.")
+    scene = scene_by_name(scene) if isinstance(scene, str) else scene  # built after the cheap checks
+    connection = connect(client, timeout) if client is not None else None  # an unreachable scheduler: before the work
+    try:
+        kernel = chosen.build(scene, grid, values)  # the symbolic work, once, here
+        chunk = _chunk_size(chunks, grid.size, kernel)
+        if store is not None:
+            token = fingerprint(scene.name, chosen.key(), values, grid, chunk)
+            results = ZarrResults(store, grid.size, kernel.outputs, chunk, token)
+        else:
+            results = MemoryResults(grid.size, kernel.outputs, chunk)
+        todo = [int(i) for i in np.nonzero(~results.done)[0]]
+        resumed = int(sum(min(chunk, grid.size - i * chunk) for i in np.nonzero(results.done)[0]))
+        if todo and connection is not None:
+            _run_distributed(connection[0], kernel, grid, chunk, todo, results, progress)
+        elif todo and (kernel.vectorised or scheduler == "sync"):
+            _run_here(kernel, grid, chunk, todo, results, progress)
+        elif todo:
+            _run_local(kernel, grid, chunk, todo, results, scheduler, workers or os.cpu_count(), progress)
+    finally:
+        if connection is not None and connection[1]:
+            connection[0].close()
+    return _dataset(xr, scene, chosen, values, grid, kernel.outputs, results, resumed)
+
+
+def _dataset(xr, scene, quantity, values, grid: Grid, outputs, results, resumed: int):
+    data, reasons = results.read()
+    variables = {name: (grid.names, data[:, j].reshape(grid.shape)) for j, name in enumerate(outputs)}
+    variables["reason"] = (grid.names, np.asarray(reasons, dtype=str).reshape(grid.shape))
+    attrs = {
+        "scene": scene.name,
+        "quantity": quantity.name,
+        "fixed": json.dumps(_numbers(values)),
+        "points_computed": grid.size - resumed,
+        "points_resumed": resumed,
+    }
+    return xr.Dataset(variables, coords=dict(zip(grid.names, grid.axes)), attrs=attrs)
+
+
+def _numbers(values) -> dict:
+    """The fixed values that are numbers, by name (functions such as X(x, xdot) are left out)."""
+    out = {}
+    for key, value in dict(values or {}).items():
+        try:
+            out[str(key)] = float(value)
+        except (TypeError, ValueError):
+            continue
+    return out

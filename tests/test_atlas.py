@@ -1,0 +1,356 @@
+"""contactsym.atlas: sweeps checked against independent computations, on a real 2-worker LocalCluster."""
+
+import os
+
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import contactsym as cs
+from contactsym import atlas, numerics
+from contactsym.atlas import AtlasError
+
+BRAKE_LAW = {"m": 1, "Phi_1": -2.0, "Phi_2": -2.0, "Psi_1": -1.0, "Psi_2": -1.0}
+SQUEAL = {"m": 1, "alpha": np.pi / 2, "F_x": 2, "F_y": -4, "Phi_1": -2.5, "Phi_2": -2.5, "Psi_1": -1, "Psi_2": -1}
+CYCLE = atlas.cycle(samples=256, tol=1e-6)
+ROD = {"phi": 0.785, "mu_1": 3, "mu_2": 0.5, "X_1": 0, "Y_1": 0, "Y_2": 0, "Phi": -1, "Psi": -1}
+
+
+def _eigenvalues(scene, point: dict) -> np.ndarray:
+    """Eigenvalues of (4.5) by SymPy substitution: independent of the atlas's generated code."""
+    by_name = {str(s): s for s in scene.linearization().matrix.free_symbols}
+    matrix = scene.linearization().matrix.xreplace({by_name[k]: sp.Float(v) for k, v in point.items() if k in by_name})
+    return np.linalg.eigvals(np.array(matrix.evalf(), dtype=float))
+
+
+# --- bad input: clear errors before any work ----------------------------------------------------
+
+
+def _never(values):
+    raise AssertionError("no point may be computed")
+
+
+@pytest.mark.parametrize(
+    ("grid", "message"),
+    [
+        ({}, "the grid is empty"),
+        ({"mu": []}, "is empty"),
+        ({"mu": [1.0, np.nan]}, "non-finite"),
+        ({"mu": "1,2"}, "is text"),
+        ({"mu": [[1.0, 2.0]]}, "1-D"),
+        ({"mu": np.arange(1, 1001.0), "alpha": np.linspace(0.1, 3, 1000)}, "max_points"),
+    ],
+)
+def test_bad_grid_is_refused_before_any_work(grid, message):
+    with pytest.raises(AtlasError, match=message):
+        atlas.sweep("brake", _never, grid, max_points=10**5)
+
+
+def test_grid_too_large_for_memory():
+    with pytest.raises(AtlasError, match="half of this machine's"):
+        atlas.as_grid({"a": np.arange(10**6.0), "b": np.arange(10**6.0)}, max_points=10**13)
+
+
+def test_bad_names_and_values():
+    with pytest.raises(AtlasError, match="unknown parameter name 'nu'"):
+        atlas.sweep("brake", "leading_eigenvalue", {"nu": [1.0]}, values=BRAKE_LAW)
+    with pytest.raises(AtlasError, match="mu = -1.0 must be > 0"):
+        atlas.sweep("brake", "leading_eigenvalue", {"mu": [-1.0, 1.0]}, values=BRAKE_LAW)
+    with pytest.raises(AtlasError, match=r"needs values for \['alpha'\]"):
+        atlas.sweep("brake", "leading_eigenvalue", {"mu": [1.0]}, values=BRAKE_LAW)
+    with pytest.raises(AtlasError, match="both swept"):
+        atlas.sweep("brake", "leading_eigenvalue", {"m": [1.0]}, values=BRAKE_LAW)
+    with pytest.raises(AtlasError, match="unknown quantity 'squeal'"):
+        atlas.sweep("brake", "squeal", {"mu": [1.0]})
+    with pytest.raises(AtlasError, match="chunks"):
+        atlas.sweep("brake", "leading_eigenvalue", {"mu": [1.0]}, values={**BRAKE_LAW, "alpha": 1.0}, chunks=0)
+
+
+def test_import_contactsym_does_not_import_dask():
+    """No module of the package imports dask, distributed, xarray or zarr at import time (only inside functions)."""
+    import ast
+    from pathlib import Path
+
+    optional = {"dask", "distributed", "xarray", "zarr"}
+    found = []
+    for path in Path(cs.__file__).parent.rglob("*.py"):
+        for node in ast.parse(path.read_text()).body:  # module level only: function bodies import when they run
+            names = [a.name for a in node.names] if isinstance(node, ast.Import) else []
+            names += [node.module or ""] if isinstance(node, ast.ImportFrom) and not node.level else []
+            found += [f"{path.name}: {n}" for n in names if n.split(".")[0] in optional]
+    assert found == []
+
+
+# --- the quantities, against independent computations -------------------------------------------
+
+
+@settings(max_examples=5, deadline=None)
+@given(st.lists(st.floats(0.1, 3.0), min_size=2, max_size=4), st.floats(0.2, 2.9), st.floats(-5.0, -0.1))
+def test_leading_eigenvalue_against_sympy_substitution(mus, alpha, phi):
+    law = {"m": 1.3, "Phi_1": phi, "Phi_2": -2.0, "Psi_1": -0.7, "Psi_2": -1.1, "alpha": alpha}
+    ds = atlas.sweep("brake", "leading_eigenvalue", {"mu": mus}, values=law)
+    brake = cs.scene("brake")
+    for mu, leading, frequency in zip(mus, ds.leading_eigenvalue.values, ds.frequency.values):
+        eigenvalues = _eigenvalues(brake, {**law, "mu": mu})
+        top = eigenvalues[np.argmax(eigenvalues.real)]
+        assert leading == pytest.approx(top.real, abs=1e-9)
+        assert frequency == pytest.approx(abs(top.imag), abs=1e-9)
+
+
+@pytest.mark.parametrize("signs", [(1, -1), (-1, -1)])
+def test_guides_leading_eigenvalue_against_sympy_substitution(signs):
+    """Another scene (k = 2, a 4 x 4 matrix (4.5)), sign patterns, random laws on the grid."""
+    guides = cs.scene("painleve-klein-guides")
+    rng = np.random.default_rng(7)
+    grid = {"mu_1": [0.1, 0.8, 2.5], "Phi_1": -rng.uniform(0.05, 5, 3), "Psi_2": -rng.uniform(0.05, 5, 2)}
+    values = {"phi": 0.6, "mu_2": 0.7, "Phi_2": -1.3, "Psi_1": -0.4}
+    ds = atlas.sweep(guides, atlas.leading_eigenvalue(signs=signs), grid, values=values)
+    matrix = guides.linearization(signs).matrix
+    by_name = {str(s): s for s in matrix.free_symbols}
+    for index, leading in np.ndenumerate(ds.leading_eigenvalue.values):
+        point = values | {name: grid[name][i] for name, i in zip(grid, index)}
+        numeric = matrix.xreplace({by_name[k]: sp.Float(v) for k, v in point.items()}).evalf()
+        assert leading == pytest.approx(np.linalg.eigvals(np.array(numeric, dtype=float)).real.max(), abs=1e-9)
+
+
+def test_stable_fraction_is_one_exactly_where_every_law_is_stable():
+    """1 on the closed-form region mu <= |cot alpha| (6.3); elsewhere the fraction of the same
+    sampled laws whose eigenvalues all have negative real parts."""
+    grid = {"alpha": np.linspace(0.3, 2.8, 5), "mu": [0.2, 0.9, 2.0]}
+    quantity = atlas.stable_fraction(laws=12, seed=3)
+    ds = atlas.sweep("brake", quantity, grid, values={"m": 1})
+    region = cs.scene("brake").regions()["stable for every law"]
+    A, M = np.meshgrid(grid["alpha"], grid["mu"], indexing="ij")
+    robust = region.evaluate(alpha=A, mu=M)
+    assert robust.any() and (~robust).any()
+    assert np.all(ds.stable_fraction.values[robust] == 1.0)
+    laws = -(10.0 ** np.random.default_rng(3).uniform(-1, 1, size=(12, 4)))
+    brake = cs.scene("brake")
+    for (i, j), alpha in np.ndenumerate(A):
+        point = {"m": 1, "alpha": alpha, "mu": M[i, j]}
+        stable = [
+            _eigenvalues(brake, {**point, "Phi_1": a, "Phi_2": b, "Psi_1": c, "Psi_2": d}).real.max() < 0
+            for a, b, c, d in laws
+        ]
+        assert ds.stable_fraction.values[i, j] == pytest.approx(np.mean(stable))
+    assert (ds.stable_fraction.values < 1).any()
+
+
+def test_classification_against_closed_form_regions_and_eigenvalues():
+    grid = {"alpha": np.linspace(0.3, 2.8, 6), "mu": [0.3, 1.2, 2.5]}
+    ds = atlas.sweep("brake", "classification", grid, values=BRAKE_LAW)
+    regions = cs.scene("brake").regions()
+    A, M = np.meshgrid(grid["alpha"], grid["mu"], indexing="ij")
+    assert np.array_equal(ds.region.values == 1, regions["stable for every law"].evaluate(alpha=A, mu=M))
+    assert np.array_equal(ds.region.values == 0, regions["law-dependent"].evaluate(alpha=A, mu=M))
+    brake = cs.scene("brake")
+    for (i, j), alpha in np.ndenumerate(A):
+        leading = _eigenvalues(brake, {**BRAKE_LAW, "alpha": alpha, "mu": M[i, j]}).real.max()
+        assert ds.stable.values[i, j] == (1 if leading < 0 else -1)
+    assert set(np.unique(ds.stable.values)) == {-1.0, 1.0}
+
+
+def test_equilibrium_count_against_numerics():
+    grid = {"alpha": np.linspace(0.3, 2.8, 5), "F_y": [-4.0, -0.5, 3.0]}
+    values = {"m": 1, "mu": 0.8, "F_x": 2}
+    ds = atlas.sweep("brake", "equilibrium_count", grid, values=values)
+    for (i, j), count in np.ndenumerate(ds.equilibrium_count.values):
+        point = {**values, "alpha": grid["alpha"][i], "F_y": grid["F_y"][j]}
+        assert count == len(numerics.equilibrium_reactions(cs.scene("brake"), point))
+    assert len(np.unique(ds.equilibrium_count.values)) == 2
+
+
+def test_failing_points_are_nan_with_a_reason():
+    def picky(values):
+        if values["mu"] > 1:
+            raise ValueError(f"no value at mu = {values['mu']}")
+        return values["mu"] ** 2
+
+    ds = atlas.sweep("brake", picky, {"mu": [0.5, 1.0, 1.5, 2.0]}, scheduler="sync")
+    assert ds.picky.values[:2].tolist() == [0.25, 1.0]
+    assert np.isnan(ds.picky.values[2:]).all()
+    assert ds.reason.values.tolist() == ["", "", "ValueError: no value at mu = 1.5", "ValueError: no value at mu = 2.0"]
+
+
+def test_cycle_amplitude_is_born_past_the_hopf_line():
+    """Stable side of the Hopf line: no cycle, NaN with the reason; beyond it: a cycle of the reactions."""
+    hopf = cs.scene("brake").regions()["Hopf line"].condition
+    by_name = {str(s): s for s in hopf.free_symbols}
+    mus = [0.6, 1.2]
+    sides = [
+        float((hopf.lhs - hopf.rhs).xreplace({by_name[k]: v for k, v in {**SQUEAL, "mu": mu}.items() if k in by_name}))
+        for mu in mus
+    ]
+    assert sides[0] * sides[1] < 0  # the closed-form Hopf line passes between the two points
+    ds = atlas.sweep("brake", CYCLE, {"mu": mus}, values=SQUEAL, scheduler="sync")
+    assert np.isnan(ds.amplitude.values[0]) and "settles on the equilibrium" in ds.reason.values[0]
+    assert ds.amplitude.values[1] > 0.1 and ds.omega.values[1] > 0 and ds.reason.values[1] == ""
+
+
+def test_plot_the_closed_form_hopf_line_falls_where_the_atlas_changes_sign():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    values = {k: v for k, v in SQUEAL.items() if not k.startswith("F_") and k != "alpha"}
+    grid = {"mu": np.linspace(0.3, 1.6, 27), "alpha": [np.pi / 2, 2.0]}
+    ds = atlas.sweep("brake", "leading_eigenvalue", grid, values=values).sel(alpha=np.pi / 2)  # a cut
+    data = atlas.atlas_data(ds, "leading_eigenvalue", resolution=2001)
+    (field,) = data.boundaries["Hopf line"][1]
+    xs, le = data.fine[0], ds.leading_eigenvalue.values
+    line = xs[np.nonzero(np.diff(np.sign(field)))[0]]
+    change = ds.mu.values[np.nonzero(np.diff(np.sign(le)))[0]]
+    assert len(line) == len(change) == 1 and change[0] <= line[0] <= change[0] + 0.05
+    fig, ax = plt.subplots()
+    artists = atlas.atlas_plot(data, ax=ax)
+    assert len(ax.lines) == 1 + 1 + 1  # the atlas, the Hopf line at the sign change, its legend entry
+    assert artists and ax.get_legend() is not None
+    plt.close(fig)
+
+
+# --- checkpoint and resume ------------------------------------------------------------------------
+
+
+def _counting(log_dir, stop_at=None):
+    """A user quantity that records each call in a file (calls happen in other processes)."""
+
+    def counted(values):
+        (log_dir / f"{values['mu']!r}.{os.getpid()}.{os.urandom(4).hex()}").touch()
+        if stop_at is not None and values["mu"] == stop_at:
+            raise KeyboardInterrupt  # the sweep dies here, as on a restart
+        return 10 * values["mu"]
+
+    return counted
+
+
+def test_a_resumed_sweep_recomputes_nothing_stored(tmp_path):
+    store, log = tmp_path / "atlas.zarr", tmp_path / "calls"
+    log.mkdir()
+    grid = {"mu": np.arange(1.0, 13.0)}
+    with pytest.raises(KeyboardInterrupt):
+        atlas.sweep("brake", _counting(log, stop_at=9.0), grid, chunks=4, store=store, scheduler="sync")
+    assert len(list(log.iterdir())) == 9  # two chunks stored, the third died at its first point
+    first = atlas.function(_counting(log), outputs=["counted"])
+    done = atlas.sweep("brake", first, grid, chunks=4, store=store, scheduler="sync")
+    assert (done.points_resumed, done.points_computed) == (8, 4)
+    assert sorted(float(p.name.split(".")[0] + "." + p.name.split(".")[1]) for p in log.iterdir()) == sorted(
+        list(range(1, 10)) + [9, 10, 11, 12]
+    )
+    assert done.counted.values.tolist() == (10 * grid["mu"]).tolist()
+    again = atlas.sweep("brake", first, grid, chunks=4, store=store, scheduler="sync")
+    assert (again.points_resumed, again.points_computed) == (12, 0) and len(list(log.iterdir())) == 13
+    with pytest.raises(AtlasError, match="holds a different sweep"):
+        atlas.sweep("brake", first, {"mu": np.arange(1.0, 14.0)}, chunks=4, store=store, scheduler="sync")
+
+
+# --- a real LocalCluster with 2 worker processes ----------------------------------------------------
+
+
+@pytest.fixture(scope="module", autouse=True)
+def cluster():
+    """Started with the module: its workers import contactsym while the local tests above run."""
+    import importlib
+
+    import distributed  # in the test extra: this test runs in CI, it is never skipped
+
+    with (
+        distributed.LocalCluster(
+            n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None, silence_logs=50
+        ) as local,
+        distributed.Client(local) as client,
+    ):
+        for address in client.scheduler_info()["workers"]:
+            warm = client.submit(importlib.import_module, "contactsym.atlas", workers=[address], pure=False)
+            distributed.fire_and_forget(warm)
+        yield client
+
+
+def test_distributed_equals_local_bit_for_bit(cluster):
+    grid = {"alpha": np.linspace(0.3, 2.8, 5), "mu": np.linspace(0.2, 2.4, 5)}
+    quantity = atlas.stable_fraction(laws=16)
+    local = atlas.sweep("brake", quantity, grid, values={"m": 1}, chunks=7)
+    remote = atlas.sweep("brake", quantity, grid, values={"m": 1}, chunks=7, client=cluster)
+    assert remote.identical(local)
+    # a stiff full simulation per point (Radau): the rod pushed until the impact-type catastrophe
+    quantity = atlas.catastrophe(1e-3, (0, 1), {"x_1": 0, "xdot_1": 1})
+    grid = {"X_2": [-1.0, 2.0]}
+    local = atlas.sweep("painleve-klein-rod", quantity, grid, values=ROD, chunks=1, scheduler="sync")
+    remote = atlas.sweep("painleve-klein-rod", quantity, grid, values=ROD, chunks=1, client=cluster)
+    assert remote.identical(local)
+    count = atlas.sweep("painleve-klein-rod", "equilibrium_count", grid, values=ROD)
+    # no catastrophe (inf) exactly where an equilibrium exists: two quantities, two derivations
+    assert np.array_equal(np.isinf(remote.time_to_catastrophe.values), count.equilibrium_count.values > 0)
+    assert np.isfinite(remote.time_to_catastrophe.values).any() and np.isinf(remote.time_to_catastrophe.values).any()
+
+
+def test_resume_on_the_cluster(cluster, tmp_path):
+    import zarr
+
+    store, log = tmp_path / "atlas.zarr", tmp_path / "calls"
+    log.mkdir()
+    quantity = atlas.function(_counting(log), outputs=["counted"])
+    grid = {"mu": np.arange(1.0, 9.0)}
+    first = atlas.sweep("brake", quantity, grid, chunks=2, store=store, client=cluster, progress=True)
+    zarr.open_group(str(store), mode="r+")["done"][1:2] = False  # as if the sweep stopped before chunk 1 was written
+    again = atlas.sweep("brake", quantity, grid, chunks=2, store=store, client=cluster)
+    assert (again.points_resumed, again.points_computed) == (6, 2)
+    assert len(list(log.iterdir())) == 8 + 2
+    assert again.identical(first.assign_attrs(points_resumed=6, points_computed=2))
+
+
+def test_a_killed_worker_loses_no_point(cluster, tmp_path):
+    # last on the cluster: the worker that dies comes back cold (its imports again)
+    marker = tmp_path / "killed"
+
+    def fragile(values):
+        import time
+
+        time.sleep(0.02)
+        if values["mu"] == 5.0 and not marker.exists():
+            marker.touch()
+            os._exit(1)  # the worker process dies in the middle of its task
+        return values["mu"] ** 2
+
+    ds = atlas.sweep("brake", fragile, {"mu": np.arange(1.0, 21.0)}, chunks=2, client=cluster)
+    assert marker.exists()
+    assert ds.fragile.values.tolist() == (np.arange(1.0, 21.0) ** 2).tolist()
+    assert (ds.reason.values == "").all()
+
+
+def test_unreachable_scheduler_is_one_line():
+    with pytest.raises(AtlasError) as error:
+        atlas.sweep("brake", _never, {"mu": [1.0]}, client="tcp://127.0.0.1:9", timeout=0.5)
+    assert str(error.value).startswith("cannot reach the Dask scheduler at tcp://127.0.0.1:9")
+    assert "\n" not in str(error.value)
+
+
+# --- the command line -------------------------------------------------------------------------------
+
+
+def test_cli_writes_the_atlas_all_or_nothing(tmp_path, capsys):
+    import xarray as xr
+
+    from contactsym.cli import main
+
+    out = tmp_path / "atlas.nc"
+    grid = ["--grid", "alpha=0.3:2.8:4", "--grid", "mu=0.5,1.5"]
+    assert main(["atlas", "brake", "classification", *grid, "--set", "m=1", "--out", str(out)]) == 0
+    assert "wrote" in capsys.readouterr().out
+    written = xr.open_dataset(out, engine="scipy")
+    direct = atlas.sweep(
+        "brake", "classification", {"alpha": np.linspace(0.3, 2.8, 4), "mu": [0.5, 1.5]}, values={"m": 1}
+    )
+    assert np.array_equal(written.region.values, direct.region.values)
+    assert [p.name for p in tmp_path.iterdir()] == ["atlas.nc"]  # no temporary file left
+    assert main(["atlas", "brake", "cycle", "--grid", "mu=0:1"]) == 2
+    assert main(["atlas", "brake", "cycle", "--grid", "mu=1", "--out", str(tmp_path / "a.txt")]) == 2
+    assert main(["atlas", "brake", "classification", "--grid", "mu=-1,1", "--set", "alpha=1"]) == 1
+    errors = capsys.readouterr().err.splitlines()
+    assert errors == [
+        "contactsym: error: --grid mu=0:1: write NAME=START:STOP:COUNT or NAME=V1,V2,...",
+        f"contactsym: error: --out {tmp_path / 'a.txt'}: the atlas is written as NetCDF; give a file name ending in .nc.",
+        "contactsym: error: grid axis 'mu': mu = -1.0 must be > 0 (the symbol is declared positive).",
+    ]
