@@ -39,7 +39,7 @@ from .parse import ParseError
 from .scene import Scene
 from .scenefile import scene_or_file
 from .scenes import DEFAULT_SCENE, scene, scene_names
-from .validate import shorten
+from .validate import cut, shorten
 
 __all__ = ["derivation_chain", "main"]
 
@@ -171,7 +171,7 @@ class _Parser(argparse.ArgumentParser):
     """argparse with one-line errors."""
 
     def error(self, message: str):
-        message = message if len(message) <= 200 else f"{message[:200]}... ({len(message)} characters)"
+        message = cut(message, 200)
         self.exit(USAGE, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 
@@ -238,7 +238,7 @@ def _report(names: list[str], out: str, pdf: bool, force: bool = False) -> int:
         probe.write_text("")
         probe.unlink()
     except OSError as error:
-        raise ReportError(f"cannot write to --out {root}: {error.strerror or error}.") from error
+        raise ReportError(f"cannot write to --out {cut(str(root))}: {cut(str(error.strerror or error))}.") from error
     summaries, started = [], time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="contactsym-figures-") as scratch:
         figures = FigureSource(Path(scratch))
@@ -335,7 +335,8 @@ def main(argv: list[str] | None = None) -> int:
         print(f"contactsym: error: {error}", file=sys.stderr)
         return FAILURE
     except OSError as error:
-        print(f"contactsym: error: {error.strerror or error}: {error.filename or ''}".rstrip(": "), file=sys.stderr)
+        text = f"{error.strerror or error}: {error.filename or ''}".rstrip(": ")
+        print(f"contactsym: error: {cut(text, 300)}", file=sys.stderr)
         return FAILURE
     except KeyboardInterrupt as stop:  # SIGINT, or SIGTERM/SIGHUP as Interrupted: temporary files are gone
         print("contactsym: interrupted", file=sys.stderr)

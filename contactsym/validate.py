@@ -35,6 +35,7 @@ __all__ = [
     "SHOWN",
     "chunk_size",
     "contact_fields",
+    "cut",
     "finite_expression",
     "finite_number",
     "friction_coefficient",
@@ -58,12 +59,14 @@ _NUMBER_TYPES = (int, float, Fraction, np.integer, np.floating)
 _NOT_FINITE = (sp.nan, sp.zoo, sp.oo, sp.S.NegativeInfinity)
 
 
+def cut(text: str, limit: int = SHOWN) -> str:
+    """``text`` cut to ``limit`` characters, saying how long it was."""
+    return text if len(text) <= limit else f"{text[:limit]}... ({len(text)} characters)"
+
+
 def shorten(value, limit: int = SHOWN) -> str:
     """``repr`` of a string, ``str`` of anything else, cut to ``limit`` characters."""
-    text = repr(value) if isinstance(value, str) else str(value)
-    if len(text) <= limit:
-        return text
-    return f"{text[:limit]}... ({len(text)} characters)"
+    return cut(repr(value) if isinstance(value, str) else str(value), limit)
 
 
 def _sequence(value, what: str, hint: str, error=SceneError) -> tuple:
