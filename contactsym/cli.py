@@ -6,11 +6,15 @@ SCENE is a built-in scene's name or the path of a scene file (``my.toml``, see
 ``contactsym [show] [SCENE]``            the derivation chain of a scene, as text
 ``contactsym list``                      the built-in scenes
 ``contactsym conditions SCENE --format text|latex|json [--signs +1,-1]``
-``contactsym report [SCENE ...] --out DIR [--no-pdf]``
+``contactsym report [SCENE ...] --out DIR [--no-pdf] [--force]``
                                          a LaTeX/PDF report per scene, figures and conditions.json
-``contactsym bench [--quick] [--json FILE]`` the benchmarks (from a source checkout)
+``contactsym bench [--quick] [--out DIR] [--json FILE]`` the benchmarks (from a source checkout)
 ``contactsym atlas SCENE QUANTITY --grid NAME=START:STOP:COUNT [--scheduler ADDRESS] [--out FILE.nc]``
                                          a parameter sweep (contactsym[atlas]; see contactsym.atlas)
+
+Output directories are written all or nothing (:mod:`contactsym.atomic`): a report or
+benchmark directory appears whole or not at all, and one that contactsym did not write
+is replaced only with ``--force``. SIGTERM and SIGINT remove the temporary files.
 
 Errors print one line to stderr and give a non-zero exit code: 2 for a bad command
 line (an unknown scene, a bad option), 1 for a failure while working (an unwritable
@@ -29,11 +33,13 @@ from pathlib import Path
 
 import sympy as sp
 
+from .atomic import replaced_directory, signals_as_exceptions
 from .errors import ContactsymError, SceneError, SignPatternError
 from .parse import ParseError
 from .scene import Scene
 from .scenefile import scene_or_file
 from .scenes import DEFAULT_SCENE, scene, scene_names
+from .validate import cut, shorten
 
 __all__ = ["derivation_chain", "main"]
 
@@ -102,7 +108,7 @@ def parse_signs(text: str) -> tuple[int, ...]:
         raise SignPatternError("--signs is empty; write e.g. --signs +1,-1.")
     for token in tokens:
         if token not in values:
-            raise SignPatternError(f"--signs: '{token}' is not a sign; write e.g. --signs +1,-1.")
+            raise SignPatternError(f"--signs: {shorten(token)} is not a sign; write e.g. --signs +1,-1.")
     return tuple(values[token] for token in tokens)
 
 
@@ -165,6 +171,7 @@ class _Parser(argparse.ArgumentParser):
     """argparse with one-line errors."""
 
     def error(self, message: str):
+        message = cut(message, 200)
         self.exit(USAGE, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 
@@ -181,22 +188,39 @@ def _parser() -> argparse.ArgumentParser:
     cond.add_argument("--signs", help="one sign pattern of the switching functions, e.g. +1,-1")
     report = sub.add_parser("report", help="write a LaTeX/PDF report per scene, with figures and conditions.json")
     report.add_argument("scenes", nargs="*", metavar="SCENE", help=f"scenes to report (default: all of {names})")
-    report.add_argument("--out", default="contactsym-report", help="output directory (default: contactsym-report)")
+    report.add_argument(
+        "--out", default="contactsym-report", type=_path, help="output directory (default: contactsym-report)"
+    )
     report.add_argument("--no-pdf", action="store_true", help="write report.tex but do not run pdflatex")
-    bench = sub.add_parser("bench", help="run the benchmarks (source checkout); table and plots in benchmarks/results")
+    report.add_argument("--force", action="store_true", help="replace scene directories that contactsym did not write")
+    bench = sub.add_parser("bench", help="run the benchmarks (source checkout); table and plots in --out")
     bench.add_argument("--quick", action="store_true", help="smaller sweeps, under 3 minutes")
-    bench.add_argument("--json", metavar="FILE", help="write the records as a JSON list to FILE")
+    bench.add_argument("--json", metavar="FILE", type=_path, help="write the records as a JSON list to FILE")
+    bench.add_argument(
+        "--out",
+        default="contactsym-bench",
+        type=_path,
+        help="folder for the table and plots (default: contactsym-bench)",
+    )
+    bench.add_argument("--force", action="store_true", help="replace an --out folder that contactsym did not write")
     from .atlas.cli import add_atlas_command  # the atlas imports Dask and xarray only when it runs
 
     add_atlas_command(sub)
     return parser
 
 
+def _path(text: str) -> str:
+    """A path argument: not empty (an empty --out would mean the current directory)."""
+    if not text.strip():
+        raise argparse.ArgumentTypeError("the path is empty; name a file or directory")
+    return text
+
+
 def _progress(message: str) -> None:
     print(f"contactsym: {message}", file=sys.stderr, flush=True)
 
 
-def _report(names: list[str], out: str, pdf: bool) -> int:
+def _report(names: list[str], out: str, pdf: bool, force: bool = False) -> int:
     from .report import FigureSource, ReportError, conditions, summary_text, write_report
 
     names = names or scene_names()
@@ -214,7 +238,7 @@ def _report(names: list[str], out: str, pdf: bool) -> int:
         probe.write_text("")
         probe.unlink()
     except OSError as error:
-        raise ReportError(f"cannot write to --out {root}: {error.strerror or error}.") from error
+        raise ReportError(f"cannot write to --out {cut(str(root))}: {cut(str(error.strerror or error))}.") from error
     summaries, started = [], time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="contactsym-figures-") as scratch:
         figures = FigureSource(Path(scratch))
@@ -224,7 +248,7 @@ def _report(names: list[str], out: str, pdf: bool) -> int:
             def say(step: str, index=index, name=s.name) -> None:
                 _progress(f"[{index}/{len(scenes)}] {name}: {step}")
 
-            result = write_report(s, root / s.name, pdf=pdf, figures=figures, progress=say)
+            result = write_report(s, root / s.name, pdf=pdf, figures=figures, progress=say, force=force)
             for note in result.notes:
                 _progress(f"[{index}/{len(scenes)}] {s.name}: note: {note}")
             made = ", ".join(p.name for p in (result.tex, result.pdf, result.conditions) if p is not None)
@@ -253,7 +277,15 @@ def _conditions(name: str, fmt: str, signs: str | None) -> int:
     return 0
 
 
-def _bench(quick: bool, json_file: str | None) -> int:
+def _writable_file(path: str) -> None:
+    """Fail before a long run, not after it, when ``path`` cannot be written."""
+    target = Path(path)
+    folder = target.parent if str(target.parent) else Path(".")
+    if target.is_dir() or not folder.is_dir() or not os.access(folder, os.W_OK):
+        raise ContactsymError(f"cannot write --json {shorten(path)}: choose a file in an existing, writable folder.")
+
+
+def _bench(quick: bool, json_file: str | None, out: str = "contactsym-bench", force: bool = False) -> int:
     root = str(Path(__file__).resolve().parent.parent)  # benchmarks/ sits beside the package in a checkout
     if root not in sys.path:
         sys.path.insert(0, root)
@@ -263,7 +295,15 @@ def _bench(quick: bool, json_file: str | None) -> int:
         raise ContactsymError(
             f"the benchmarks are not installed ({error}); run contactsym bench from a source checkout."
         ) from error
-    return run_benchmarks((["--quick"] if quick else []) + (["--json", json_file] if json_file else []))
+    if json_file:
+        _writable_file(json_file)
+    with replaced_directory(out, force=force) as work:
+        code = run_benchmarks(
+            (["--quick"] if quick else []) + (["--json", json_file] if json_file else []) + ["--out", str(work)]
+        )
+        if code:
+            raise ContactsymError(f"the benchmarks failed (exit code {code}); --out {shorten(out)} was left as it was.")
+    return code
 
 
 def _silence_stdout() -> None:
@@ -281,7 +321,7 @@ def main(argv: list[str] | None = None) -> int:
     except SystemExit as stop:  # --help, or a usage error already printed in one line
         return int(stop.code or 0)
     try:
-        with sp.evaluate(True):
+        with sp.evaluate(True), signals_as_exceptions():
             code = _run(args)
         sys.stdout.flush()
         return code
@@ -295,11 +335,12 @@ def main(argv: list[str] | None = None) -> int:
         print(f"contactsym: error: {error}", file=sys.stderr)
         return FAILURE
     except OSError as error:
-        print(f"contactsym: error: {error.strerror or error}: {error.filename or ''}".rstrip(": "), file=sys.stderr)
+        text = f"{error.strerror or error}: {error.filename or ''}".rstrip(": ")
+        print(f"contactsym: error: {cut(text, 300)}", file=sys.stderr)
         return FAILURE
-    except KeyboardInterrupt:
+    except KeyboardInterrupt as stop:  # SIGINT, or SIGTERM/SIGHUP as Interrupted: temporary files are gone
         print("contactsym: interrupted", file=sys.stderr)
-        return 130
+        return getattr(stop, "exit_code", 130)
 
 
 def _run(args) -> int:
@@ -308,11 +349,11 @@ def _run(args) -> int:
             print(f"{name:24s}{scene(name).description}")
         return 0
     if args.command == "report":
-        return _report(args.scenes, args.out, pdf=not args.no_pdf)
+        return _report(args.scenes, args.out, pdf=not args.no_pdf, force=args.force)
     if args.command == "conditions":
         return _conditions(args.scene, args.format, args.signs)
     if args.command == "bench":
-        return _bench(args.quick, args.json)
+        return _bench(args.quick, args.json, args.out, args.force)
     if args.command == "atlas":
         from .atlas.cli import run_atlas
 

@@ -18,6 +18,7 @@ import sympy as sp
 
 from .errors import ComplianceError
 from .parse import sympy_only
+from .validate import friction_coefficient, positive_parameter, shorten
 
 __all__ = ["Compliance", "Generic", "KelvinVoigt", "Law", "Coulomb", "Viscous"]
 
@@ -69,13 +70,14 @@ class Generic(Compliance):
 
 def _require_positive(value: sp.Expr, what: str) -> sp.Expr:
     value = sympy_only(value, what)
+    positive_parameter(value, what, "(1.5) needs a positive law", ComplianceError)
     if value.is_positive:
         return value
     if value.is_positive is False:
-        raise ComplianceError(f"{what} = {value} is not positive, so (1.5) fails; use a positive {what}.")
+        raise ComplianceError(f"{what} = {shorten(value)} is not positive, so (1.5) fails; use a positive {what}.")
     raise ComplianceError(
-        f"cannot show {what} = {value} > 0 as (1.5) requires; "
-        f"declare its symbols with positive=True, e.g. sympy.Symbol('{value}', positive=True)."
+        f"cannot show {what} = {shorten(value)} > 0 as (1.5) requires; "
+        f"declare its symbols with positive=True, e.g. sympy.Symbol('{shorten(value)}', positive=True)."
     )
 
 
@@ -240,6 +242,9 @@ class Coulomb:
     direction: object
     point: object = None
 
+    def __post_init__(self):
+        object.__setattr__(self, "mu", friction_coefficient(self.mu))
+
     def magnitude(self, reaction: sp.Expr, slip_speed: sp.Expr | None) -> sp.Expr:
         return self.mu * sp.Abs(reaction)
 
@@ -260,6 +265,9 @@ class Viscous:
     c: sp.Expr
     direction: object
     point: object = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "c", friction_coefficient(self.c, "the viscous coefficient c"))
 
     def magnitude(self, reaction: sp.Expr, slip_speed: sp.Expr | None) -> sp.Expr:
         return self.c * slip_speed

@@ -52,9 +52,12 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
+from . import validate
 from .errors import ContactsymError
+from .intervals import interval_sign
 from .laws import Compliance, Generic, KelvinVoigt, Law
 from .parse import sympy_only
+from .progress import Budget, Progress
 from .scene import t as _time
 
 __all__ = [
@@ -99,9 +102,11 @@ class NumericsError(ContactsymError):
 def _number(value, name: str) -> sp.Expr:
     """A finite real number as a SymPy number; never parses text."""
     if isinstance(value, (str, bytes)):
-        raise NumericsError(f"{name} = {value!r} is text; pass a number (contactsym never parses text).")
+        raise NumericsError(
+            f"{name} = {validate.shorten(value)} is text; pass a number (contactsym never parses text)."
+        )
     if isinstance(value, (bool, np.bool_)):
-        raise NumericsError(f"{name} = {value!r} is a truth value; pass a number.")
+        raise NumericsError(f"{name} = {validate.shorten(value)} is a truth value; pass a number.")
     if isinstance(value, (int, np.integer)):
         return sp.Integer(int(value))
     if isinstance(value, Fraction):
@@ -114,18 +119,18 @@ def _number(value, name: str) -> sp.Expr:
     if isinstance(value, sp.Basic):
         if value.free_symbols:
             raise NumericsError(
-                f"{name} = {value} still contains the symbols {sorted(map(str, value.free_symbols))}; pass a number."
+                f"{name} = {validate.shorten(value)} still contains the symbols {sorted(map(str, value.free_symbols))}; pass a number."
             )
         if value.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or value.is_finite is False:
-            raise NumericsError(f"{name} = {value} is not finite; pass a finite number.")
+            raise NumericsError(f"{name} = {validate.shorten(value)} is not finite; pass a finite number.")
         if value.is_real is False:
-            raise NumericsError(f"{name} = {value} is not real; pass a real number.")
+            raise NumericsError(f"{name} = {validate.shorten(value)} is not real; pass a real number.")
         if not value.is_number:
-            raise NumericsError(f"{name} = {value} is not a number.")
+            raise NumericsError(f"{name} = {validate.shorten(value)} is not a number.")
         if not math.isfinite(float(value)):
-            raise NumericsError(f"{name} = {value} is not finite; pass a finite number.")
+            raise NumericsError(f"{name} = {validate.shorten(value)} is not finite; pass a finite number.")
         return value
-    raise NumericsError(f"{name} = {value!r} of type {type(value).__name__} is not a number.")
+    raise NumericsError(f"{name} = {validate.shorten(value)} of type {type(value).__name__} is not a number.")
 
 
 def _positive(value, name: str, why: str) -> float:
@@ -904,11 +909,35 @@ class Simulation:
 
 def _check_span(span, name: str) -> tuple[float, float]:
     if not isinstance(span, (tuple, list)) or len(span) != 2:
-        raise NumericsError(f"{name} = {span!r} must be a pair (start, end).")
+        raise NumericsError(f"{name} = {validate.shorten(span)} must be a pair (start, end).")
     start, end = (float(_number(v, name)) for v in span)
     if not end > start:
         raise NumericsError(f"{name} = ({start}, {end}): the end must come after the start.")
     return start, end
+
+
+def _budget_message(method: str, analytic: bool, counter: dict, max_rhs: int, budget, span, time_name) -> str:
+    """What ran out, how far the run got, and advice that is not what was already done."""
+    start, end = span
+    spent = (
+        f"{budget.elapsed:.0f} s (max_seconds = {budget.max_seconds:g})"
+        if counter["n"] <= max_rhs
+        else f"{max_rhs} right-hand-side evaluations (max_rhs)"
+    )
+    reached = (
+        f"it reached {time_name} = {counter['t']:.6g}, {100 * (counter['t'] - start) / (end - start):.3g}% of the span"
+    )
+    if analytic:  # the stiff solver with the exact Jacobian was already in use: the work itself is large
+        advice = (
+            f"{method} already had the analytic Jacobian, so the cost is the number of fast time scales in the "
+            "span: shorten the span, take a larger eps, or use the reduced system (simulate_reduced) for the "
+            "slow motion; raise the limit only if the whole run is needed"
+        )
+    elif method in _IMPLICIT:
+        advice = "pass jacobian=True so that the solver gets the analytic Jacobian"
+    else:
+        advice = f"{method} is explicit and contacts are stiff: use method='Radau' or 'BDF' with the analytic Jacobian"
+    return f"{method} used up its budget of {spent}; {reached}. {advice}."
 
 
 def integrate(
@@ -925,6 +954,8 @@ def integrate(
     max_rhs: int = 2_000_000,
     reaction_bound: float | None = None,
     events: Sequence = (),
+    progress: Progress | None = None,
+    max_seconds: float | None = None,
 ) -> Simulation:
     """Integrate a generated system with ``scipy.integrate.solve_ivp``.
 
@@ -941,6 +972,10 @@ def integrate(
         Stop with status ``"failed"`` after this many right-hand-side evaluations.
     reaction_bound : float, optional
         Stop with status ``"impact"`` when some |N_j| exceeds it.
+    progress : callable, optional
+        ``progress(fraction of the span done, message)``, a few times per second.
+    max_seconds : float, optional
+        Stop with status ``"failed"`` after this much wall time, saying how far the run got.
 
     Examples
     --------
@@ -953,7 +988,9 @@ def integrate(
     ('ok', -0.68247)
     """
     start, end = _check_span(span, "span")
-    z0 = np.asarray(z0, dtype=float).ravel()
+    method = validate.solver_method(method)
+    t_eval = validate.output_times(t_eval, (start, end))
+    z0 = validate.real_array(z0, "the initial state").ravel()
     if z0.shape != (len(system.names),):
         raise NumericsError(
             f"the initial state has {z0.size} components; {system.description} has {len(system.names)}."
@@ -966,11 +1003,15 @@ def integrate(
         atol = rtol * np.maximum(magnitude, max(1e-12 * float(magnitude.max(initial=0.0)), 1e-300))
         if not magnitude.any():
             atol = np.full_like(z0, rtol)
-    counter = {"n": 0}
+    counter = {"n": 0, "t": start}  # t: the furthest time evaluated, for progress and for a spent budget
+    budget = Budget(progress, max_seconds)
 
     def fun(t, y):
         counter["n"] += 1
+        counter["t"] = max(counter["t"], t)
         if counter["n"] > max_rhs:
+            raise _Budget
+        if counter["n"] % 64 == 0 and budget.report((counter["t"] - start) / (end - start), f"{system.time} = {t:.4g}"):
             raise _Budget
         out = system.fun(t, y)
         if not np.all(np.isfinite(out)):
@@ -1016,14 +1057,13 @@ def integrate(
             )
     except _Budget:
         status = "failed"
-        message = (
-            f"{method} needed more than {max_rhs} right-hand-side evaluations; the problem is stiff: "
-            "use method='Radau' or 'BDF' with the analytic Jacobian, or raise max_rhs."
-        )
+        message = _budget_message(method, analytic, counter, max_rhs, budget, (start, end), system.time)
     except _NotFinite as stop:
         status = "failed"
         message = f"the right-hand side is not finite at {system.time} = {stop.args[0]:.6g}; check the parameters."
     wall, cpu = time.perf_counter() - started, time.process_time() - cpu
+    if status == "ok":
+        budget.report(1.0, f"{system.time} = {end:.4g}")
     if result is None:
         empty = np.empty((len(system.names), 0))
         return Simulation(
@@ -1169,6 +1209,8 @@ def simulate_full(
     reaction_bound: float | None = None,
     bound_factor: float = 1e6,
     max_rhs: int = 2_000_000,
+    progress: Progress | None = None,
+    max_seconds: float | None = None,
 ) -> Simulation:
     """Simulate the full compliant system (1.9) at ``eps`` in the original time t.
 
@@ -1182,6 +1224,8 @@ def simulate_full(
         at the equilibrium u* (to leading order on the slow manifold).
     laws, unilateral
         See :func:`full_system`.
+    progress, max_seconds
+        Progress reports and a wall-time limit; see :func:`integrate`.
     reaction_bound : float, optional
         |N_j| beyond which the run stops as an impact-type catastrophe; default
         ``bound_factor`` times the scale of the reactions (|u*|, or the loads'
@@ -1312,6 +1356,8 @@ def simulate_full(
         dense_output=dense_output,
         max_rhs=max_rhs,
         reaction_bound=bound,
+        progress=progress,
+        max_seconds=max_seconds,
     )
     extra = {
         "eps": eps,
@@ -1687,6 +1733,9 @@ def _exact_sign(expr: sp.Expr) -> int:
         raise NumericsError(
             f"cannot decide the sign of {expr}: values are missing for {sorted(map(str, expr.free_symbols))}."
         )
+    found = interval_sign(expr)  # proven by outward rounding; evalf's strict mode gives up on deep cancellation
+    if found is not None:
+        return found
     for precision in (30, 100, 300):
         try:
             value = expr.evalf(precision, strict=True)
@@ -1964,7 +2013,7 @@ class PointClassifier:
             raise NumericsError(
                 f"give {len(self.parameters)} arrays, one per parameter {list(map(str, self.parameters))}."
             )
-        return [np.asarray(array, dtype=float) for array in arrays]
+        return [validate.real_array(array, f"the values of {symbol}") for symbol, array in zip(self.parameters, arrays)]
 
     def _check_values(self, arrays) -> None:
         for symbol, a in zip(self.parameters, arrays):
@@ -2022,7 +2071,13 @@ class PointClassifier:
                 return 1 if value > 0 else -1
         return None
 
-    def __call__(self, *arrays, chunk: int = 1 << 15) -> _PointsResult:
+    def __call__(
+        self, *arrays, chunk: int = 1 << 15, progress: Progress | None = None, max_seconds: float | None = None
+    ) -> _PointsResult:
+        """Classify the points; ``progress(fraction, message)`` follows the exact path, which
+        ``max_seconds`` bounds (a NumericsError then says how many points were decided)."""
+        chunk = validate.chunk_size(chunk)
+        budget = Budget(progress, max_seconds)
         arrays = self._check(arrays)
         shape = np.broadcast(*arrays).shape if arrays else ()
         arrays = [np.ascontiguousarray(np.broadcast_to(a, shape)).ravel() for a in arrays]
@@ -2040,11 +2095,18 @@ class PointClassifier:
         for position in range(len(self.kept)):
             in_band |= factor_signs[position] == 0
         points = np.nonzero(in_band)[0]
-        for i in points:
+        for done, i in enumerate(points):
+            if budget.report(done / len(points), f"{done} of {len(points)} points decided exactly"):
+                raise NumericsError(
+                    f"the exact path decided {done} of {len(points)} points near a boundary within max_seconds = "
+                    f"{max_seconds:g} (the float stage decided the other {size - len(points)}); raise max_seconds, "
+                    "or classify fewer points at a time."
+                )
             point = [float(a[i]) for a in arrays]
             for position in np.nonzero(factor_signs[:, i] == 0)[0]:
                 factor_signs[position, i] = self._exact_factor_sign(position, point)
             self._combine(factor_signs[:, i : i + 1], signs[:, i : i + 1], stable[i : i + 1])
+        budget.report(1.0, f"{size} points, {len(points)} decided exactly")
         bands = [max(self.band, 2 * g) for g in self.gammas]
         return _PointsResult(
             stable.reshape(shape),

@@ -1026,6 +1026,7 @@ def write_report(
     pdf: bool = True,
     figures: FigureSource | None = None,
     progress: Callable[[str], None] | None = None,
+    force: bool = False,
 ) -> ReportResult:
     """Write ``directory/report.tex``, ``conditions.json``, ``figures/*.png`` and ``report.pdf``.
 
@@ -1039,7 +1040,9 @@ def write_report(
 
     ``figures`` shares drawn figures between scenes (one is made when not given);
     ``progress`` receives short messages. ``report.pdf`` is made when ``pdf`` is true and
-    pdflatex is installed.
+    pdflatex is installed. All or nothing: the files are written to a directory beside
+    ``directory`` that replaces it only when all succeeded (see :mod:`contactsym.atomic`);
+    an existing directory that contactsym did not write is replaced only with ``force``.
 
     Examples
     --------
@@ -1056,8 +1059,36 @@ def write_report(
     >>> "Errata" in text, result.figures, result.notes[0][:40]
     (False, [], 'No figures: give the scene a [figures] t')
     """
-    say = progress or (lambda message: None)
+    from .atomic import replaced_directory
+
     directory = Path(directory)
+    with replaced_directory(directory, force=force, error=ReportError) as work:
+        result = _write_files(scene, work, pdf, figures, progress or (lambda message: None), directory)
+    return ReportResult(
+        scene.name,
+        directory,
+        directory / result.tex.name,
+        directory / result.conditions.name,
+        None if result.pdf is None else directory / result.pdf.name,
+        [Figure(directory / "figures" / f.path.name, f.caption) for f in result.figures],
+        result.notes,
+    )
+
+
+def _compile_keeping_log(tex: Path, target: Path) -> Path | None:
+    """compile_pdf; on failure the log is copied beside ``target``, since the directory of ``tex`` is removed."""
+    try:
+        return compile_pdf(tex)
+    except ReportError as error:
+        log, kept = tex.with_suffix(".log"), target.with_name(f"{target.name}-pdflatex.log")
+        message = str(error).replace(str(tex), str(target / tex.name))
+        if log.exists():
+            shutil.copyfile(log, kept)
+            message = message.replace(str(log), str(kept))
+        raise ReportError(f"{message} The previous report is unchanged.") from error
+
+
+def _write_files(scene, directory: Path, pdf: bool, figures: FigureSource | None, say, final: Path) -> ReportResult:
     try:
         (directory / "figures").mkdir(parents=True, exist_ok=True)
     except OSError as error:
@@ -1081,7 +1112,7 @@ def write_report(
     result.tex.write_text(report_tex(scene, placed, notes))
     if pdf:
         say("pdflatex")
-        result.pdf = compile_pdf(result.tex)
+        result.pdf = _compile_keeping_log(result.tex, final)
         if result.pdf is None:
             result.notes.append(
                 "pdflatex is not installed: report.pdf was not made (apt-get install texlive-latex-base)."

@@ -19,6 +19,17 @@ from .algebra import known_sign
 from .errors import SceneError, SignPatternError
 from .laws import Compliance, Coulomb, Generic, Viscous
 from .parse import sympy_only
+from .validate import (
+    contact_fields,
+    finite_expression,
+    lagrangian_parts,
+    positive_parameter,
+    reactions_act,
+    scene_options,
+    scene_parts,
+    shorten,
+    sign_pattern,
+)
 
 __all__ = ["Contact", "Scene", "t"]
 
@@ -60,11 +71,12 @@ class Contact:
     unilateral: bool = False
 
     def __post_init__(self):
+        contact_fields(self.coordinate, self.compliance, self.friction, self.unilateral)
         if self.compliance is None:
             object.__setattr__(self, "compliance", Generic())
         object.__setattr__(self, "coordinate", sympy_only(self.coordinate, "the gap of a contact"))
         if not isinstance(self.reaction, sp.Symbol):
-            raise SceneError(f"the reaction of a contact must be a sympy Symbol, not {self.reaction!r}.")
+            raise SceneError(f"the reaction of a contact must be a sympy Symbol, not {shorten(self.reaction)}.")
 
     def __repr__(self) -> str:
         side = ", unilateral" if self.unilateral else ""
@@ -103,12 +115,16 @@ def _check_eps(eps) -> sp.Expr:
     """eps is the small positive parameter of (1.6): a positive symbol or number."""
     if eps is None:
         return sp.Symbol("epsilon", positive=True)
+    why = "it is the small time scale of the deformations (1.6)"
     eps = sympy_only(eps, "eps")
+    positive_parameter(eps, "eps", why)
     if eps.is_positive:
         return eps
     if eps.is_positive is False:
-        raise SceneError(f"eps = {eps} must be > 0: it is the small time scale of the deformations (1.6).")
-    raise SceneError(f"cannot show eps = {eps} > 0; use sympy.Symbol('{eps}', positive=True) or a positive number.")
+        raise SceneError(f"eps = {shorten(eps)} must be > 0: {why}.")
+    raise SceneError(
+        f"cannot show eps = {shorten(eps)} > 0; use sympy.Symbol('epsilon', positive=True) or a positive number."
+    )
 
 
 class Scene:
@@ -172,6 +188,9 @@ class Scene:
         eps: sp.Symbol | None = None,
         contact_space=None,
     ):
+        derived = contact_space is not None
+        coordinates, accelerations, contacts = scene_parts(coordinates, accelerations, contacts, derived=derived)
+        scene_options(name, description, at, presentation, parameters, positive, solve_for)
         self.name = name
         self.description = description
         self.coordinates = tuple(coordinates)
@@ -212,11 +231,8 @@ class Scene:
         >>> cs.Scene.from_accelerations([x, y], [0, N - 1], [c]).accelerations[x]
         -mu*Abs(N)
         """
+        coordinates, accelerations, contacts = scene_parts(coordinates, accelerations, contacts)
         accelerations = [sympy_only(g, "an acceleration") for g in accelerations]
-        if len(accelerations) != len(coordinates):
-            raise SceneError(
-                f"got {len(accelerations)} accelerations for {len(coordinates)} coordinates; give one per coordinate."
-            )
         for contact in contacts:
             if contact.coordinate not in coordinates:
                 raise SceneError(
@@ -247,7 +263,9 @@ class Scene:
         """
         from .mechanics import contact_space
 
+        coordinates, _, contacts = scene_parts(coordinates, None, contacts, derived=True)
         lagrangian = sympy_only(lagrangian, "the Lagrangian")
+        lagrangian_parts(lagrangian, loads, frame)
         space = contact_space(lagrangian, coordinates, contacts, loads, frame)
         return cls(coordinates, None, contacts, contact_space=space, **options)
 
@@ -291,7 +309,11 @@ class Scene:
             stated = [*space.M, *space.F, *space.W] + [
                 x for term in space.friction if term for x in (*term[0], term[1])
             ]
+            for g in stated:
+                finite_expression(sp.sympify(g), "a term of the equations of motion")
         else:
+            for q, g in self.accelerations.items():
+                finite_expression(g, f"the acceleration of {q}")
             if len(self.accelerations) != len(self.coordinates):
                 raise SceneError("give each coordinate exactly one acceleration.")
             if not any(g.has(*reactions) for g in self.accelerations.values()):
@@ -299,6 +321,7 @@ class Scene:
                     f"no acceleration depends on the reactions {sorted(map(str, reactions))}; "
                     "the contacts must act on the system (check the reaction symbols)."
                 )
+            reactions_act(self.accelerations, self.contacts)
             stated = list(self.accelerations.values())
         if parameters is not None:
             declared = set(parameters) | reactions | {self.eps}
@@ -400,10 +423,10 @@ class Scene:
     def check_signs(self, signs) -> tuple:
         """Validate a sign pattern against the switching functions of the fast subsystem."""
         switching = self.fast_subsystem().switching
-        signs = tuple(signs)
+        signs = sign_pattern(signs)
         if len(signs) != len(switching):
             raise SignPatternError(
-                f"the sign pattern {signs} has length {len(signs)}, but scene '{self.name}' has "
+                f"the sign pattern {signs} has length {len(signs)}, but scene {shorten(self.name)} has "
                 f"{len(switching)} switching functions {list(switching)}; give one sign (+1 or -1) each."
             )
         for value, s in zip(signs, switching):
@@ -450,13 +473,15 @@ class Scene:
         """Hurwitz conditions (4.7) and the robustness classification (Props. 3-8)."""
         from .stability import Stability
 
-        return self._stage(("stability", signs and tuple(signs)), lambda: Stability(self.linearization(signs)))
+        key = None if signs is None else self.check_signs(signs)
+        return self._stage(("stability", key), lambda: Stability(self.linearization(key)))
 
     def regions(self, signs=None) -> dict:
         """Named closed-form regions: stable / unstable for every law, law-dependent, Hopf line."""
         from .regions import scene_regions
 
-        return self._stage(("regions", signs and tuple(signs)), lambda: scene_regions(self, signs))
+        key = None if signs is None else self.check_signs(signs)
+        return self._stage(("regions", key), lambda: scene_regions(self, key))
 
     def equilibrium_counts(self) -> dict:
         """Named closed-form regions by the number of equilibria (see :mod:`contactsym.counts`)."""

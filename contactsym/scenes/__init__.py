@@ -5,6 +5,7 @@ from __future__ import annotations
 from importlib import import_module
 
 from ..errors import SceneError
+from ..validate import scene_name, shorten
 
 __all__ = ["scene", "scene_names", "paper_name", "DEFAULT_SCENE"]
 
@@ -45,12 +46,13 @@ def scene(name: str):
     ...
     contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, double-pendulum-tip.
     """
+    name = scene_name(name)
     if name not in _MODULES:
         import difflib
 
         close = difflib.get_close_matches(name, _MODULES, n=1)
         hint = f"did you mean '{close[0]}'? " if close else ""
-        raise SceneError(f"unknown scene '{name}'; {hint}Known scenes: {', '.join(_MODULES)}.")
+        raise SceneError(f"unknown scene {shorten(name)}; {hint}Known scenes: {', '.join(_MODULES)}.")
     if name not in _built:
         _built[name] = import_module(f".{_MODULES[name]}", __name__).build()
     return _built[name]
