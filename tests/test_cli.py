@@ -123,7 +123,7 @@ def test_report_all_scenes_writes_tex_json_figures_and_summary(capfd, tmp_path):
         assert f"{name}: " in out  # the summary names each scene
         assert f"] {name}: " in err  # progress on stderr
     total = len(cs.scene_names())
-    assert "[1/" + str(total) + "]" in err and f"[{total}/{total}]" in err
+    assert f"[1/{total}]" in err and f"[{total}/{total}]" in err
     guides = json.loads((all_reports / "painleve-klein-guides" / "conditions.json").read_text())
     assert guides["regions"]["unstable for every law"]["sympy"] == "v_1 + v_2 > 2*kappa**2"
     assert guides["regions"]["unstable for every law"]["paper"] == ["(5.7)"]
