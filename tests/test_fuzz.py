@@ -18,6 +18,7 @@ from hypothesis import strategies as st
 import contactsym as cs
 from benchmarks import fuzz
 
+
 @pytest.mark.parametrize("make", fuzz.CASES, ids=[f.__name__ for f in fuzz.CASES])
 @settings(max_examples=15, deadline=None)
 @given(seed=st.integers(min_value=0, max_value=2**32 - 1))
