@@ -47,6 +47,7 @@ from sympy.core.relational import Relational
 
 from .algebra import normalize
 from .errors import ContactsymError
+from .orthants import orthant_regions
 from .regions import Region, _as_positive_relation, closed_form, known_sign
 
 __all__ = [
@@ -148,10 +149,11 @@ def _proves(slack_forms, positive, strict_premise: bool, strict_conclusion: bool
     return False
 
 
-def _implied(premises: list[_Condition], conclusion: _Condition, presenter) -> bool:
-    """A sum of some premises is below the conclusion by a known non-negative amount."""
+def _implied(premises: list[_Condition], conclusion: _Condition, presenter, max_size=None) -> bool:
+    """A sum of some premises (at most ``max_size`` of them) is below the conclusion by a known
+    non-negative amount."""
     positive = presenter.positive_expressions
-    for size in range(1, len(premises) + 1):
+    for size in range(1, min(len(premises), max_size or len(premises)) + 1):
         for chosen in itertools.combinations(premises, size):
             raw = conclusion.raw - sp.Add(*[p.raw for p in chosen])
             forms = (normalize(raw), presenter.present(raw))
@@ -160,10 +162,11 @@ def _implied(premises: list[_Condition], conclusion: _Condition, presenter) -> b
     return False
 
 
-def _infeasible(conditions: list[_Condition], presenter) -> bool:
-    """Some of the conditions add up to a quantity known to be <= 0 (< 0 when none is strict)."""
+def _infeasible(conditions: list[_Condition], presenter, max_size=None) -> bool:
+    """Some of the conditions (at most ``max_size``) add up to a quantity known to be <= 0 (< 0 when
+    none is strict). A sufficient test: False does not prove the conditions compatible."""
     positive = presenter.positive_expressions
-    for size in range(1, len(conditions) + 1):
+    for size in range(1, min(len(conditions), max_size or len(conditions)) + 1):
         for chosen in itertools.combinations(conditions, size):
             total = sp.Add(*[c.raw for c in chosen])
             for form in (normalize(total), presenter.present(total)):
@@ -173,12 +176,12 @@ def _infeasible(conditions: list[_Condition], presenter) -> bool:
     return False
 
 
-def _drop_implied(conditions: list[_Condition], keep: list[_Condition], presenter) -> list[_Condition]:
+def _drop_implied(conditions: list[_Condition], keep: list[_Condition], presenter, max_size=None) -> list[_Condition]:
     """Remove conditions implied by the others (``keep`` conditions stay and serve as premises)."""
     kept = list(conditions)
     for condition in conditions:
         others = [c for c in kept if c is not condition] + list(keep)
-        if _implied(others, condition, presenter):
+        if _implied(others, condition, presenter, max_size):
             kept.remove(condition)
     return kept
 
@@ -413,8 +416,11 @@ def corner_cases(scene) -> list[CountCase]:
     """
     if scene.k != 1:
         raise ContactsymError(f"corner_cases is for one contact; scene '{scene.name}' has k = {scene.k}.")
-    if scene.fixed_signs:
-        raise ContactsymError("equilibrium counts for a unilateral contact with k = 1 are not implemented.")
+    if not _uses_corners(scene):
+        raise ContactsymError(
+            f"scene '{scene.name}' has a unilateral contact: its counts (lift-off included) come from "
+            "count_regions (contactsym.orthants), not from corner cases."
+        )
     return list(scene._stage("corner cases", lambda: tuple(_corner_cases(scene))))
 
 
@@ -485,58 +491,44 @@ def _k1_regions(scene) -> dict[str, sp.Basic]:
     return {name: _boolean(_merge_or(ds, tuple(scene.positive_expressions))) for name, ds in by_name.items()}
 
 
-# --- k >= 2: orthant determinants -----------------------------------------------------------
+# --- orthant maps (k >= 2, unilateral contacts): see contactsym.orthants ---------------------
+
+#: Sums of at most this many conditions are tried when pruning for k >= 3 (2^k determinants).
+_QUICK = 2
 
 
-def _check_fan(scene) -> None:
-    """The pieces must be the orthants of k affine switching functions, f affine on each."""
-    fast = scene.fast_subsystem()
-    if len(fast.switching) != scene.k:
-        raise ContactsymError(
-            f"scene '{scene.name}' has {len(fast.switching)} switching functions for k = {scene.k} contacts; "
-            "the orthant rule needs one per contact."
-        )
-    linear = sp.Matrix([[sp.diff(normalize(s), x) for x in fast.u] for s in fast.switching])
-    if any(e.has(*fast.u) for e in linear) or sp.expand(linear.det(method="berkowitz")) == 0:
-        raise ContactsymError(f"the switching functions {list(fast.switching)} are not independent affine functions.")
+class _Tools:
+    """The exact condition tools above, bound to a scene's count presentation."""
+
+    def __init__(self, scene):
+        self.presenter = _Presenter(scene)
+        self.positive = self.presenter.positive_expressions
+
+    def condition(self, expr) -> _Condition:
+        return _Condition(*_forms(self.presenter, expr))
+
+    def sign(self, condition: _Condition) -> int | None:
+        return _sign(condition, self.positive)
+
+    sign_choices = staticmethod(_sign_choices)
+    boolean = staticmethod(_boolean)
+
+    def infeasible(self, conditions, quick: bool = False) -> bool:
+        return _infeasible(conditions, self.presenter, _QUICK if quick else None)
+
+    def drop_implied(self, conditions, quick: bool = False):
+        return _drop_implied(conditions, [], self.presenter, _QUICK if quick else None)
+
+    def closed(self, conditions) -> frozenset:
+        return _closed_conjuncts(conditions, [], self.presenter)
+
+    def merge(self, disjuncts):
+        return _merge_or(disjuncts, self.positive)
 
 
-def _orthant_class(negative: set, patterns: list) -> str:
-    if not negative or len(negative) == len(patterns):
-        return "unique"
-    full = len(patterns) == 4 and len(patterns[0]) == 2
-    if full and len(negative) == 2:
-        a, b = negative
-        if sum(x != y for x, y in zip(a, b)) == 1:
-            return "two or none"
-    if full and len(negative) in (1, 3):
-        return "one or three"
-    return "undecided"
-
-
-def _orthant_regions(scene) -> dict[str, sp.Basic]:
-    _check_fan(scene)
-    presenter = _Presenter(scene)
-    positive = presenter.positive_expressions
-    u = scene.fast_subsystem().u
-    patterns = scene.sign_patterns()
-    determinants = []
-    for pattern in patterns:
-        lin = scene.linearization(signs=pattern)
-        if any(a.has(*u) for a in lin.A):
-            raise ContactsymError(f"A depends on {u} on the piece {pattern}: counts need a piecewise-linear f.")
-        determinants.append(_Condition(*_forms(presenter, lin.det_A)))
-    known = [_sign(d, positive) for d in determinants]
-    open_ = [i for i, s in enumerate(known) if s is None]
-    disjuncts: dict[str, list[frozenset]] = {}
-    for signs in _sign_choices(known, open_):
-        conditions = [_Condition(*_forms(presenter, signs[i] * determinants[i].raw)) for i in open_]
-        if _infeasible(conditions, presenter):
-            continue
-        name = _orthant_class({p for p, s in zip(patterns, signs) if s < 0}, patterns)
-        kept = _drop_implied(conditions, [], presenter)
-        disjuncts.setdefault(name, []).append(_closed_conjuncts(kept, [], presenter))
-    return {name: _boolean(_merge_or(ds, positive)) for name, ds in disjuncts.items()}
+def _uses_corners(scene) -> bool:
+    """k = 1 with bilateral contact: the corner cases (any number of corners)."""
+    return scene.k == 1 and not scene.contacts[0].unilateral
 
 
 def count_regions(scene) -> dict[str, Region]:
@@ -566,7 +558,7 @@ def count_regions(scene) -> dict[str, Region]:
     >>> count_regions(cs.scene("brake"))
     {'unique': Region(unique: True)}
     """
-    raw = _k1_regions(scene) if scene.k == 1 else _orthant_regions(scene)
+    raw = _k1_regions(scene) if _uses_corners(scene) else orthant_regions(scene, _Tools(scene))
     regions = {}
     for name, condition in raw.items():
         if condition == sp.false:

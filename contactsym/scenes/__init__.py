@@ -1,4 +1,4 @@
-"""Built-in scenes: the paper's four examples, written at the level of mechanics."""
+"""Built-in scenes: the paper's four examples and classical mechanisms, written at the level of mechanics."""
 
 from __future__ import annotations
 
@@ -13,6 +13,10 @@ _MODULES = {
     "painleve-klein-rod": "painleve_klein_rod",
     "painleve-klein-guides": "painleve_klein_guides",
     "brake": "brake",
+    "painleve-rod": "painleve_rod",
+    "painleve-rod-bilateral": "painleve_rod_bilateral",
+    "two-leg-block": "two_leg_block",
+    "two-leg-block-unilateral": "two_leg_block_unilateral",
 }
 
 #: The scene that ``contactsym`` shows when no scene is named.
@@ -27,7 +31,7 @@ def scene_names() -> list[str]:
     Examples
     --------
     >>> scene_names()
-    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake']
+    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake', 'painleve-rod', 'painleve-rod-bilateral', 'two-leg-block', 'two-leg-block-unilateral']
     """
     return list(_MODULES)
 
@@ -42,7 +46,7 @@ def scene(name: str):
     >>> scene("break")
     Traceback (most recent call last):
     ...
-    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake.
+    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, painleve-rod, painleve-rod-bilateral, two-leg-block, two-leg-block-unilateral.
     """
     if name not in _MODULES:
         import difflib
