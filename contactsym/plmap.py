@@ -157,13 +157,15 @@ class OrthantMap:
         out = {}
         for p in self.patterns:
             M = np.broadcast_to(self.matrix(p), b.shape[:-1] + (self.k, self.k))
-            with np.errstate(all="ignore"):
-                z = np.linalg.solve(M, -b[..., None])[..., 0]
+            size = np.abs(M).max(axis=(-2, -1)) ** self.k
+            singular = ~(np.abs(np.linalg.det(M)) > tol * size)  # a non-isolated solution set: undecided
+            safe = np.where(singular[..., None, None], np.eye(self.k), M)
+            z = np.linalg.solve(safe, -b[..., None])[..., 0]
             scale = np.maximum(np.abs(z).max(axis=-1, keepdims=True), np.abs(b).max(axis=-1, keepdims=True))
             signed = z * np.array(p)
-            inside = np.all(signed > tol * scale, axis=-1)
+            inside = np.all(signed > tol * scale, axis=-1) & ~singular
             on_edge = np.any(np.abs(signed) <= tol * scale, axis=-1) & np.all(signed > -tol * scale, axis=-1)
-            out[p] = (z, inside, on_edge | ~np.all(np.isfinite(z), axis=-1))
+            out[p] = (z, inside, on_edge | singular)
         return out
 
     def count(self, b, tol: float = 1e-9) -> tuple[np.ndarray, np.ndarray]:
@@ -179,45 +181,56 @@ class OrthantMap:
     def degree(self) -> int:
         """The degree of one map (no batch): signed count at a load off every facet image."""
         dets = self.determinants()
-        for b in self._cell_loads():
-            solved = self.solutions(b[None, :])
-            if any(edge[0] for _, _, edge in solved.values()):
-                continue
-            return int(sum(np.sign(dets[p]) for p, (_, inside, _) in solved.items() if inside[0]))
-        raise ValueError("no regular load found: the map is degenerate")
+        loads = self._cell_loads()
+        solved = self.solutions(loads)
+        regular = ~np.any([edge for _, _, edge in solved.values()], axis=0)
+        if not regular.any():
+            raise ValueError("no regular load found: the map is degenerate")
+        first = int(np.argmax(regular))
+        return int(sum(np.sign(dets[p]) for p, (_, inside, _) in solved.items() if inside[first]))
 
-    def _hyperplane_normals(self) -> list[np.ndarray]:
-        normals = []
+    def _facet_spans(self) -> np.ndarray:
+        """For each facet, the images of its k - 1 edges: (k 2^(k-1), k - 1, k)."""
         V = self.vertices()
+        spans = []
         for j in range(self.k):
             others = [i for i in range(self.k) if i != j]
-            for signs in itertools.product((0, 1), repeat=self.k - 1):
-                rows = np.array([V[i + self.k * s] for i, s in zip(others, signs)]).reshape(self.k - 1, self.k)
-                normal = np.linalg.svd(np.vstack([rows, np.zeros((1, self.k))]))[2][-1]
-                normals.append(normal / np.linalg.norm(normal))
-        return normals
+            for sides in itertools.product((0, 1), repeat=self.k - 1):
+                spans.append([V[i + self.k * side] for i, side in zip(others, sides)])
+        return np.array(spans)
 
-    def _cell_loads(self, eps: float = 1e-4) -> list[np.ndarray]:
-        """A load inside every cell next to a line where k - 1 facet hyperplanes meet."""
+    def _hyperplane_normals(self) -> np.ndarray:
+        spans = self._facet_spans()
+        if self.k == 2:
+            normals = np.stack([-spans[:, 0, 1], spans[:, 0, 0]], axis=-1)
+        elif self.k == 3:
+            normals = np.cross(spans[:, 0], spans[:, 1])
+        else:
+            normals = np.array([np.linalg.svd(np.vstack([rows, np.zeros((1, self.k))]))[2][-1] for rows in spans])
+        return normals / np.linalg.norm(normals, axis=-1, keepdims=True)
+
+    def _cell_loads(self, eps: float = 1e-4) -> np.ndarray:
+        """A load inside every cell next to a line where k - 1 facet hyperplanes meet: (n, k)."""
         if self.k == 1:
-            return [np.array([1.0]), np.array([-1.0])]
+            return np.array([[1.0], [-1.0]])
         normals = self._hyperplane_normals()
-        loads = []
-        for chosen in itertools.combinations(normals, self.k - 1):
-            basis = np.array(chosen)
-            line = np.linalg.svd(np.vstack([basis, np.zeros((1, self.k))]))[2][-1]
-            if np.linalg.matrix_rank(basis, tol=1e-9) < self.k - 1:
-                continue
-            for direction in (line, -line):
-                for signs in itertools.product((1, -1), repeat=self.k - 1):
-                    loads.append(direction + eps * np.array(signs) @ basis)
-        return loads
+        chosen = np.array(list(itertools.combinations(range(len(normals)), self.k - 1)))
+        bases = normals[chosen]  # (pairs, k - 1, k)
+        if self.k == 2:
+            lines = np.stack([bases[:, 0, 1], -bases[:, 0, 0]], axis=-1)
+        elif self.k == 3:
+            lines = np.cross(bases[:, 0], bases[:, 1])
+        else:
+            lines = np.array([np.linalg.svd(np.vstack([b, np.zeros((1, self.k))]))[2][-1] for b in bases])
+        length = np.linalg.norm(lines, axis=-1)
+        keep = length > 1e-9  # hyperplanes that meet in a line
+        lines, bases = lines[keep] / length[keep, None], bases[keep]
+        offsets = np.array(list(itertools.product((1, -1), repeat=self.k - 1)), dtype=float)
+        shifts = eps * np.einsum("sa,lak->lsk", offsets, bases)
+        loads = np.concatenate([lines[:, None] + shifts, -lines[:, None] + shifts], axis=1)
+        return loads.reshape(-1, self.k)
 
     def count_set(self) -> set:
         """The counts that loads in open cells produce (one map, no batch)."""
-        found = set()
-        for b in self._cell_loads():
-            counts, undecided = self.count(b[None, :])
-            if not undecided[0]:
-                found.add(int(counts[0]))
-        return found
+        counts, undecided = self.count(self._cell_loads())
+        return set(counts[~undecided].tolist())
