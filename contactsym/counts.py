@@ -125,8 +125,16 @@ def _stand_in(expr, positive):
     return sp.sympify(expr).subs({p: sp.Dummy(positive=True) for p in positive})
 
 
+def _pythagorean(expr) -> sp.Expr:
+    """sin(x)**(2n) written as (1 - cos(x)**2)**n: 4 - 3 sin^2 + ... shows its sign as 1 + 3 cos^2 + ..."""
+    even_sines = [p for p in expr.atoms(sp.Pow) if isinstance(p.base, sp.sin) and p.exp.is_even]
+    if not even_sines:
+        return expr
+    return sp.expand(expr.xreplace({p: (1 - sp.cos(p.base.args[0]) ** 2) ** (p.exp // 2) for p in even_sines}))
+
+
 def _sign(condition: _Condition, positive) -> int | None:
-    for form in (condition.raw, condition.presented):
+    for form in (condition.raw, condition.presented, _pythagorean(sp.expand(condition.raw))):
         sign = known_sign(form, positive)
         if sign is not None:
             return sign

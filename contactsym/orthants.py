@@ -81,7 +81,7 @@ class SceneMap:
         return normalize(sp.Matrix.hstack(self.vertex(i), self.vertex(i + 2)).det())
 
 
-def _corner_of(sigma, u) -> tuple[int, sp.Expr]:
+def _corner_of(sigma, u, positive) -> tuple[int, sp.Expr]:
     """(j, corner) for a switching function alpha u_j + c with alpha > 0."""
     having = [j for j, x in enumerate(u) if sigma.has(x)]
     if len(having) != 1:
@@ -91,7 +91,7 @@ def _corner_of(sigma, u) -> tuple[int, sp.Expr]:
         )
     (j,) = having
     alpha = sp.diff(sigma, u[j])
-    if alpha.has(*u) or known_sign(alpha) != 1 and not (alpha.is_number and alpha > 0):
+    if alpha.has(*u) or known_sign(alpha, positive) != 1:
         raise ContactsymError(f"the switching function {sigma} is not affine in {u[j]} with a positive slope.")
     return j, normalize(-sigma.subs(u[j], 0) / alpha)
 
@@ -102,7 +102,7 @@ def _build(scene) -> SceneMap:
     owner: dict[int, int] = {}
     corner = [sp.S.Zero] * len(u)
     for i, sigma in enumerate(switching):
-        j, c = _corner_of(sigma, u)
+        j, c = _corner_of(sigma, u, scene.positive_expressions)
         if j in owner:
             raise ContactsymError(
                 f"contact {j + 1} has two corners ({switching[owner[j]]} and {sigma}); orthant counts need one "
