@@ -190,18 +190,36 @@ def _open_signs(condition, helpers) -> list[int]:
     return [sign] if sign is not None else [1, -1]
 
 
+#: Determinants with more operations than this are printed as they are, not factored or pruned
+#: (a generic 3 x 3 determinant has hundreds: a closed form would not read any better).
+LARGE = 120
+
+
 def _coherent_regions(G: SceneMap, helpers) -> dict[str, sp.Basic]:
     """k >= 3: unique iff all 2^k determinants share a sign; mixed signs leave the count to the degree."""
     determinants = [helpers.condition(G.determinant(p)) for p in orthant_patterns(G.k)]
     known = {helpers.sign(d) for d in determinants} - {None}
     open_ = [d for d in determinants if helpers.sign(d) is None]
+    closed: dict = {}
+
+    def relation(d, sign: int) -> frozenset:
+        """d > 0 or d < 0 in closed form, once per determinant and sign."""
+        if (d.raw, sign) not in closed:
+            small = sp.count_ops(d.presented) <= LARGE
+            closed[d.raw, sign] = (
+                helpers.closed([helpers.condition(sign * d.raw)]) if small else frozenset({sp.Gt(sign * d.presented, 0)})
+            )
+        return closed[d.raw, sign]
+
     unique = []
     for sign in (1, -1):
-        conditions = [helpers.condition(sign * d.raw) for d in open_]
-        if -sign in known or helpers.infeasible(conditions, quick=True):
+        small = {d.raw: helpers.condition(sign * d.raw) for d in open_ if sp.count_ops(d.presented) <= LARGE}
+        if -sign in known or helpers.infeasible(list(small.values()), quick=True):
             continue
-        unique.append(helpers.closed(helpers.drop_implied(conditions, quick=True)))
-    some = {s: sp.Or(*[sp.And(*helpers.closed([helpers.condition(s * d.raw)])) for d in open_]) for s in (1, -1)}
+        kept = helpers.drop_implied(list(small.values()), quick=True)
+        needed = [d for d in open_ if d.raw not in small or any(small[d.raw] is c for c in kept)]
+        unique.append(frozenset().union(*[relation(d, sign) for d in needed]))
+    some = {s: sp.Or(*[sp.And(*relation(d, s)) for d in open_]) for s in (1, -1)}
     mixed = sp.And(sp.true if 1 in known else some[1], sp.true if -1 in known else some[-1])
     out = {}
     if unique:
