@@ -20,7 +20,7 @@ from .errors import ContactsymError
 from .orthants import scene_map
 from .plmap import OrthantMap, count_label, k2_label, k2_quadrants
 
-__all__ = ["CountDecision", "count_equilibria", "decide_counts", "count_map_data", "count_map_plot"]
+__all__ = ["CountDecision", "CountMapData", "count_equilibria", "decide_counts", "count_map_data", "count_map_plot"]
 
 #: Relative size below which a determinant counts as zero (the point is then undecided).
 TOLERANCE = 1e-9
@@ -119,7 +119,12 @@ def decide_counts(scene, **values) -> CountDecision:
     'two or none'
     """
     symbols, _ = _compiled(scene)
-    filled = {str(s): values.get(str(s), 0.0) for s in symbols}
+    G = scene_map(scene)
+    needed = sorted(str(s) for s in G.plus.free_symbols | G.minus.free_symbols)
+    missing = [name for name in needed if name not in values]
+    if missing:
+        raise ContactsymError(f"give values for {missing}: the orthant determinants of scene '{scene.name}' depend on them.")
+    filled = {str(s): 0.0 for s in symbols}  # the loads do not change which counts occur
     filled.update(values)
     G, _ = _arrays(scene, {k: float(v) for k, v in filled.items()})
     dets = {p: float(d) for p, d in G.determinants().items()}
@@ -145,3 +150,69 @@ def decide_counts(scene, **values) -> CountDecision:
 
 def _k1_degree(dets) -> int:
     return int((np.sign(dets[(1,)]) + np.sign(dets[(-1,)])) // 2)
+
+
+# --- a plot of the counts over a plane of loads or parameters ------------------------------
+
+
+@dataclass(frozen=True)
+class CountMapData:
+    """The number of equilibria on a grid of two variables, the others fixed."""
+
+    x: str
+    y: str
+    X: np.ndarray
+    Y: np.ndarray
+    counts: np.ndarray  # -1 where undecided
+    label: str  # what the fixed parameters give over all loads
+
+
+def count_map_data(scene, x: str, y: str, x_range, y_range, size: int = 201, **fixed) -> CountMapData:
+    """Counts of equilibria (lift-off included) over a grid in (x, y), e.g. two loads.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> point = dict(m=1.838, J=0.5558, a=0.6912, b=0.5569, mu_1=1.5555, mu_2=1.3973)
+    >>> data = count_map_data(cs.scene("two-leg-block"), "Y", "M", (-30, 30), (-10, 10), size=41, **point)
+    >>> sorted(set(data.counts.ravel().tolist()) - {-1}), data.label
+    ([0, 2], 'two or none')
+    """
+    X, Y = np.meshgrid(np.linspace(*x_range, size), np.linspace(*y_range, size))
+    counts, undecided = count_equilibria(scene, **{**fixed, x: X, y: Y})
+    loads = {x, y}
+    parameters = {k: v for k, v in fixed.items() if k not in loads}
+    plane_is_loads = all(str(s) not in loads for s in scene_map(scene).plus.free_symbols)
+    label = decide_counts(scene, **parameters).label if plane_is_loads else "varies over the plane"
+    return CountMapData(x, y, X, Y, np.where(undecided, -1, counts), label)
+
+
+def count_map_plot(data: CountMapData, ax=None):
+    """Draw the counts as filled patches with a legend; returns the artists.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import contactsym as cs
+    >>> data = count_map_data(cs.scene("painleve-rod"), "mu", "thetadot", (0, 3), (0, 5), size=21,
+    ...                       m=1, l=1, g=9.81, theta=1.1)
+    >>> artists = count_map_plot(data)
+    """
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+
+    if ax is None:
+        ax = plt.gca()
+    top = max(4, int(data.counts.max()))
+    colours = ["0.6"] + [plt.cm.viridis(i / top) for i in range(top + 1)]  # grey: undecided
+    norm = BoundaryNorm(np.arange(-1.5, top + 1.5), len(colours))
+    mesh = ax.pcolormesh(data.X, data.Y, data.counts, cmap=ListedColormap(colours), norm=norm, shading="auto")
+    present = sorted(set(data.counts.ravel().tolist()))
+    handles = [plt.Rectangle((0, 0), 1, 1, color=colours[c + 1]) for c in present]
+    names = ["undecided" if c < 0 else f"{c} equilibria" for c in present]
+    legend = ax.legend(handles, names, fontsize=8, loc="upper right")
+    ax.set_xlabel(data.x)
+    ax.set_ylabel(data.y)
+    ax.set_title(f"number of equilibria (over all loads: {data.label})", fontsize=9)
+    return [mesh, legend]

@@ -10,16 +10,22 @@ every sign -1 and flip the signs of the switching functions that vanish at each 
 With the signs of the slopes f' on the pieces:
 
 - all f' > 0: a unique root, stable for every contact law (Propositions 3, 4);
-- c sign changes: f has c local extrema; when the outer slopes differ in sign the count
+- c <= 3 sign changes: f has c local extrema; when the outer slopes differ in sign the count
   is even (c = 1: a fold, two roots or none, none being an impact-type catastrophe),
-  when they agree it is odd (c = 2: a cusp, one root or three).
+  when they agree it is odd (c = 2: a cusp, one root or three; c = 3: none, two or four);
+- four or more sign changes: the values at the extrema, not the signs, decide which
+  counts occur: undecided.
 
-k = 2 (§5). Coherent orientation: with sign(det A) on the four orthants,
+Orthant maps (k >= 2, and any unilateral contact, lift-off included): see
+:mod:`contactsym.orthants` and :mod:`contactsym.plmap`. With the orthant determinants
+(principal minors of A with lift-off):
 
-- all of one sign: a unique solution for every load;
-- exactly two negative, in adjacent orthants (patterns differing in one sign): two or none;
-- one or three negative: one or three;
-- otherwise undecided.
+- all of one sign (coherent orientation): a unique solution for every load;
+- k = 2, otherwise: the degree of the map decides, and it follows from the signs and
+  one cross determinant (:func:`contactsym.plmap.k2_label`): two or none, one or
+  three, or none, two or four;
+- k >= 3, otherwise: undecided in closed form; :func:`contactsym.count_points.decide_counts`
+  decides at numeric points.
 
 Determinants and slopes of known sign are not enumerated, and sign combinations that a
 short exact argument excludes (a sum of the conditions of known non-positive sign) are
@@ -65,9 +71,13 @@ COUNT_DESCRIPTIONS = {
     "unique stable": "one root for every load, stable for every contact law (f' > 0 on every piece; Props. 3-4)",
     "unique unstable": "one root for every load, unstable for every contact law (f' < 0 on every piece)",
     "unique": "one solution for every load (coherent orientation: all orthant determinants of one sign)",
-    "two or none": "fold: two solutions or none, by the load; none is an impact-type catastrophe",
-    "one or three": "cusp: one solution or three, by the load",
-    "undecided": "the signs of the orthant determinants do not decide the count",
+    "two or none": "degree 0: two solutions or none, by the load (a fold; none is an impact-type catastrophe)",
+    "one or three": "degree +-1 with mixed orientation: one solution or three, by the load (a cusp)",
+    "none, two or four": "degree 0, orthant determinant signs alternating: none, two or four, by the load",
+    "undecided": (
+        "orthant determinants of mixed signs: the count follows the degree of the map, which their signs "
+        "do not fix; decide it at numeric points with contactsym.count_points.decide_counts"
+    ),
 }
 
 _WORDS = ["none", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine"]
@@ -394,6 +404,8 @@ def _slope_classes(signs: tuple[int, ...]) -> str:
     if all(s < 0 for s in signs):
         return "unique unstable"
     changes = sum(1 for a, b in zip(signs, signs[1:]) if a != b)
+    if changes >= 4:
+        return "undecided"  # e.g. +-+-+: five roots need the two minima below both maxima
     start = 0 if signs[0] != signs[-1] else 1
     return _count_name(tuple(range(start, changes + 2, 2)))
 
