@@ -123,7 +123,9 @@ def decide_counts(scene, **values) -> CountDecision:
     needed = sorted(str(s) for s in G.plus.free_symbols | G.minus.free_symbols)
     missing = [name for name in needed if name not in values]
     if missing:
-        raise ContactsymError(f"give values for {missing}: the orthant determinants of scene '{scene.name}' depend on them.")
+        raise ContactsymError(
+            f"give values for {missing}: the orthant determinants of scene '{scene.name}' depend on them."
+        )
     filled = {str(s): 0.0 for s in symbols}  # the loads do not change which counts occur
     filled.update(values)
     G, _ = _arrays(scene, {k: float(v) for k, v in filled.items()})

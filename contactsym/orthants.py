@@ -24,7 +24,7 @@ import sympy as sp
 
 from .algebra import normalize
 from .errors import ContactsymError
-from .plmap import count_label, k2_label, k2_quadrants, orthant_patterns
+from .plmap import k2_label, k2_quadrants, orthant_patterns
 from .regions import known_sign
 
 __all__ = ["SceneMap", "scene_map", "orthant_regions"]
@@ -207,7 +207,9 @@ def _coherent_regions(G: SceneMap, helpers) -> dict[str, sp.Basic]:
         if (d.raw, sign) not in closed:
             small = sp.count_ops(d.presented) <= LARGE
             closed[d.raw, sign] = (
-                helpers.closed([helpers.condition(sign * d.raw)]) if small else frozenset({sp.Gt(sign * d.presented, 0)})
+                helpers.closed([helpers.condition(sign * d.raw)])
+                if small
+                else frozenset({sp.Gt(sign * d.presented, 0)})
             )
         return closed[d.raw, sign]
 

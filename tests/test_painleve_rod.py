@@ -8,6 +8,7 @@ import sympy as sp
 
 import contactsym as cs
 from contactsym.one_sided import one_sided_cases
+from tests.helpers import variant
 
 m, l, g, mu = sp.symbols("m l g mu", positive=True)
 theta, omega, N = sp.symbols("theta thetadot N", real=True)
@@ -28,7 +29,7 @@ def newton_euler_normal_acceleration():
 
 @pytest.mark.parametrize("name", ["painleve-rod", "painleve-rod-bilateral"])
 def test_f_is_the_hand_newton_euler_acceleration(name):
-    fast = cs.scene(name).fast_subsystem()
+    fast = variant(name).fast_subsystem()
     (u,) = fast.u
     f = fast.f[0].subs(sp.Abs(u), u)  # on N > 0
     assert sp.simplify(f - newton_euler_normal_acceleration().subs(N, u)) == 0
@@ -66,7 +67,10 @@ def test_fast_subsystem_eigenvalues_agree_with_the_hurwitz_verdict():
     verdicts = set()
     for _ in range(300):
         values = [
-            -rng.uniform(0.1, 5) if str(s) in ("Phi", "Psi") else rng.uniform(0.05, 1.5) if str(s) == "theta"
+            -rng.uniform(0.1, 5)
+            if str(s) in ("Phi", "Psi")
+            else rng.uniform(0.05, 1.5)
+            if str(s) == "theta"
             else rng.uniform(0.1, 3)
             for s in symbols
         ]
@@ -116,4 +120,4 @@ def test_counts_with_lift_off_at_numeric_points():
 
 def test_one_sided_cases_refuse_a_bilateral_contact():
     with pytest.raises(cs.ContactsymError, match="unilateral"):
-        one_sided_cases(cs.scene("painleve-rod-bilateral"))
+        one_sided_cases(variant("painleve-rod-bilateral"))

@@ -57,7 +57,11 @@ def k2_labels(plus, minus):
         G = OrthantMap(P, M)
         signs = {q: int(np.sign(np.linalg.det(G.matrix(q)))) for q in k2_quadrants}
         V = G.vertices()
-        labels.append(k2_label(signs, lambda j: np.sign(np.linalg.det(np.column_stack([V[j % 4], V[(j + 2) % 4]])))))
+
+        def cross(j, V=V):
+            return np.sign(np.linalg.det(np.column_stack([V[j % 4], V[(j + 2) % 4]])))
+
+        labels.append(k2_label(signs, cross))
     return np.array(labels)
 
 

@@ -9,6 +9,7 @@ import sympy as sp
 
 import contactsym as cs
 from contactsym.count_points import count_equilibria, decide_counts
+from tests.helpers import variant
 
 m, J, a, b, mu1, mu2 = sp.symbols("m J a b mu_1 mu_2", positive=True)
 Y, M = sp.symbols("Y M", real=True)
@@ -26,7 +27,7 @@ def newton_euler(N1, N2):
 
 @pytest.mark.parametrize("name", ["two-leg-block", "two-leg-block-unilateral"])
 def test_f_is_the_hand_newton_euler_acceleration(name):
-    fast = cs.scene(name).fast_subsystem()
+    fast = variant(name).fast_subsystem()
     hand = newton_euler(*fast.u)
     assert all(sp.expand(fj - h) == 0 for fj, h in zip(fast.f, hand))
 
@@ -63,7 +64,7 @@ def test_the_issue_point_and_loads():
 
 def test_lift_off_equilibria_are_the_counts_at_numeric_points():
     """Sliding branches plus lift-offs whose existence conditions hold = the orthant-map count."""
-    block = cs.scene("two-leg-block-unilateral")
+    block = variant("two-leg-block-unilateral")
     eq = block.equilibria()
     rng = np.random.default_rng(9)
     n = 5000
@@ -80,7 +81,7 @@ def test_lift_off_equilibria_are_the_counts_at_numeric_points():
 
 
 def test_lift_off_stability_is_that_of_the_closed_leg():
-    block = cs.scene("two-leg-block-unilateral")
+    block = variant("two-leg-block-unilateral")
     lifts = block.equilibria().lift_offs
     assert {lift.open for lift in lifts} == {(0,), (1,), (0, 1)}
     (both,) = [lift for lift in lifts if lift.open == (0, 1)]

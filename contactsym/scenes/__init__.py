@@ -14,9 +14,7 @@ _MODULES = {
     "painleve-klein-guides": "painleve_klein_guides",
     "brake": "brake",
     "painleve-rod": "painleve_rod",
-    "painleve-rod-bilateral": "painleve_rod_bilateral",
     "two-leg-block": "two_leg_block",
-    "two-leg-block-unilateral": "two_leg_block_unilateral",
 }
 
 #: The scene that ``contactsym`` shows when no scene is named.
@@ -31,7 +29,7 @@ def scene_names() -> list[str]:
     Examples
     --------
     >>> scene_names()
-    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake', 'painleve-rod', 'painleve-rod-bilateral', 'two-leg-block', 'two-leg-block-unilateral']
+    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake', 'painleve-rod', 'two-leg-block']
     """
     return list(_MODULES)
 
@@ -46,7 +44,7 @@ def scene(name: str):
     >>> scene("break")
     Traceback (most recent call last):
     ...
-    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, painleve-rod, painleve-rod-bilateral, two-leg-block, two-leg-block-unilateral.
+    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, painleve-rod, two-leg-block.
     """
     if name not in _MODULES:
         import difflib

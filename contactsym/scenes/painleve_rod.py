@@ -7,8 +7,8 @@ friction mu |N| pushes it to the right. Gravity g acts at the centre. The gap is
 height of the end.
 
 ``build(unilateral=True)`` is the one-sided rod of the literature (the floor only
-pushes, the end may lift off: ``painleve-rod``); ``unilateral=False`` holds the end to
-the floor (``painleve-rod-bilateral``).
+pushes, the end may lift off): the built-in ``painleve-rod``. ``build(unilateral=False)``
+holds the end to the floor (N of either sign), named ``painleve-rod-bilateral``.
 """
 
 from __future__ import annotations
@@ -45,7 +45,3 @@ def build(unilateral: bool = True) -> Scene:
         description="classical Painleve rod, one end sliding on a rough floor"
         + (" (one-sided: the end may lift off)" if unilateral else " (end held to the floor)"),
     )
-
-
-def build_bilateral() -> Scene:
-    return build(unilateral=False)

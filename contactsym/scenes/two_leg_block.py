@@ -6,9 +6,9 @@ friction mu_j |N_j| acts along -x at leg j. The gaps are the heights of the leg 
 rigid contact holds the block level (theta = 0) at height b. Loads: a vertical force Y
 at the centre (weight included) and a moment M.
 
-``build(unilateral=False)`` gives bilateral legs (N_j of either sign, as the orthant
-counts of the paper's §5 assume); ``two-leg-block-unilateral`` makes the legs push only,
-so a leg can lift off.
+The built-in ``two-leg-block`` is ``build(unilateral=False)``: bilateral legs (N_j of
+either sign, as the orthant counts of the paper's §5 assume). ``build(unilateral=True)``
+makes the legs push only, so a leg can lift off (named ``two-leg-block-unilateral``).
 """
 
 from __future__ import annotations
