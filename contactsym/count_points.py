@@ -218,3 +218,19 @@ def count_map_plot(data: CountMapData, ax=None):
     ax.set_ylabel(data.y)
     ax.set_title(f"number of equilibria (over all loads: {data.label})", fontsize=9)
     return [mesh, legend]
+
+
+def count_map_figure(scene, path, x: str, y: str, x_range, y_range, **fixed):
+    """Draw :func:`count_map_plot` for one plane into a PNG file and return its path (for reports)."""
+    from pathlib import Path
+
+    from matplotlib.figure import Figure
+
+    data = count_map_data(scene, x, y, x_range, y_range, **fixed)
+    figure = Figure(figsize=(6.0, 4.2))
+    count_map_plot(data, ax=figure.add_subplot())
+    path = Path(path)
+    partial = path.with_name(path.stem + ".partial.png")
+    figure.savefig(partial, dpi=130, bbox_inches="tight")
+    partial.replace(path)  # all or nothing
+    return path

@@ -923,7 +923,10 @@ class FigureSource:
             if hasattr(plotting, "scene_figures"):
                 directory = self.workdir / scene.name
                 directory.mkdir(parents=True, exist_ok=True)
-                return _paths(plotting.scene_figures(scene, directory), directory), []
+                figures = dict(plotting.scene_figures(scene, directory))
+                own = getattr(scene, "report_figures", None)  # a scene's own figures: {caption: PNG path}
+                figures.update(own(directory) if own is not None else {})
+                return _paths(figures, directory), []
             if not hasattr(plotting, "paper_figures"):
                 return [], ["No figures: contactsym.plotting has no paper_figures function in this version."]
             if self._paper is None:

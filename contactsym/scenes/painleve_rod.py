@@ -33,7 +33,7 @@ def build(unilateral: bool = True) -> Scene:
     contact = Contact(coordinate=height, reaction=N, friction=Coulomb(mu, -O.x, end), unilateral=unilateral)
     body = RigidBody("rod", centre, rod, m, (inertia(rod, 0, 0, m * l**2 / 3), centre))
     theta_ = sp.Symbol("theta", real=True)
-    return Scene.from_lagrangian(
+    scene = Scene.from_lagrangian(
         lagrangian_of(O, body),
         [x, y, theta],
         [contact],
@@ -45,3 +45,15 @@ def build(unilateral: bool = True) -> Scene:
         description="classical Painleve rod, one end sliding on a rough floor"
         + (" (one-sided: the end may lift off)" if unilateral else " (end held to the floor)"),
     )
+    scene.report_figures = lambda directory: {_CAPTION: _count_figure(scene, directory)}
+    return scene
+
+
+_CAPTION = "Number of equilibria, lift-off included, over (mu, thetadot) at tan(theta) = 2, m = l = 1, g = 9.81"
+
+
+def _count_figure(scene, directory):
+    from ..count_points import count_map_figure
+
+    fixed = dict(m=1.0, l=1.0, g=9.81, theta=float(sp.atan(2)))
+    return count_map_figure(scene, directory / "rod_counts.png", "mu", "thetadot", (0, 3), (0, 5), **fixed)

@@ -36,7 +36,7 @@ def build(unilateral: bool = False) -> Scene:
         height = leg.pos_from(centre).dot(O.y) + y
         contacts.append(Contact(coordinate=height, reaction=N, friction=Coulomb(mu, O.x, leg), unilateral=unilateral))
     body = RigidBody("block", centre, block, m, (inertia(block, 0, 0, J), centre))
-    return Scene.from_lagrangian(
+    scene = Scene.from_lagrangian(
         lagrangian_of(O, body),
         [x, y, theta],
         contacts,
@@ -46,3 +46,19 @@ def build(unilateral: bool = False) -> Scene:
         name="two-leg-block-unilateral" if unilateral else "two-leg-block",
         description="a block on two legs sliding on a rough floor" + (", legs that can lift off" if unilateral else ""),
     )
+    scene.report_figures = lambda directory: {_CAPTION: _count_figure(scene, directory)}
+    return scene
+
+
+#: A point of the region 2a < b(mu_1 + mu_2), |b(mu_1 - mu_2)| < 2a: one orthant determinant is
+#: negative, yet the degree is 0, so the loads give two equilibria or none.
+POINT = dict(m=1.838, J=0.5558, a=0.6912, b=0.5569, mu_1=1.5555, mu_2=1.3973)
+_CAPTION = (
+    "Number of equilibria over the loads (Y, M) at m = 1.838, J = 0.5558, a = 0.6912, b = 0.5569, mu = (1.5555, 1.3973)"
+)
+
+
+def _count_figure(scene, directory):
+    from ..count_points import count_map_figure
+
+    return count_map_figure(scene, directory / "block_counts.png", "Y", "M", (-30, 30), (-10, 10), **POINT)
