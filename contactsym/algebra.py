@@ -2,14 +2,15 @@
 
 - ``reduce_signs``: s**2 = 1 for sign symbols of open sign patterns;
 - ``reduce_trig``: cos(x)**2 = 1 - sin(x)**2, a polynomial reduction;
-- ``normalize``: expand, then both reductions.
+- ``normalize``: the canonical rational form of :mod:`contactsym.canonical` (both
+  reductions, one fraction, cancelled; a polynomial in the parameters stays expanded).
 """
 
 from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "normalize"]
+__all__ = ["SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "normalize", "known_sign"]
 
 
 class SignSymbol(sp.Symbol):
@@ -62,5 +63,39 @@ def reduce_trig(expr: sp.Expr) -> sp.Expr:
 
 
 def normalize(expr: sp.Expr) -> sp.Expr:
-    """Expanded, with s**2 = 1 and sin**2 + cos**2 = 1 used."""
-    return reduce_signs(reduce_trig(sp.expand(expr)))
+    """The canonical form: s**2 = 1 and sin**2 + cos**2 = 1 used, one cancelled fraction.
+
+    Examples
+    --------
+    >>> s, m = SignSymbol("s"), sp.Symbol("m", positive=True)
+    >>> normalize(s**3/m + (s*m - s)/(m**2 - m))
+    2*s/m
+    """
+    from .canonical import canonical
+
+    return canonical(expr)
+
+
+def known_sign(expr: sp.Expr, positive=()) -> int | None:
+    """+1 or -1 when the sign of ``expr`` follows from assumptions, else None.
+
+    ``positive`` lists expressions known to be positive in the scene's domain
+    (e.g. ``sin(phi)`` for 0 < phi < pi/2).
+
+    Examples
+    --------
+    >>> m = sp.Symbol("m", positive=True)
+    >>> Phi = sp.Symbol("Phi", negative=True)
+    >>> known_sign(-3*m*Phi), known_sign(Phi - m), known_sign(sp.Symbol("x"))
+    (1, -1, None)
+    >>> a = sp.Symbol("alpha", positive=True)
+    >>> known_sign(sp.sin(a)**2 + 1), known_sign(sp.sin(a)), known_sign(sp.sin(a), [sp.sin(a)])
+    (1, None, 1)
+    """
+    stand_ins = {p: sp.Dummy(positive=True) for p in positive}
+    expr = sp.sympify(expr).subs(stand_ins)
+    if expr.is_positive:
+        return 1
+    if expr.is_negative:
+        return -1
+    return None

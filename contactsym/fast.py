@@ -15,6 +15,7 @@ import sympy as sp
 
 from .algebra import normalize
 from .errors import SceneError
+from .scene import t
 
 __all__ = ["FastSubsystem", "switching_functions", "on_piece"]
 
@@ -65,6 +66,31 @@ def on_piece(expr, switching, signs, u) -> sp.Expr:
             s = by_sigma[sigma]
             replacements[atom] = abs(c) * s * sigma if atom.func is sp.Abs else sp.sign(c) * s
     return sp.sympify(expr).xreplace(replacements)
+
+
+def _monomial_denominator(expr: sp.Expr) -> bool:
+    """True when the denominator is a product of powers of symbols (a paper-style form)."""
+    return all(base.is_Symbol or base.is_Number for base in sp.fraction(expr)[1].as_powers_dict())
+
+
+def contact_accelerations(scene, u) -> list[sp.Expr]:
+    """f(u) = b + G u + H phi(u) from the scene's contact space, frozen on the manifold.
+
+    G = W^T M^-1 W (Delassus), H = W^T M^-1 D (friction), b = W^T M^-1 F + h with h_j the
+    part of g_j'' without accelerations; see :mod:`contactsym.mechanics`.
+    """
+    from .mechanics import solve_fraction_free
+
+    space, freeze = scene.contact_space, scene.freeze
+    to_u = dict(zip(scene.reactions, u))
+    second = {sp.diff(q, t, 2): 0 for q in scene.coordinates}
+    h = [freeze(sp.diff(g, t, 2).subs(second)) for g in scene.gaps]
+    frozen = [term for term in space.friction if term is not None]
+    loads = [space.F] + [space.W[:, j] for j in range(scene.k)] + [term[0] for term in frozen]
+    W = space.W.applyfunc(freeze)
+    columns = solve_fraction_free(space.M.applyfunc(freeze), [load.applyfunc(freeze) for load in loads], W)
+    multipliers = [sp.S.One, *u] + [freeze(term[1]).subs(to_u) for term in frozen]
+    return [h[i] + sp.Add(*[c[i] * w for c, w in zip(columns, multipliers)]) for i in range(scene.k)]
 
 
 @dataclass(frozen=True, eq=False)
@@ -118,7 +144,13 @@ class FastSubsystem:
     @cached_property
     def f(self) -> sp.Matrix:
         to_u = dict(zip(self.scene.reactions, self.u))
-        f = sp.Matrix([normalize(self.scene.freeze(g).subs(to_u)) for g in self.scene.gap_accelerations])
+        if self.scene.contact_space is not None:
+            # b + G u + H phi(u) with canonical coefficients: one fraction only when that stays small
+            structured = contact_accelerations(self.scene, self.u)
+            compact = all(_monomial_denominator(c) for fj in structured for c in sp.Add.make_args(fj))
+            f = sp.Matrix([normalize(fj) if compact else fj for fj in structured])
+        else:
+            f = sp.Matrix([normalize(self.scene.freeze(g).subs(to_u)) for g in self.scene.gap_accelerations])
         if not any(fj.has(*self.u) for fj in f):
             raise SceneError(
                 "the contact accelerations f_j do not depend on any reaction; "

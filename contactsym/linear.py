@@ -17,6 +17,7 @@ from functools import cached_property
 import sympy as sp
 
 from .algebra import normalize, sign_symbols
+from .canonical import to_fraction
 
 __all__ = ["lam", "charpoly", "principal_minors", "Linearization"]
 
@@ -35,8 +36,12 @@ def principal_minors(A: sp.Matrix) -> dict[tuple[int, ...], sp.Expr]:
     return minors
 
 
-def charpoly(A: sp.Matrix, Phi, Psi) -> sp.Poly:
+def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
     """The characteristic polynomial of (4.5) from the principal minors of A.
+
+    When the common denominator of its coefficients is not a monomial but has a known sign
+    (``positive`` lists expressions known to be positive, e.g. det M of a Lagrangian
+    scene), the polynomial is multiplied by it: the same roots, polynomial coefficients.
 
     Examples
     --------
@@ -49,7 +54,12 @@ def charpoly(A: sp.Matrix, Phi, Psi) -> sp.Poly:
     for S, minor in principal_minors(A).items():
         factor = sp.Mul(*[lam * Psi[j] + Phi[j] for j in S])
         total += (-1) ** len(S) * lam ** (2 * (k - len(S))) * minor * factor
-    return sp.Poly(normalize(total), lam)
+    fraction = to_fraction(total)
+    if fraction.denominator_split()[1] != 1:
+        sign = fraction.denominator_sign(positive)
+        if sign is not None:
+            return sp.Poly(sign * fraction.numerator_expr(), lam)
+    return sp.Poly(fraction.as_expr(), lam)
 
 
 @dataclass(frozen=True, eq=False)
@@ -128,7 +138,7 @@ class Linearization:
 
     @cached_property
     def charpoly(self) -> sp.Poly:
-        return charpoly(self.A, self.Phi, self.Psi)
+        return charpoly(self.A, self.Phi, self.Psi, self.scene.positive_expressions)
 
     def _repr_latex_(self) -> str:
         from .latex import _repr_latex

@@ -1,27 +1,49 @@
-"""Accelerations (1.4) from a Lagrangian, built on ``sympy.physics.mechanics``.
+"""Lagrangian scenes in contact space, built on ``sympy.physics.mechanics``.
 
-The normal reaction of contact j does virtual work ``N_j dg_j``, so its generalized
-force is ``N_j grad g_j``: its direction is the normal n_j of (1.1) in the metric of
-the kinetic energy. Friction laws attached to contacts become point forces.
+Lagrange's equations with the reactions as unknown loads read
+
+    M(q) q'' = F(q, q') + W N + sum_j phi_j(N_j) D_j,                       (1.4)
+
+where the columns w_j = grad g_j of W carry the normal reactions (virtual work N_j dg_j,
+the normal n_j of (1.1) in the metric of the kinetic energy) and D_j is the generalized
+direction of contact j's friction force, of magnitude -phi_j(N_j) (``mu |N_j|`` for Coulomb).
+
+The fast subsystem needs only the contact accelerations g'' = W^T q'' + h(q, q'):
+
+    f(u) = b + G u + H phi(u),   G = W^T M^-1 W,   H = W^T M^-1 D,   b = W^T M^-1 F + h,
+
+a k x k Delassus matrix G, its friction partner H and the load b (:class:`ContactSpace`).
+They are computed fraction-free: adj(M) and det(M) by the Faddeev–LeVerrier recurrence,
+which divides only by integers, so every product is reduced at once modulo
+sin^2 + cos^2 = 1 (:mod:`contactsym.canonical`) and nothing swells; one common denominator
+det(M) > 0 (M is positive definite) is kept for every entry. The full accelerations are
+built only when a stage asks for them (:attr:`ContactSpace.accelerations`).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from functools import cached_property
+
 import sympy as sp
-from sympy.physics.mechanics import LagrangesMethod
+from sympy.physics.mechanics import LagrangesMethod, dynamicsymbols
 from sympy.physics.vector import Point, Vector
 
-from .algebra import normalize
+from .canonical import TrigField
 from .errors import SceneError
 
-__all__ = ["lagrangian_accelerations"]
+__all__ = ["ContactSpace", "contact_space", "lagrangian_accelerations", "adjugate_and_det", "solve_fraction_free"]
+
+t = dynamicsymbols._t
 
 
-def _friction_loads(contacts, frame) -> list:
-    loads = []
+def _friction_terms(contacts, frame, coordinates) -> list[tuple[sp.Matrix, sp.Expr] | None]:
+    """(D_j, phi_j(N_j)) per contact: friction's generalized direction and signed magnitude."""
+    terms = []
     for contact in contacts:
         law = contact.friction
         if law is None:
+            terms.append(None)
             continue
         if not isinstance(law.point, Point) or not isinstance(law.direction, Vector):
             raise SceneError(
@@ -31,12 +53,166 @@ def _friction_loads(contacts, frame) -> list:
         if frame is None:
             raise SceneError("friction laws on points need frame=<the inertial ReferenceFrame>.")
         slip = law.point.vel(frame).dot(law.direction)
-        loads.append((law.point, -law.magnitude(contact.reaction, slip) * law.direction))
-    return loads
+        # the generalized force of -m d is -m * d(slip)/dq' (the partial velocity along d)
+        direction = sp.Matrix([sp.diff(slip, sp.diff(q, t)) for q in coordinates])
+        terms.append((direction, -law.magnitude(contact.reaction, slip)))
+    return terms
 
 
-def lagrangian_accelerations(lagrangian, coordinates, contacts, loads=(), frame=None) -> list[sp.Expr]:
-    """Solve Lagrange's equations for the accelerations, with the reactions as unknown loads.
+def adjugate_and_det(M: list[list], reduce) -> tuple[list[list], object]:
+    """adj(M) and det(M) of a square matrix over a commutative ring containing Q.
+
+    Faddeev–LeVerrier: with M_0 = 0 and c_n = 1, M_k = M M_(k-1) + c_(n-k+1) I and
+    c_(n-k) = -tr(M M_k)/k give the characteristic polynomial sum c_i x^i; then
+    det M = (-1)^n c_0 and adj M = (-1)^(n-1) M_n (Cayley–Hamilton). Only integer divisions
+    occur, so ``reduce`` (a ring homomorphism's normal form) may be applied after every step.
+
+    Examples
+    --------
+    >>> a, b, c, d = sp.symbols("a b c d")
+    >>> adj, det = adjugate_and_det([[a, b], [c, d]], lambda x: sp.expand(x))
+    >>> adj, det
+    ([[d, -b], [-c, a]], a*d - b*c)
+    """
+    n = len(M)
+    zero = M[0][0] * 0
+    Mk = [[zero] * n for _ in range(n)]
+    coefficient = zero + 1
+    for k in range(1, n + 1):
+        product = _matmul(M, Mk, reduce)
+        Mk = [[product[i][j] + (coefficient if i == j else zero) for j in range(n)] for i in range(n)]
+        trace = reduce(sum((M[i][j] * Mk[j][i] for i in range(n) for j in range(n)), zero))
+        coefficient = reduce(-trace * sp.Rational(1, k))
+    sign = -1 if n % 2 else 1
+    return [[-sign * x for x in row] for row in Mk], reduce(sign * coefficient)
+
+
+def _matmul(A, B, reduce):
+    n, m, p = len(A), len(B), len(B[0])
+    return [[reduce(sum((A[i][r] * B[r][j] for r in range(m)), A[0][0] * 0)) for j in range(p)] for i in range(n)]
+
+
+@dataclass(frozen=True, eq=False)
+class ContactSpace:
+    """Lagrange's equations (1.4) split as M q'' = F + W N + D phi(N) (see the module docstring).
+
+    Attributes
+    ----------
+    coordinates : tuple of dynamicsymbols
+    M : Matrix
+        The mass matrix.
+    F : Matrix
+        Generalized forces without the contact forces.
+    W : Matrix
+        n x k, the gap gradients w_j = grad g_j.
+    friction : tuple
+        Per contact ``(D_j, phi_j(N_j))`` or None.
+    reactions : tuple of Symbol
+    """
+
+    coordinates: tuple
+    M: sp.Matrix
+    F: sp.Matrix
+    W: sp.Matrix
+    friction: tuple
+    reactions: tuple
+
+    @cached_property
+    def forcing(self) -> sp.Matrix:
+        """F + W N + sum_j phi_j(N_j) D_j."""
+        total = self.F + self.W * sp.Matrix(self.reactions)
+        for term in self.friction:
+            if term is not None:
+                total += term[1] * term[0]
+        return total
+
+    @cached_property
+    def accelerations(self) -> list[sp.Expr]:
+        """q'' = adj(M) (F + W N + D phi) / det M, each entry in canonical form per load term."""
+        loads = [self.F] + [self.W[:, j] for j in range(self.W.cols)]
+        loads += [term[0] for term in self.friction if term is not None]
+        multipliers = [sp.S.One, *self.reactions] + [term[1] for term in self.friction if term is not None]
+        columns = solve_fraction_free(self.M, loads)
+        return [sp.Add(*[c[i] * w for c, w in zip(columns, multipliers)]) for i in range(self.M.rows)]
+
+
+def solve_fraction_free(M: sp.Matrix, loads: list[sp.Matrix], rows: sp.Matrix | None = None) -> list[list[sp.Expr]]:
+    """Canonical entries of ``rows^T M^-1 load`` for each load (rows = identity by default).
+
+    One trigonometric field for all entries; adj(M) and det(M) by :func:`adjugate_and_det`
+    with every product reduced; one common denominator det M.
+
+    Examples
+    --------
+    >>> q, m = sp.symbols("q m", positive=True)
+    >>> M = sp.Matrix([[m, 0], [0, m*sp.sin(q)**2 + m*sp.cos(q)**2]])
+    >>> solve_fraction_free(M, [sp.Matrix([1, sp.cos(q)])])
+    [[1/m, cos(q)/m]]
+    """
+    rows = sp.eye(M.rows) if rows is None else rows
+    field = TrigField([*M, *rows] + [x for load in loads for x in load])
+    adj, det = _adjugate_and_det(field, M)
+    projected = _matmul([[field.element(x) for x in rows[:, i]] for i in range(rows.cols)], adj, field.reduce)
+    results = []
+    for load in loads:
+        vector = [[field.element(x)] for x in load]
+        column = _matmul(projected, vector, field.reduce)
+        results.append([field.present(row[0] / det) for row in column])
+    return results
+
+
+def _adjugate_and_det(field, M: sp.Matrix):
+    """adj M and det M as field elements; in the polynomial ring (no gcds) when M's entries are
+    polynomials, as a mass matrix usually is."""
+    entries = [[field.element(x) for x in row] for row in M.tolist()]
+    if all(x.denom == 1 for row in entries for x in row):
+        polys = [[x.numer for x in row] for row in entries]
+        adj, det = adjugate_and_det(polys, field._reduce_poly)
+        return [[field.field.new(x) for x in row] for row in adj], field.field.new(det)
+    return adjugate_and_det(entries, field.reduce)
+
+
+def mass_determinant(M: sp.Matrix):
+    """1/det M as a :class:`~contactsym.canonical.Fraction`: det M is its denominator over
+    its (constant) numerator.
+
+    Examples
+    --------
+    >>> q, m = sp.symbols("q m", positive=True)
+    >>> monomial, rest = mass_determinant(sp.Matrix([[2*m, m*sp.cos(q)], [m*sp.cos(q), m]])).denominator_split()
+    >>> monomial, rest.as_expr()
+    (m**2, sin(q)**2 + 1)
+    """
+    field = TrigField(list(M))
+    return field.fraction(1 / _adjugate_and_det(field, M)[1])
+
+
+def _check_mass_matrix(M: sp.Matrix, coordinates) -> None:
+    """A clear error for a singular mass matrix, naming the coordinates involved."""
+
+    def name(q):
+        return getattr(q.func, "__name__", str(q)) if q.args == (t,) else str(q)
+
+    zero = [name(q) for i, q in enumerate(coordinates) if M[i, i] == 0]
+    if zero:
+        raise SceneError(
+            f"the mass matrix is singular: no kinetic energy in the coordinates {zero}; "
+            "every coordinate needs inertia (give its body a mass or moment of inertia)."
+        )
+    if mass_determinant_is_zero(M):
+        involved = [name(q) for i, q in enumerate(coordinates) if any(M[i, j] != 0 for j in range(M.cols) if j != i)]
+        raise SceneError(
+            f"the mass matrix is singular (det M = 0): the coordinates {involved} are not independent; "
+            "drop one of them or add the inertia that tells them apart."
+        )
+
+
+def mass_determinant_is_zero(M: sp.Matrix) -> bool:
+    return not _adjugate_and_det(TrigField(list(M)), M)[1]
+
+
+def contact_space(lagrangian, coordinates, contacts, loads=(), frame=None) -> ContactSpace:
+    """Lagrange's equations of a scene split into contact-space parts (no solve, no expand).
 
     Parameters
     ----------
@@ -49,10 +225,28 @@ def lagrangian_accelerations(lagrangian, coordinates, contacts, loads=(), frame=
         Applied forces and torques, as in ``LagrangesMethod``'s forcelist.
     frame : ReferenceFrame
         The inertial frame; needed when there are loads or friction laws.
+    """
+    coordinates = list(coordinates)
+    friction = _friction_terms(contacts, frame, coordinates)
+    method = LagrangesMethod(lagrangian, coordinates, forcelist=list(loads) or None, frame=frame)
+    method.form_lagranges_equations()
+    M = method.mass_matrix
+    _check_mass_matrix(M, coordinates)
+    columns = []
+    for contact in contacts:
+        gradient = sp.Matrix([sp.diff(contact.coordinate, q) for q in coordinates])
+        if gradient.is_zero_matrix:
+            raise SceneError(f"the gap {contact.coordinate} does not depend on the coordinates {coordinates}.")
+        columns.append(gradient)
+    W = sp.Matrix.hstack(*columns)
+    reactions = tuple(c.reaction for c in contacts)
+    return ContactSpace(tuple(coordinates), M, method.forcing, W, tuple(friction), reactions)
 
-    Returns
-    -------
-    list of sympy expressions, the accelerations of ``coordinates``.
+
+def lagrangian_accelerations(lagrangian, coordinates, contacts, loads=(), frame=None) -> list[sp.Expr]:
+    """Solve Lagrange's equations for the accelerations, with the reactions as unknown loads.
+
+    See :func:`contact_space` for the parameters; returns the accelerations of ``coordinates``.
 
     Examples
     --------
@@ -66,14 +260,4 @@ def lagrangian_accelerations(lagrangian, coordinates, contacts, loads=(), frame=
     >>> lagrangian_accelerations(L, [y], [cs.Contact(coordinate=y, reaction=N)])
     [N/m - g]
     """
-    forcelist = list(loads) + _friction_loads(contacts, frame)
-    method = LagrangesMethod(lagrangian, list(coordinates), forcelist=forcelist or None, frame=frame)
-    method.form_lagranges_equations()
-    forcing = method.forcing
-    for contact in contacts:
-        gradient = sp.Matrix([sp.diff(contact.coordinate, q) for q in coordinates])
-        if gradient.is_zero_matrix:
-            raise SceneError(f"the gap {contact.coordinate} does not depend on the coordinates {list(coordinates)}.")
-        forcing = forcing + contact.reaction * gradient
-    accelerations = method.mass_matrix.LUsolve(forcing)
-    return [normalize(a) for a in accelerations]
+    return contact_space(lagrangian, coordinates, contacts, loads, frame).accelerations

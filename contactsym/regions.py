@@ -28,7 +28,7 @@ import sympy as sp
 from sympy.core.relational import Relational
 from sympy.logic.boolalg import BooleanFunction
 
-from .algebra import normalize
+from .algebra import known_sign, normalize
 from .latex import tex
 
 __all__ = ["Region", "closed_form", "known_sign"]
@@ -41,31 +41,6 @@ _FLIP = {
     sp.Equality: sp.Equality,
     sp.Unequality: sp.Unequality,
 }
-
-
-def known_sign(expr: sp.Expr, positive=()) -> int | None:
-    """+1 or -1 when the sign of ``expr`` follows from assumptions, else None.
-
-    ``positive`` lists expressions known to be positive in the scene's domain
-    (e.g. ``sin(phi)`` for 0 < phi < pi/2).
-
-    Examples
-    --------
-    >>> m = sp.Symbol("m", positive=True)
-    >>> Phi = sp.Symbol("Phi", negative=True)
-    >>> known_sign(-3*m*Phi), known_sign(Phi - m), known_sign(sp.Symbol("x"))
-    (1, -1, None)
-    >>> a = sp.Symbol("alpha", positive=True)
-    >>> known_sign(sp.sin(a)**2 + 1), known_sign(sp.sin(a)), known_sign(sp.sin(a), [sp.sin(a)])
-    (1, None, 1)
-    """
-    stand_ins = {p: sp.Dummy(positive=True) for p in positive}
-    expr = sp.sympify(expr).subs(stand_ins)
-    if expr.is_positive:
-        return 1
-    if expr.is_negative:
-        return -1
-    return None
 
 
 def _as_positive_relation(rel: Relational) -> tuple[sp.Expr, type]:

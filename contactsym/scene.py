@@ -15,6 +15,7 @@ from functools import cached_property
 import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
+from .algebra import known_sign
 from .errors import SceneError, SignPatternError
 from .laws import Compliance, Coulomb, Generic, Viscous
 
@@ -165,17 +166,20 @@ class Scene:
         solve_for: sp.Symbol | None = None,
         description: str = "",
         eps: sp.Symbol | None = None,
+        contact_space=None,
     ):
         self.name = name
         self.description = description
         self.coordinates = tuple(coordinates)
         self.contacts = tuple(contacts)
-        self.accelerations = dict(zip(self.coordinates, (sp.sympify(g) for g in accelerations)))
+        #: Lagrange's equations in contact-space parts (``mechanics.ContactSpace``), or None.
+        self.contact_space = contact_space
+        if accelerations is not None:
+            self.accelerations = dict(zip(self.coordinates, (sp.sympify(g) for g in accelerations)))
         self.eps = _check_eps(eps)
         self.at = dict(at or {})
         self.presentation = dict(presentation or {})
-        #: Expressions positive throughout the scene's domain (e.g. sin(alpha), 0 < alpha < pi).
-        self.positive_expressions = tuple(self._plain(e) for e in positive)
+        self._declared_positive = tuple(self._plain(e) for e in positive)
         #: The parameter that closed-form regions are solved for, where possible.
         self.solve_for = solve_for
         self._stage_cache: dict = {}
@@ -234,10 +238,33 @@ class Scene:
 
         See :func:`contactsym.mechanics.lagrangian_accelerations`.
         """
-        from .mechanics import lagrangian_accelerations
+        from .mechanics import contact_space
 
-        accelerations = lagrangian_accelerations(lagrangian, coordinates, contacts, loads, frame)
-        return cls(coordinates, accelerations, contacts, **options)
+        space = contact_space(lagrangian, coordinates, contacts, loads, frame)
+        return cls(coordinates, None, contacts, contact_space=space, **options)
+
+    @cached_property
+    def positive_expressions(self) -> tuple:
+        """Expressions positive throughout the scene's domain: the declared ones (e.g.
+        sin(alpha), 0 < alpha < pi) and, for a Lagrangian scene, the factor of det M > 0
+        on the contact manifold that is not a monomial (when it is irreducible)."""
+        if self.contact_space is None:
+            return self._declared_positive
+        from .canonical import present_factor
+        from .mechanics import mass_determinant
+
+        inverse = mass_determinant(self.contact_space.M.applyfunc(self.freeze))
+        monomial, rest = inverse.denominator_split()
+        sign = known_sign(monomial / inverse.numerator_expr(), self._declared_positive)
+        if sign is None or rest == 1:
+            return self._declared_positive
+        form, scale = present_factor(rest, inverse.pairs)
+        return self._declared_positive + ((1 if scale > 0 else -1) * sign * form,)
+
+    @cached_property
+    def accelerations(self) -> dict:
+        """q'' for each coordinate (1.4); for a Lagrangian scene built on first request."""
+        return dict(zip(self.coordinates, self.contact_space.accelerations))
 
     def _check(self, accelerations, parameters) -> None:
         if not self.contacts:
@@ -248,19 +275,26 @@ class Scene:
                 raise SceneError(
                     f"contact coordinate {q} is not among the coordinates {list(self.coordinates)}; add it."
                 )
-        if len(self.accelerations) != len(self.coordinates):
-            raise SceneError("give each coordinate exactly one acceleration.")
         reactions = {c.reaction for c in self.contacts}
         if len(reactions) != len(self.contacts):
             raise SceneError("two contacts share one reaction symbol; give each contact its own.")
-        if not any(g.has(*reactions) for g in self.accelerations.values()):
-            raise SceneError(
-                f"no acceleration depends on the reactions {sorted(map(str, reactions))}; "
-                "the contacts must act on the system (check the reaction symbols)."
-            )
+        if self.contact_space is not None:  # Lagrangian: the gap gradients carry the reactions
+            space = self.contact_space
+            stated = [*space.M, *space.F, *space.W] + [
+                x for term in space.friction if term for x in (*term[0], term[1])
+            ]
+        else:
+            if len(self.accelerations) != len(self.coordinates):
+                raise SceneError("give each coordinate exactly one acceleration.")
+            if not any(g.has(*reactions) for g in self.accelerations.values()):
+                raise SceneError(
+                    f"no acceleration depends on the reactions {sorted(map(str, reactions))}; "
+                    "the contacts must act on the system (check the reaction symbols)."
+                )
+            stated = list(self.accelerations.values())
         if parameters is not None:
             declared = set(parameters) | reactions | {self.eps}
-            unknown = {s for g in self.accelerations.values() for s in g.free_symbols} - declared - {t}
+            unknown = {s for g in stated for s in sp.sympify(g).free_symbols} - declared - {t}
             if unknown:
                 raise SceneError(
                     f"symbols {sorted(map(str, unknown))} are not among the declared parameters; "

@@ -6,6 +6,7 @@ import math
 import random
 from functools import cache
 
+import pytest
 import sympy as sp
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
@@ -405,3 +406,57 @@ def test_rod_equilibria_latex():
     tex = cs.latex(s.equilibria())
     assert r"\mathtt" not in tex
     assert sp.latex(s.equilibria().branches[0].u_star[0]) in tex
+
+
+# --- contact space: fraction-free adjugate, Delassus matrices -------------------------
+
+
+def test_faddeev_adjugate_and_det_match_sympy_on_random_integer_matrices():
+    import random
+
+    from contactsym.mechanics import adjugate_and_det
+
+    rng = random.Random(7)
+    for n in range(1, 6):
+        M = sp.Matrix(n, n, lambda i, j: rng.randint(-5, 5))
+        adj, det = adjugate_and_det(M.tolist(), sp.expand)
+        assert det == M.det()
+        assert sp.Matrix(adj) == M.adjugate()
+
+
+def test_faddeev_on_a_symbolic_matrix_is_exact():
+    from contactsym.mechanics import adjugate_and_det
+
+    a, b, c, d, e = sp.symbols("a b c d e")
+    M = sp.Matrix([[a, b, 0], [b, c, d], [0, d, e]])
+    adj, det = adjugate_and_det(M.tolist(), sp.expand)
+    assert sp.expand(det - M.det()) == 0
+    assert (sp.Matrix(adj) - M.adjugate()).applyfunc(sp.expand).is_zero_matrix
+
+
+def test_solve_fraction_free_agrees_with_lu_at_random_points():
+    import random
+
+    from contactsym.mechanics import solve_fraction_free
+
+    q1, q2 = sp.symbols("q1 q2", real=True)
+    m1, m2 = sp.symbols("m1 m2", positive=True)
+    M = sp.Matrix([[m1 + m2, m2 * sp.cos(q1 - q2)], [m2 * sp.cos(q1 - q2), m2]])
+    load = sp.Matrix([sp.sin(q1), m1 * sp.cos(q2)])
+    rows = sp.Matrix([[sp.sin(q1)], [sp.sin(q2)]])
+    (ours,) = solve_fraction_free(M, [load], rows)
+    naive = (rows.T * M.LUsolve(load))[0]
+    rng = random.Random(3)
+    for _ in range(10):
+        point = {q1: rng.uniform(-3, 3), q2: rng.uniform(-3, 3), m1: rng.uniform(0.1, 3), m2: rng.uniform(0.1, 3)}
+        assert abs(float(ours[0].subs(point)) - float(naive.subs(point))) < 1e-9
+
+
+def test_a_singular_mass_matrix_names_the_coordinates():
+    x, y = dynamicsymbols("x y")
+    L = m * x.diff() ** 2 / 2  # y has no inertia
+    with pytest.raises(cs.SceneError, match=r"singular.*\['y'\]"):
+        cs.Scene.from_lagrangian(L, [x, y], [cs.Contact(coordinate=y, reaction=N)])
+    coupled = m * (x.diff() + y.diff()) ** 2 / 2  # only x + y has inertia: det M = 0
+    with pytest.raises(cs.SceneError, match=r"det M = 0.*\['x', 'y'\]"):
+        cs.Scene.from_lagrangian(coupled, [x, y], [cs.Contact(coordinate=y, reaction=N)])

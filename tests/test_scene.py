@@ -11,7 +11,15 @@ from sympy.physics.mechanics import Lagrangian, Particle, Point, ReferenceFrame,
 import contactsym as cs
 from contactsym.errors import ContactsymError, SceneError, SignPatternError
 
-NAMES = ["sliding-point", "painleve-klein-rod", "painleve-klein-guides", "brake", "painleve-rod", "two-leg-block"]
+NAMES = [
+    "sliding-point",
+    "painleve-klein-rod",
+    "painleve-klein-guides",
+    "brake",
+    "double-pendulum-tip",
+    "painleve-rod",
+    "two-leg-block",
+]
 
 x, y, z = dynamicsymbols("x y z")
 t = dynamicsymbols._t
@@ -29,7 +37,7 @@ def point_on_line(**options) -> cs.Scene:
 # --- built-in scenes ----------------------------------------------------------------
 
 
-def test_scene_names_are_the_paper_examples_and_the_classical_mechanisms():
+def test_scene_names_are_the_paper_examples_and_beyond():
     assert cs.scene_names() == NAMES
     assert cs.DEFAULT_SCENE in cs.scene_names()
 

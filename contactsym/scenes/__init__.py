@@ -1,4 +1,4 @@
-"""Built-in scenes: the paper's four examples and classical mechanisms, written at the level of mechanics."""
+"""Built-in scenes: the paper's four examples and mechanisms beyond it, written at the level of mechanics."""
 
 from __future__ import annotations
 
@@ -13,6 +13,7 @@ _MODULES = {
     "painleve-klein-rod": "painleve_klein_rod",
     "painleve-klein-guides": "painleve_klein_guides",
     "brake": "brake",
+    "double-pendulum-tip": "double_pendulum_tip",
     "painleve-rod": "painleve_rod",
     "two-leg-block": "two_leg_block",
 }
@@ -29,7 +30,7 @@ def scene_names() -> list[str]:
     Examples
     --------
     >>> scene_names()
-    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake', 'painleve-rod', 'two-leg-block']
+    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake', 'double-pendulum-tip', 'painleve-rod', 'two-leg-block']
     """
     return list(_MODULES)
 
@@ -44,7 +45,7 @@ def scene(name: str):
     >>> scene("break")
     Traceback (most recent call last):
     ...
-    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, painleve-rod, two-leg-block.
+    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, double-pendulum-tip, painleve-rod, two-leg-block.
     """
     if name not in _MODULES:
         import difflib

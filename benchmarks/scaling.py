@@ -1,0 +1,108 @@
+"""scaling: multi-link mechanisms from scene to stability, ours against today's way before it.
+
+Ours: the contact-space derivation (Delassus matrix W^T M^-1 W by fraction-free
+Faddeev–LeVerrier, the canonical rational form of several angles). Naive: the accelerations
+by LU solve of the symbolic mass matrix, each expanded, then every stage with expand-based
+normalization (how contactsym derived Lagrangian scenes before). Each run is a fresh process
+with a time limit; a naive run that does not finish is reported as "did not finish in N s".
+Cases: n-link chains with a frictional tip contact (n = 1..6), the stepladder (4 coordinates,
+3 contacts), the paper's Lagrangian scenes. Reported: wall time from scene to Hurwitz
+conditions and robust classification, and the operation counts of f, A and the conditions.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+from . import record
+
+ROOT = Path(__file__).resolve().parent.parent
+TARGETS = {"chain n=6": 60.0, "chain n=3": 10.0, "stepladder": 30.0}
+
+
+def _worker(mode: str, target: str, timeout: float) -> dict | None:
+    env = dict(os.environ)
+    env["PYTHONPATH"] = str(ROOT) + os.pathsep + env.get("PYTHONPATH", "")
+    try:
+        done = subprocess.run(
+            [sys.executable, "-m", "benchmarks._scaling_worker", mode, target],
+            cwd=ROOT,
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+            check=True,
+        )
+    except subprocess.TimeoutExpired:
+        return None
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+def _notes(o: dict | None, n: dict | None, ours_limit: float, naive_limit: float) -> str:
+    parts = []
+    if o:
+        parts.append(f"ours: ops f {o['ops_f']}, A {o['ops_A']}, Hurwitz {o['ops_hurwitz']}")
+    else:
+        parts.append(f"ours did not finish in {ours_limit:.0f} s")
+    if n:
+        parts.append(f"naive: ops f {n['ops_f']}, A {n['ops_A']}, Hurwitz {n['ops_hurwitz']}")
+    else:
+        parts.append(f"naive did not finish in {naive_limit:.0f} s: baseline_s is that bound")
+    return "; ".join(parts)
+
+
+def run(quick: bool, out_dir) -> list[dict]:
+    ours_limit, naive_limit = (300.0, 60.0) if quick else (900.0, 600.0)
+    cases = [(f"chain n={n}", f"chain-{n}", n) for n in range(1, 7)]
+    cases += [("stepladder", "stepladder", 4), ("brake", "brake", 3), ("guides", "painleve-klein-guides", 3)]
+    records, rows = [], []
+    for label, target, size in cases:
+        o = _worker("ours", target, ours_limit)
+        n = _worker("naive", target, naive_limit)
+        ours_s = o["seconds"] if o else ours_limit
+        naive_s = n["seconds"] if n else naive_limit
+        notes = _notes(o, n, ours_limit, naive_limit)
+        if label in TARGETS:
+            notes += f"; target < {TARGETS[label]:.0f} s"
+        records.append(record(f"scaling/{label}", ours_s, naive_s, None, size, notes))
+        rows.append((label, size, o, n, ours_s, naive_s))
+    _plot(out_dir, [r for r in rows if r[0].startswith("chain")], naive_limit)
+    return records
+
+
+def _plot(out_dir, rows, naive_limit):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
+    n = [r[1] for r in rows]
+    left.semilogy(n, [r[4] for r in rows], "o-", label="contactsym (contact space)")
+    naive_done = [(r[1], r[5]) for r in rows if r[3]]
+    naive_cut = [(r[1], r[5]) for r in rows if not r[3]]
+    if naive_done:
+        left.semilogy(*zip(*naive_done), "s--", label="LU solve + expand")
+    if naive_cut:
+        left.semilogy(*zip(*naive_cut), "x", color="C1", markersize=10, label=f"naive: not done in {naive_limit:.0f} s")
+    left.set_xlabel("links n")
+    left.set_ylabel("scene to stability [s]")
+    left.legend(fontsize=8)
+    for key, style in (("ops_f", "o-"), ("ops_A", "s-"), ("ops_hurwitz", "^-")):
+        points = [(r[1], r[2][key]) for r in rows if r[2]]
+        if points:
+            right.semilogy(*zip(*points), style, label=f"ours: {key[4:]}")
+        naive_points = [(r[1], r[3][key]) for r in rows if r[3]]
+        if naive_points:
+            right.semilogy(*zip(*naive_points), style.replace("-", "--"), alpha=0.5, label=f"naive: {key[4:]}")
+    right.set_xlabel("links n")
+    right.set_ylabel("operations (sympy.count_ops)")
+    right.legend(fontsize=7)
+    fig.suptitle("n-link chain with a rough tip contact")
+    fig.tight_layout()
+    fig.savefig(Path(out_dir) / "scaling.png", dpi=110)
+    plt.close(fig)

@@ -1,0 +1,369 @@
+"""A canonical rational form for expressions in several angles, with no ``simplify``.
+
+Every expression the pipeline derives is a rational function of the parameters, of sign
+symbols ``s_j`` (values +-1), and of ``sin q`` and ``cos q`` of a few angles. In such an
+expression the angles' sines and cosines are algebraically tied by ``sin^2 q + cos^2 q = 1``
+and the signs by ``s^2 = 1``; nothing else ties them. :func:`canonical` uses exactly that:
+
+1. Sines and cosines of integer combinations of angles (``cos(q1 - q2)``, ``sin 2q``) are
+   expanded into products of ``sin q_i``, ``cos q_i``; every other function application
+   (``Abs(u)``, ``sqrt(m)``, ``Y(x)``) is an opaque generator.
+2. The expression becomes P/Q, two polynomials over the integers in these generators
+   (SymPy's sparse ``FracField``, which cancels as it goes).
+3. P and Q are reduced to the normal form modulo the ideal
+   ``(cos^2 q + sin^2 q - 1, ..., s^2 - 1, ...)``: every ``cos q`` to degree at most one,
+   every ``s`` to degree at most one. Why this is a normal form: the leading monomials
+   ``cos^2 q`` and ``s^2`` of the generators are pairwise coprime, so by Buchberger's first
+   criterion the generators are a Groebner basis, and the remainder on division by a
+   Groebner basis is unique. Sign symbols in Q are moved up (1/s = s).
+4. P/Q is cancelled by its polynomial gcd and its sign fixed (Q's leading coefficient > 0).
+
+Two expressions equal as functions of the angles are equal after step 3 when they are
+polynomials; for fractions the form is canonical up to factors that cancel only modulo the
+ideal, which the gcd of step 4 does not see. It is always *correct*: each step is an identity.
+
+For presentation, P and the non-monomial part of Q are written either as polynomials in
+``sin q_i``, ``cos q_i`` or as Fourier sums ``sum a_k cos(k.q) + b_k sin(k.q)`` (multiple
+angles, e.g. ``cos(2 q1 - 2 q2)``), each exactly converted, whichever has fewer operations.
+A monomial denominator is distributed over the terms, so a polynomial in the parameters
+keeps the expanded form of earlier versions.
+
+Examples
+--------
+>>> import sympy as sp
+>>> a, b, m = sp.symbols("a b m", positive=True)
+>>> canonical(sp.sin(a)**2/m + sp.cos(a)**2/m)
+1/m
+>>> canonical(1/(1 - sp.cos(a - b)**2)) == canonical(1/sp.sin(a - b)**2)
+True
+>>> canonical((sp.cos(2*a) + 1)/(m*sp.cos(a)))
+2*cos(a)/m
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction as Fraction_
+from functools import cache, reduce
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+from sympy.polys.fields import FracField
+
+from .algebra import SignSymbol, known_sign
+
+__all__ = ["canonical", "Fraction", "TrigField", "to_fraction"]
+
+
+def _is_angle(x: sp.Expr) -> bool:
+    """A symbol or a coordinate q(t): what sin and cos are taken of."""
+    return x.is_Symbol or isinstance(x, AppliedUndef)
+
+
+def _integer_combination(arg: sp.Expr) -> bool:
+    """True for k1 q1 + k2 q2 + ... with integer k_i and at least two terms or |k| > 1."""
+    if _is_angle(arg):
+        return False
+    terms = sp.Add.make_args(arg)
+    for term in terms:
+        coeff, rest = term.as_coeff_Mul()
+        if not (coeff.is_Integer and _is_angle(rest)):
+            return False
+    return True
+
+
+def _expand_angles(expr: sp.Expr) -> sp.Expr:
+    """sin/cos of integer combinations of angles as products of sin q_i, cos q_i."""
+    return expr.replace(
+        lambda e: isinstance(e, (sp.sin, sp.cos)) and _integer_combination(e.args[0]),
+        lambda e: sp.expand_trig(e),
+    )
+
+
+def _generators(expr: sp.Expr) -> list[sp.Expr]:
+    """Generators, each angle's cos right before its sin (the reduction's lex order)."""
+    angles = sorted({f.args[0] for f in expr.atoms(sp.sin, sp.cos) if _is_angle(f.args[0])}, key=sp.default_sort_key)
+    trig = [g for a in angles for g in (sp.cos(a), sp.sin(a))]
+    others = set(expr.atoms(sp.Symbol))
+    others |= {f for f in expr.atoms(sp.Function) if f not in trig}
+    others |= {p for p in expr.atoms(sp.Pow) if not p.exp.is_Integer}
+    others |= expr.atoms(sp.Derivative)
+    plain = [g for g in others if g.is_Symbol]
+    opaque = [g for g in others if not g.is_Symbol]
+    return trig + sorted(plain, key=sp.default_sort_key) + sorted(opaque, key=sp.default_sort_key)
+
+
+class Fraction:
+    """P/Q in normal form: two polynomials of one ring, reduced, cancelled.
+
+    Attributes
+    ----------
+    numer, denom : PolyElement
+    """
+
+    def __init__(self, numer, denom, pairs, signs):
+        self.numer, self.denom = numer, denom
+        self.pairs, self.signs = pairs, signs
+
+    @property
+    def ring(self):
+        return self.numer.ring
+
+    def as_expr(self) -> sp.Expr:
+        """The presented expression (see the module docstring)."""
+        monomial, rest = _split_monomial(self.denom)
+        if rest == 1:
+            return sp.expand(self.numer.as_expr() / monomial.as_expr())
+        numer, scale_n = present_factor(self.numer, self.pairs)
+        denom, scale_d = present_factor(rest, self.pairs)
+        return (scale_n / scale_d) * numer / (monomial.as_expr() * denom)
+
+    def denominator_split(self) -> tuple[sp.Expr, object]:
+        """(c * monomial, rest): the denominator is their product; rest = 1 for a monomial."""
+        monomial, rest = _split_monomial(self.denom)
+        return monomial.as_expr(), rest
+
+    def denominator_sign(self, positive=()) -> int | None:
+        """The sign of the denominator when it follows from ``positive`` (expressions known
+        to be positive): its monomial's sign times those of factors divided out exactly."""
+        monomial, rest = self.denominator_split()
+        sign = known_sign(monomial, positive)
+        for p in positive:
+            if sign is None or rest.is_ground:
+                break
+            factor = _as_poly(p, rest.ring, self.pairs, self.signs)
+            if factor is None or factor.is_ground:
+                continue
+            while not rest.is_ground:
+                quotient, remainder = rest.div(factor)
+                if remainder:
+                    break
+                rest = quotient
+        if sign is None or not rest.is_ground:
+            return None
+        return sign * (1 if rest.LC > 0 else -1)
+
+    def numerator_expr(self) -> sp.Expr:
+        """The numerator, presented."""
+        numer, scale = present_factor(self.numer, self.pairs)
+        return scale * numer
+
+
+def present_factor(poly, pairs) -> tuple[sp.Expr, sp.Rational]:
+    """(form, c) with poly = c * form; form in its shorter presentation with integer,
+    coprime coefficients and a fixed sign, so one polynomial always reads the same."""
+    form = sp.expand(_best_form(poly, pairs))
+    terms = sp.Add.make_args(form)
+    coefficients = [t.as_coeff_Mul()[0] for t in terms]
+    scale = sp.Rational(
+        sp.igcd(*[c.p for c in coefficients]) if len(coefficients) > 1 else abs(coefficients[0].p),
+        sp.ilcm(*[c.q for c in coefficients]) if len(coefficients) > 1 else coefficients[0].q,
+    )
+    form = sp.expand(form / scale)
+    if form.could_extract_minus_sign():
+        form, scale = -form, -scale
+    return form, scale
+
+
+def _as_poly(expr: sp.Expr, ring, pairs, signs):
+    """``expr`` (a polynomial in ``ring``'s generators after expanding angles) in ``ring``,
+    reduced, or None."""
+    try:
+        poly = ring.from_expr(_expand_angles(sp.sympify(expr)))
+    except (ValueError, sp.polys.polyerrors.CoercionFailed):
+        return None
+    return _reduce(poly, pairs, signs)
+
+
+def _reduce(poly, pairs, signs):
+    """The normal form of a polynomial (see the module docstring)."""
+    gens = poly.ring.gens
+    basis = [gens[c] ** 2 + gens[s] ** 2 - 1 for c, s in pairs] + [gens[i] ** 2 - 1 for i in signs]
+    return poly.rem(basis) if basis and poly else poly
+
+
+def _split_monomial(poly):
+    """poly = content * monomial * rest, with rest = 1 for a monomial."""
+    ring = poly.ring
+    content, primitive = poly.primitive()
+    exponents = [min(e) for e in zip(*primitive.monoms())] if primitive else [0] * ring.ngens
+    monomial = ring({tuple(exponents): ring.domain.one})
+    rest = primitive.exquo(monomial)
+    return ring({(0,) * ring.ngens: content}) * monomial, rest
+
+
+def _fourier_terms(poly, pairs) -> dict:
+    """{(k, other exponents): (a, b)}: the term a cos(k.q) + b sin(k.q) (k first nonzero > 0).
+
+    With z = exp(i q): 2 cos q = z + 1/z and 2 sin q = (z - 1/z)/i; each monomial's trigonometric
+    part becomes a Laurent polynomial in the z's with Gaussian-integer coefficients over a power
+    of two (kept as integer pairs, one common denominator: exact and fast), and the frequencies
+    k and -k pair into a cosine and a sine of k.q.
+    """
+    ring, domain = poly.ring, poly.ring.domain
+    trig = {i for pair in pairs for i in pair}
+    terms_in = poly.terms()
+    top = max(sum(monom[i] for i in trig) for monom, _ in terms_in)
+    scale = reduce(sp.ilcm, [int(domain.denom(c)) for _, c in terms_in], 1)
+    by_term: dict[tuple, list] = {}  # (k, other exponents) -> [re, im] of 2^top * scale * coefficient of z^k
+    for monom, coeff in terms_in:
+        rest = tuple(0 if i in trig else e for i, e in enumerate(monom))
+        degree = sum(monom[i] for i in trig)
+        laurent = {(): (int(domain.numer(coeff)) * (scale // int(domain.denom(coeff))) << (top - degree), 0)}
+        for c, s in pairs:
+            factor = _laurent(monom[c], monom[s])
+            product: dict = {}
+            for k, (ar, ai) in laurent.items():
+                for j, (br, bi) in factor.items():
+                    product[k + (j,)] = (ar * br - ai * bi, ar * bi + ai * br)
+            laurent = product
+        for k, (re, im) in laurent.items():
+            entry = by_term.setdefault((k, rest), [0, 0])
+            entry[0] += re
+            entry[1] += im
+    denominator = Fraction_(1, scale << top)
+    terms = {}
+    for (k, rest), a in by_term.items():
+        if any(k) and _negative_first(k):
+            continue  # taken with its partner
+        b = by_term.get((tuple(-e for e in k), rest), (0, 0)) if any(k) else (0, 0)
+        # a z^k + b z^-k = (a + b) cos(k.q) + i (a - b) sin(k.q); a constant term is real
+        cosine, sine = (a[0] + b[0], b[1] - a[1]) if any(k) else (a[0], 0)
+        if cosine or sine:
+            terms[(k, rest)] = (cosine * denominator, sine * denominator)
+    return terms
+
+
+def _fourier(terms: dict, ring, pairs) -> sp.Expr:
+    """The sympy expression of :func:`_fourier_terms`."""
+    angles = [ring.symbols[s].args[0] for _, s in pairs]
+    total = []
+    for (k, rest), (cosine, sine) in terms.items():
+        monomial = sp.Mul(*[g**e for g, e in zip(ring.symbols, rest) if e])
+        angle = sp.Add(*[e * q for e, q in zip(k, angles) if e])
+        if not any(k):
+            total.append(_rational(cosine) * monomial)
+            continue
+        total.append(_rational(cosine) * monomial * sp.cos(angle))
+        total.append(_rational(sine) * monomial * sp.sin(angle))
+    return sp.Add(*total)
+
+
+def _rational(x: Fraction_) -> sp.Rational:
+    return sp.Rational(x.numerator, x.denominator)
+
+
+@cache
+def _laurent(cos_power: int, sin_power: int) -> dict:
+    """(2 cos)^a (2 sin)^b as {frequency j: (re, im) of the coefficient of z^j}, integers."""
+    result = {0: (1, 0)}
+    factors = [{1: (1, 0), -1: (1, 0)}] * cos_power + [{1: (0, -1), -1: (0, 1)}] * sin_power
+    for factor in factors:
+        product: dict = {}
+        for j, (ar, ai) in result.items():
+            for i, (br, bi) in factor.items():
+                re, im = product.get(j + i, (0, 0))
+                product[j + i] = (re + ar * br - ai * bi, im + ar * bi + ai * br)
+        result = {j: a for j, a in product.items() if a != (0, 0)}
+    return result
+
+
+def _negative_first(k: tuple) -> bool:
+    first = next(e for e in k if e != 0)
+    return first < 0
+
+
+def _best_form(poly, pairs) -> sp.Expr:
+    """The polynomial in sin q_i, cos q_i, or its Fourier sum when that has fewer terms."""
+    if not pairs or not any(poly.degree(c) > 0 or poly.degree(s) > 0 for c, s in pairs):
+        return poly.as_expr()
+    terms = _fourier_terms(poly, pairs)
+    count = sum(bool(a) + bool(b) for a, b in terms.values())
+    return _fourier(terms, poly.ring, pairs) if count < len(poly.terms()) else poly.as_expr()
+
+
+class TrigField:
+    """One fraction field for several expressions, with the reduction of the module docstring.
+
+    Examples
+    --------
+    >>> x, m = sp.symbols("x m", positive=True)
+    >>> K = TrigField([sp.sin(x), m])
+    >>> K.present(K.reduce(K.element(sp.sin(x))**2 + K.element(sp.cos(x))**2))
+    1
+    """
+
+    def __init__(self, exprs):
+        exprs = [_expand_angles(sp.sympify(e)) for e in exprs]
+        gens = _generators(sp.Tuple(*exprs)) or [sp.Dummy("one")]
+        self.field = FracField(gens, sp.QQ)
+        self.ring = self.field.ring
+        index = {g: i for i, g in enumerate(gens)}
+        self.pairs = [
+            (index[g], index[sp.sin(g.args[0])]) for g in gens if isinstance(g, sp.cos) and _is_angle(g.args[0])
+        ]
+        self.signs = [index[g] for g in gens if isinstance(g, SignSymbol)]
+
+    def element(self, expr: sp.Expr):
+        """``expr`` as a reduced element of the field."""
+        numer, denom = sp.fraction(sp.together(_expand_angles(sp.sympify(expr))))
+        return self.reduce(self.field.new(self.ring.from_expr(numer), self.ring.from_expr(denom)))
+
+    def _reduce_poly(self, poly):
+        return _reduce(poly, self.pairs, self.signs)
+
+    def reduce(self, value):
+        """The normal form of a field element: signs moved up, both parts reduced, cancelled."""
+        numer, denom = self._reduce_poly(value.numer), self._reduce_poly(value.denom)
+        for i in self.signs:  # no sign in the denominator: d0 + d1 s times d0 - d1 s is d0^2 - d1^2
+            if denom.degree(i) > 0:
+                gen = self.ring.gens[i]
+                d1 = denom.coeff_wrt(gen, 1)
+                conjugate = denom - 2 * d1 * gen
+                rational = self._reduce_poly(denom * conjugate)
+                if rational:  # zero: the denominator vanishes for one sign; keep it as it is
+                    numer, denom = self._reduce_poly(numer * conjugate), rational
+        return self.field.new(numer, denom)
+
+    def fraction(self, value) -> Fraction:
+        value = self.reduce(value)
+        numer, denom = _integral(value.numer, value.denom)
+        return Fraction(numer, denom, self.pairs, self.signs)
+
+    def present(self, value) -> sp.Expr:
+        """The presented sympy expression of a field element."""
+        return self.fraction(value).as_expr()
+
+
+def to_fraction(expr: sp.Expr) -> Fraction:
+    """The normal form P/Q of ``expr`` (see the module docstring).
+
+    Examples
+    --------
+    >>> x, m = sp.symbols("x m", positive=True)
+    >>> fr = to_fraction(sp.cos(x)**2/(m*sp.sin(x)**2 - m))
+    >>> fr.numer, fr.denom
+    (-1, m)
+    """
+    field = TrigField([expr])
+    return field.fraction(field.element(expr))
+
+
+def _integral(numer, denom):
+    """Clear rational coefficients: integer numerator and denominator, denominator content > 0."""
+    domain = numer.ring.domain
+    scale = reduce(sp.ilcm, [int(domain.denom(c)) for c in list(numer.coeffs()) + list(denom.coeffs())], 1)
+    numer, denom = numer * scale, denom * scale
+    content_n, content_d = numer.content(), denom.content()
+    common = domain.convert(sp.igcd(int(domain.numer(content_n)), int(domain.numer(content_d))) or 1)
+    numer, denom = numer.quo_ground(common), denom.quo_ground(common)
+    if domain.is_negative(denom.LC):
+        numer, denom = -numer, -denom
+    return numer, denom
+
+
+def canonical(expr: sp.Expr) -> sp.Expr:
+    """``expr`` in the canonical rational form (see the module docstring)."""
+    expr = sp.sympify(expr)
+    if expr.is_Number or expr.is_Symbol:
+        return expr
+    return to_fraction(expr).as_expr()
