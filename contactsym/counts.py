@@ -143,6 +143,14 @@ def _pythagorean(expr) -> sp.Expr:
     return sp.expand(expr.xreplace({p: (1 - sp.cos(p.base.args[0]) ** 2) ** (p.exp // 2) for p in even_sines}))
 
 
+def _half_angles(expr) -> sp.Expr:
+    """cos(x) written as 1 - 2 sin(x/2)**2: m (cos 2q - 1) shows its sign as -2 m sin(q)**2."""
+    cosines = expr.atoms(sp.cos)
+    if not cosines:
+        return expr
+    return sp.expand(expr.xreplace({c: 1 - 2 * sp.sin(c.args[0] / 2) ** 2 for c in cosines}))
+
+
 def _sign(condition: _Condition, positive) -> int | None:
     for form in (condition.raw, condition.presented, _pythagorean(sp.expand(condition.raw))):
         sign = known_sign(form, positive)
@@ -187,7 +195,7 @@ def _infeasible(conditions: list[_Condition], presenter, max_size=None) -> bool:
     for size in range(1, min(len(conditions), max_size or len(conditions)) + 1):
         for chosen in itertools.combinations(conditions, size):
             total = sp.Add(*[c.raw for c in chosen])
-            for form in (normalize(total), presenter.present(total)):
+            for form in (normalize(total), presenter.present(total), _half_angles(sp.expand(total))):
                 value = _stand_in(form, positive)
                 if value.is_negative or (any(c.strict for c in chosen) and value.is_nonpositive):
                     return True

@@ -30,7 +30,15 @@ ALLOWED = {
 
 #: Sampling ranges by symbol name; other symbols: (-3, 3).
 RANGES = {"theta": (0.05, 1.5), "alpha": (0.1, 3.0), "thetadot": (-3, 3)}
-SCENES = ["brake", "painleve-rod", "painleve-rod-bilateral", "two-leg-block", "two-leg-block-unilateral"]
+SCENES = [
+    "brake",
+    "double-pendulum-tip",
+    "painleve-rod",
+    "painleve-rod-bilateral",
+    "two-leg-block",
+    "two-leg-block-unilateral",
+]
+# the paper's rod (corners off 0) and guides (presented in v_j, kappa) are checked so in test_counts.py
 
 
 def sample(symbols, n, rng):
