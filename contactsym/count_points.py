@@ -30,6 +30,12 @@ def _compiled(scene):
     def build():
         G = scene_map(scene)
         exprs = [G.plus, G.minus, G.load]
+        functions = set().union(*(e.atoms(sp.core.function.AppliedUndef) for e in exprs))
+        if functions:
+            raise ContactsymError(
+                f"scene '{scene.name}' has the functions {sorted(map(str, functions))} in f; numeric counts need "
+                "plain symbols: build the scene with symbols for them."
+            )
         symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=str)
         return symbols, sp.lambdify(symbols, exprs, "numpy")
 
