@@ -51,7 +51,10 @@ def _arrays(scene, values: dict):
     if any(not np.all(np.isfinite(a)) for a in arguments):
         raise ContactsymError("parameter values must be finite numbers.")
     shape = np.broadcast_shapes(*(a.shape for a in arguments)) if arguments else ()
-    plus, minus, load = (_as_array(matrix, shape) for matrix in function(*arguments))
+    with np.errstate(all="ignore"):
+        plus, minus, load = (_as_array(matrix, shape) for matrix in function(*arguments))
+    if not (np.all(np.isfinite(plus)) and np.all(np.isfinite(minus)) and np.all(np.isfinite(load))):
+        raise ContactsymError(f"f of scene '{scene.name}' is not finite at these values (a zero mass or length?).")
     return OrthantMap(plus, minus), load[..., 0]
 
 
@@ -150,6 +153,9 @@ def decide_counts(scene, **values) -> CountDecision:
 
         signs = {q: int(np.sign(dets[q])) for q in k2_quadrants}
         label = k2_label(signs, cross)
+        if label == "none, two or four" and cross(0) == 0 == cross(1):
+            reason = "V_0 || V_2 and V_1 || V_3: two does not occur, a boundary of the region"
+            return CountDecision("undecided", frozenset(), 0, dets, reason)
         counts = {"unique": {1}, "two or none": {0, 2}, "one or three": {1, 3}, "none, two or four": {0, 2, 4}}[label]
         return CountDecision(label, frozenset(counts), G.degree(), dets, "determinant and cross determinant signs")
     counts = G.count_set()

@@ -27,6 +27,8 @@ def test_missing_or_bad_values_are_refused():
         decide_counts(block, **{k: v for k, v in BLOCK.items() if k != "mu_2"})
     with pytest.raises(ContactsymError, match="finite"):
         count_equilibria(block, Y=np.nan, M=0.0, **BLOCK)
+    with pytest.raises(ContactsymError, match="not finite"):
+        decide_counts(block, **{**BLOCK, "m": 0.0})
     with pytest.raises(ContactsymError, match="plain symbols"):
         count_equilibria(cs.scene("sliding-point"), m=1.0)
 
