@@ -191,6 +191,22 @@ class Equilibria:
         """Equilibria with some unilateral contacts open (see the module docstring)."""
         return tuple(_lift_offs(self.scene, self.patterns))
 
+    def stable(self, equilibrium) -> sp.Basic:
+        """Where an equilibrium (a Branch or a LiftOff) is asymptotically stable for the scene's laws.
+
+        Examples
+        --------
+        >>> import contactsym as cs
+        >>> eq = cs.scene("painleve-rod").equilibria()
+        >>> len(sp.And.make_args(eq.stable(eq.branches[0])))  # the two Hurwitz conditions of k = 1
+        2
+        >>> eq.stable(eq.lift_offs[0])
+        True
+        """
+        if isinstance(equilibrium, LiftOff):
+            return equilibrium.stable
+        return sp.And(*[sp.Gt(h, 0) for h in self.scene.stability(equilibrium.signs).hurwitz])
+
     def __iter__(self):
         return iter(self.branches)
 
