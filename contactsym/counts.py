@@ -521,7 +521,8 @@ def _k1_regions(scene) -> dict[str, sp.Basic]:
 
 # --- orthant maps (k >= 2, unilateral contacts): see contactsym.orthants ---------------------
 
-#: Sums of at most this many conditions are tried when pruning for k >= 3 (2^k determinants).
+#: Sums of at most this many conditions are tried when pruning orthant determinants (display only:
+#: a sign case kept by mistake is empty, never mislabelled).
 _QUICK = 2
 
 

@@ -157,12 +157,12 @@ def orthant_regions(scene, helpers) -> dict[str, sp.Basic]:
     disjuncts: dict[str, list] = {}
     for signs in helpers.sign_choices(known, open_):
         conditions = [helpers.condition(signs[i] * determinants[i].raw) for i in open_]
-        if helpers.infeasible(conditions):
+        if helpers.infeasible(conditions, quick=True):
             continue
         for name, extra in _labels(G, dict(zip(patterns, signs)), helpers):
-            if extra and helpers.infeasible(conditions + extra):
+            if extra and helpers.infeasible(conditions + extra, quick=True):
                 continue
-            kept = helpers.drop_implied(conditions + extra)
+            kept = helpers.drop_implied(conditions + extra, quick=True)
             disjuncts.setdefault(name, []).append(helpers.closed(kept))
     return {name: helpers.boolean(helpers.merge(ds)) for name, ds in disjuncts.items()}
 

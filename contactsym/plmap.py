@@ -231,6 +231,11 @@ class OrthantMap:
         return loads.reshape(-1, self.k)
 
     def count_set(self) -> set:
-        """The counts that loads in open cells produce (one map, no batch)."""
-        counts, undecided = self.count(self._cell_loads())
+        """The counts that loads in open cells produce (one map, no batch).
+
+        Each load sits in an open cell or is marked undecided; steps of three sizes reach
+        thin cells (a cell narrower than the smallest step is missed, a count never invented).
+        """
+        loads = np.concatenate([self._cell_loads(eps) for eps in (1e-3, 1e-6, 1e-9)])
+        counts, undecided = self.count(loads, tol=1e-12)
         return set(counts[~undecided].tolist())
