@@ -224,11 +224,12 @@ def count_map_plot(data: CountMapData, ax=None):
     mesh = ax.pcolormesh(data.X, data.Y, data.counts, cmap=ListedColormap(colours), norm=norm, shading="auto")
     present = sorted(set(data.counts.ravel().tolist()))
     handles = [plt.Rectangle((0, 0), 1, 1, color=colours[c + 1]) for c in present]
-    names = ["undecided" if c < 0 else f"{c} equilibria" for c in present]
+    names = ["undecided" if c < 0 else f"{c} equilibri{'um' if c == 1 else 'a'}" for c in present]
     legend = ax.legend(handles, names, fontsize=8, loc="upper right")
     ax.set_xlabel(data.x)
     ax.set_ylabel(data.y)
-    ax.set_title(f"number of equilibria (over all loads: {data.label})", fontsize=9)
+    over = "" if data.label == "varies over the plane" else f" (over all loads: {data.label})"
+    ax.set_title(f"number of equilibria, lift-off included{over}", fontsize=9)
     return [mesh, legend]
 
 

@@ -612,7 +612,22 @@ def _regions_section(scene, named: _Named) -> str:
             text.append(_display(Formula(name, "", region.condition, "", _count_tag(scene, name), ""), named))
     elif note:
         text.append(r"\paragraph{Number of equilibria.} " + _escape(note))
+    text += _one_sided_section(scene, named)
     return "\n".join(text)
+
+
+def _one_sided_section(scene, named: _Named) -> list[str]:
+    """The one-sided Painleve cases of a unilateral contact (k = 1), with lift-off."""
+    if scene.k != 1 or not scene.contacts[0].unilateral:
+        return []
+    from .one_sided import one_sided_cases
+
+    text = [r"\subsection*{One-sided contact: consistent, inconsistent, indeterminate}"]
+    for case in one_sided_cases(scene):
+        found = ", ".join(f"{kind} ({'stable' if stable else 'unstable'})" for kind, stable in case.equilibria)
+        text.append(f"\\paragraph{{{_escape(case.name.capitalize())}.}} " + _escape(found or "no equilibrium"))
+        text.append(_display(Formula(case.name, "", case.region.condition, "", (), ""), named))
+    return text
 
 
 def _special_cases(scene, named: _Named) -> list[str]:
