@@ -121,3 +121,12 @@ def test_counts_with_lift_off_at_numeric_points():
 def test_one_sided_cases_refuse_a_bilateral_contact():
     with pytest.raises(cs.ContactsymError, match="unilateral"):
         one_sided_cases(variant("painleve-rod-bilateral"))
+
+
+def test_report_lists_the_one_sided_cases_and_the_corrected_count_labels():
+    from contactsym.report import report_tex
+
+    tex = report_tex(cs.scene("painleve-rod"))
+    assert r"\paragraph{Indeterminate.} sliding (unstable), lift-off (stable)" in tex
+    assert r"\paragraph{Inconsistent.} no equilibrium" in tex
+    assert r"\paragraph{Two or none.}" in tex and "one or three" not in tex.lower()
