@@ -159,6 +159,10 @@ def _sign(condition: _Condition, positive) -> int | None:
     return None
 
 
+def _condition(presenter: _Presenter, expr) -> _Condition:
+    return _Condition(*_forms(presenter, expr))
+
+
 def _forms(presenter: _Presenter, expr) -> tuple:
     expr = normalize(expr)
     return expr, presenter.present(expr)
@@ -178,27 +182,46 @@ def _proves(slack_forms, positive, strict_premise: bool, strict_conclusion: bool
 def _implied(premises: list[_Condition], conclusion: _Condition, presenter, max_size=None) -> bool:
     """A sum of some premises (at most ``max_size`` of them) is below the conclusion by a known
     non-negative amount."""
-    positive = presenter.positive_expressions
     for size in range(1, min(len(premises), max_size or len(premises)) + 1):
         for chosen in itertools.combinations(premises, size):
             raw = conclusion.raw - sp.Add(*[p.raw for p in chosen])
-            forms = (normalize(raw), presenter.present(raw))
-            if _proves(forms, positive, any(p.strict for p in chosen), conclusion.strict):
+            key = ("proves", raw, any(p.strict for p in chosen), conclusion.strict)
+            if _cached(presenter, key, _proves_slack, raw, presenter, *key[2:]):
                 return True
     return False
+
+
+def _proves_slack(raw, presenter, strict_premise: bool, strict_conclusion: bool) -> bool:
+    forms = (normalize(raw), presenter.present(raw))
+    return _proves(forms, presenter.positive_expressions, strict_premise, strict_conclusion)
+
+
+def _cached(presenter, key, compute, *args):
+    """Sums of conditions recur across sign cases: decide each once per presenter."""
+    cache = presenter.__dict__.setdefault("_cache", {})
+    if key not in cache:
+        cache[key] = compute(*args)
+    return cache[key]
 
 
 def _infeasible(conditions: list[_Condition], presenter, max_size=None) -> bool:
     """Some of the conditions (at most ``max_size``) add up to a quantity known to be <= 0 (< 0 when
     none is strict). A sufficient test: False does not prove the conditions compatible."""
-    positive = presenter.positive_expressions
     for size in range(1, min(len(conditions), max_size or len(conditions)) + 1):
         for chosen in itertools.combinations(conditions, size):
             total = sp.Add(*[c.raw for c in chosen])
-            for form in (normalize(total), presenter.present(total), _half_angles(sp.expand(total))):
-                value = _stand_in(form, positive)
-                if value.is_negative or (any(c.strict for c in chosen) and value.is_nonpositive):
-                    return True
+            key = ("nonpositive", total, any(c.strict for c in chosen))
+            if _cached(presenter, key, _known_nonpositive, total, key[2], presenter):
+                return True
+    return False
+
+
+def _known_nonpositive(total, strict: bool, presenter) -> bool:
+    """total < 0 is known (total <= 0 when some condition is strict)."""
+    for form in (normalize(total), presenter.present(total), _half_angles(sp.expand(total))):
+        value = _stand_in(form, presenter.positive_expressions)
+        if value.is_negative or (strict and value.is_nonpositive):
+            return True
     return False
 
 
@@ -318,7 +341,7 @@ def _closed_conjuncts(conditions, equalities, presenter) -> frozenset:
     parts = []
     for c in conditions:
         rel = sp.Gt(c.raw, 0) if c.strict else sp.Ge(c.raw, 0)
-        parts.extend(sp.And.make_args(closed_form(rel, presenter)))
+        parts.extend(sp.And.make_args(_cached(presenter, ("closed", rel), closed_form, rel, presenter)))
     for e in equalities:
         parts.extend(sp.And.make_args(closed_form(e, presenter)))
     parts = [_tidy(p, positive) for p in parts if p != sp.true]
@@ -534,7 +557,7 @@ class _Tools:
         self.positive = self.presenter.positive_expressions
 
     def condition(self, expr) -> _Condition:
-        return _Condition(*_forms(self.presenter, expr))
+        return _cached(self.presenter, ("condition", expr), _condition, self.presenter, expr)
 
     def sign(self, condition: _Condition) -> int | None:
         return _sign(condition, self.positive)
