@@ -3,7 +3,7 @@
 Each case runs in a fresh Python process with a time limit. Ours: ``count_regions`` as it
 is now (orthant map; k = 2 labels from determinant and cross-determinant signs; k >= 3
 coherent orientation, closed forms once per determinant, large determinants neither
-factored nor pruned). Old: the previous algorithm, kept here as the baseline: every
+factored nor pruned). Old: the previous algorithm (with today's shared, cached helpers), kept here as the baseline: every
 completion of the open determinant signs (2^(2^k) for k = 3), each tested for
 infeasibility and pruned with sums of any number of conditions, each condition put in
 closed form anew. Scenes: the guides and the two-leg block (k = 2), and fully symbolic
