@@ -10,16 +10,22 @@ every sign -1 and flip the signs of the switching functions that vanish at each 
 With the signs of the slopes f' on the pieces:
 
 - all f' > 0: a unique root, stable for every contact law (Propositions 3, 4);
-- c sign changes: f has c local extrema; when the outer slopes differ in sign the count
+- c <= 3 sign changes: f has c local extrema; when the outer slopes differ in sign the count
   is even (c = 1: a fold, two roots or none, none being an impact-type catastrophe),
-  when they agree it is odd (c = 2: a cusp, one root or three).
+  when they agree it is odd (c = 2: a cusp, one root or three; c = 3: none, two or four);
+- four or more sign changes: the values at the extrema, not the signs, decide which
+  counts occur: undecided.
 
-k = 2 (§5). Coherent orientation: with sign(det A) on the four orthants,
+Orthant maps (k >= 2, and any unilateral contact, lift-off included): see
+:mod:`contactsym.orthants` and :mod:`contactsym.plmap`. With the orthant determinants
+(principal minors of A with lift-off):
 
-- all of one sign: a unique solution for every load;
-- exactly two negative, in adjacent orthants (patterns differing in one sign): two or none;
-- one or three negative: one or three;
-- otherwise undecided.
+- all of one sign (coherent orientation): a unique solution for every load;
+- k = 2, otherwise: the degree of the map decides, and it follows from the signs and
+  one cross determinant (:func:`contactsym.plmap.k2_label`): two or none, one or
+  three, or none, two or four;
+- k >= 3, otherwise: undecided in closed form; :func:`contactsym.count_points.decide_counts`
+  decides at numeric points.
 
 Determinants and slopes of known sign are not enumerated, and sign combinations that a
 short exact argument excludes (a sum of the conditions of known non-positive sign) are
@@ -47,6 +53,7 @@ from sympy.core.relational import Relational
 
 from .algebra import normalize
 from .errors import ContactsymError
+from .orthants import orthant_regions
 from .regions import Region, _as_positive_relation, closed_form, known_sign
 
 __all__ = [
@@ -64,9 +71,13 @@ COUNT_DESCRIPTIONS = {
     "unique stable": "one root for every load, stable for every contact law (f' > 0 on every piece; Props. 3-4)",
     "unique unstable": "one root for every load, unstable for every contact law (f' < 0 on every piece)",
     "unique": "one solution for every load (coherent orientation: all orthant determinants of one sign)",
-    "two or none": "fold: two solutions or none, by the load; none is an impact-type catastrophe",
-    "one or three": "cusp: one solution or three, by the load",
-    "undecided": "the signs of the orthant determinants do not decide the count",
+    "two or none": "degree 0: two solutions or none, by the load (a fold; none is an impact-type catastrophe)",
+    "one or three": "degree +-1 with mixed orientation: one solution or three, by the load (a cusp)",
+    "none, two or four": "degree 0, orthant determinant signs alternating: none, two or four, by the load",
+    "undecided": (
+        "orthant determinants of mixed signs: the count follows the degree of the map, which their signs "
+        "do not fix; decide it at numeric points with contactsym.count_points.decide_counts"
+    ),
 }
 
 _WORDS = ["none", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine"]
@@ -124,12 +135,32 @@ def _stand_in(expr, positive):
     return sp.sympify(expr).subs({p: sp.Dummy(positive=True) for p in positive})
 
 
+def _pythagorean(expr) -> sp.Expr:
+    """sin(x)**(2n) written as (1 - cos(x)**2)**n: 4 - 3 sin^2 + ... shows its sign as 1 + 3 cos^2 + ..."""
+    even_sines = [p for p in expr.atoms(sp.Pow) if isinstance(p.base, sp.sin) and p.exp.is_even]
+    if not even_sines:
+        return expr
+    return sp.expand(expr.xreplace({p: (1 - sp.cos(p.base.args[0]) ** 2) ** (p.exp // 2) for p in even_sines}))
+
+
+def _half_angles(expr) -> sp.Expr:
+    """cos(x) written as 1 - 2 sin(x/2)**2: m (cos 2q - 1) shows its sign as -2 m sin(q)**2."""
+    cosines = expr.atoms(sp.cos)
+    if not cosines:
+        return expr
+    return sp.expand(expr.xreplace({c: 1 - 2 * sp.sin(c.args[0] / 2) ** 2 for c in cosines}))
+
+
 def _sign(condition: _Condition, positive) -> int | None:
-    for form in (condition.raw, condition.presented):
+    for form in (condition.raw, condition.presented, _pythagorean(sp.expand(condition.raw))):
         sign = known_sign(form, positive)
         if sign is not None:
             return sign
     return None
+
+
+def _condition(presenter: _Presenter, expr) -> _Condition:
+    return _Condition(*_forms(presenter, expr))
 
 
 def _forms(presenter: _Presenter, expr) -> tuple:
@@ -148,37 +179,58 @@ def _proves(slack_forms, positive, strict_premise: bool, strict_conclusion: bool
     return False
 
 
-def _implied(premises: list[_Condition], conclusion: _Condition, presenter) -> bool:
-    """A sum of some premises is below the conclusion by a known non-negative amount."""
-    positive = presenter.positive_expressions
-    for size in range(1, len(premises) + 1):
+def _implied(premises: list[_Condition], conclusion: _Condition, presenter, max_size=None) -> bool:
+    """A sum of some premises (at most ``max_size`` of them) is below the conclusion by a known
+    non-negative amount."""
+    for size in range(1, min(len(premises), max_size or len(premises)) + 1):
         for chosen in itertools.combinations(premises, size):
             raw = conclusion.raw - sp.Add(*[p.raw for p in chosen])
-            forms = (normalize(raw), presenter.present(raw))
-            if _proves(forms, positive, any(p.strict for p in chosen), conclusion.strict):
+            key = ("proves", raw, any(p.strict for p in chosen), conclusion.strict)
+            if _cached(presenter, key, _proves_slack, raw, presenter, *key[2:]):
                 return True
     return False
 
 
-def _infeasible(conditions: list[_Condition], presenter) -> bool:
-    """Some of the conditions add up to a quantity known to be <= 0 (< 0 when none is strict)."""
-    positive = presenter.positive_expressions
-    for size in range(1, len(conditions) + 1):
+def _proves_slack(raw, presenter, strict_premise: bool, strict_conclusion: bool) -> bool:
+    forms = (normalize(raw), presenter.present(raw))
+    return _proves(forms, presenter.positive_expressions, strict_premise, strict_conclusion)
+
+
+def _cached(presenter, key, compute, *args):
+    """Sums of conditions recur across sign cases: decide each once per presenter."""
+    cache = presenter.__dict__.setdefault("_cache", {})
+    if key not in cache:
+        cache[key] = compute(*args)
+    return cache[key]
+
+
+def _infeasible(conditions: list[_Condition], presenter, max_size=None) -> bool:
+    """Some of the conditions (at most ``max_size``) add up to a quantity known to be <= 0 (< 0 when
+    none is strict). A sufficient test: False does not prove the conditions compatible."""
+    for size in range(1, min(len(conditions), max_size or len(conditions)) + 1):
         for chosen in itertools.combinations(conditions, size):
             total = sp.Add(*[c.raw for c in chosen])
-            for form in (normalize(total), presenter.present(total)):
-                value = _stand_in(form, positive)
-                if value.is_negative or (any(c.strict for c in chosen) and value.is_nonpositive):
-                    return True
+            key = ("nonpositive", total, any(c.strict for c in chosen))
+            if _cached(presenter, key, _known_nonpositive, total, key[2], presenter):
+                return True
     return False
 
 
-def _drop_implied(conditions: list[_Condition], keep: list[_Condition], presenter) -> list[_Condition]:
+def _known_nonpositive(total, strict: bool, presenter) -> bool:
+    """total < 0 is known (total <= 0 when some condition is strict)."""
+    for form in (normalize(total), presenter.present(total), _half_angles(sp.expand(total))):
+        value = _stand_in(form, presenter.positive_expressions)
+        if value.is_negative or (strict and value.is_nonpositive):
+            return True
+    return False
+
+
+def _drop_implied(conditions: list[_Condition], keep: list[_Condition], presenter, max_size=None) -> list[_Condition]:
     """Remove conditions implied by the others (``keep`` conditions stay and serve as premises)."""
     kept = list(conditions)
     for condition in conditions:
         others = [c for c in kept if c is not condition] + list(keep)
-        if _implied(others, condition, presenter):
+        if _implied(others, condition, presenter, max_size):
             kept.remove(condition)
     return kept
 
@@ -289,7 +341,7 @@ def _closed_conjuncts(conditions, equalities, presenter) -> frozenset:
     parts = []
     for c in conditions:
         rel = sp.Gt(c.raw, 0) if c.strict else sp.Ge(c.raw, 0)
-        parts.extend(sp.And.make_args(closed_form(rel, presenter)))
+        parts.extend(sp.And.make_args(_cached(presenter, ("closed", rel), closed_form, rel, presenter)))
     for e in equalities:
         parts.extend(sp.And.make_args(closed_form(e, presenter)))
     parts = [_tidy(p, positive) for p in parts if p != sp.true]
@@ -383,6 +435,8 @@ def _slope_classes(signs: tuple[int, ...]) -> str:
     if all(s < 0 for s in signs):
         return "unique unstable"
     changes = sum(1 for a, b in zip(signs, signs[1:]) if a != b)
+    if changes >= 4:
+        return "undecided"  # e.g. +-+-+: five roots need the two minima below both maxima
     start = 0 if signs[0] != signs[-1] else 1
     return _count_name(tuple(range(start, changes + 2, 2)))
 
@@ -413,8 +467,11 @@ def corner_cases(scene) -> list[CountCase]:
     """
     if scene.k != 1:
         raise ContactsymError(f"corner_cases is for one contact; scene '{scene.name}' has k = {scene.k}.")
-    if scene.fixed_signs:
-        raise ContactsymError("equilibrium counts for a unilateral contact with k = 1 are not implemented.")
+    if not _uses_corners(scene):
+        raise ContactsymError(
+            f"scene '{scene.name}' has a unilateral contact: its counts (lift-off included) come from "
+            "count_regions (contactsym.orthants), not from corner cases."
+        )
     return list(scene._stage("corner cases", lambda: tuple(_corner_cases(scene))))
 
 
@@ -485,58 +542,45 @@ def _k1_regions(scene) -> dict[str, sp.Basic]:
     return {name: _boolean(_merge_or(ds, tuple(scene.positive_expressions))) for name, ds in by_name.items()}
 
 
-# --- k >= 2: orthant determinants -----------------------------------------------------------
+# --- orthant maps (k >= 2, unilateral contacts): see contactsym.orthants ---------------------
+
+#: Sums of at most this many conditions are tried when pruning orthant determinants (display only:
+#: a sign case kept by mistake is empty, never mislabelled).
+_QUICK = 2
 
 
-def _check_fan(scene) -> None:
-    """The pieces must be the orthants of k affine switching functions, f affine on each."""
-    fast = scene.fast_subsystem()
-    if len(fast.switching) != scene.k:
-        raise ContactsymError(
-            f"scene '{scene.name}' has {len(fast.switching)} switching functions for k = {scene.k} contacts; "
-            "the orthant rule needs one per contact."
-        )
-    linear = sp.Matrix([[sp.diff(normalize(s), x) for x in fast.u] for s in fast.switching])
-    if any(e.has(*fast.u) for e in linear) or sp.expand(linear.det(method="berkowitz")) == 0:
-        raise ContactsymError(f"the switching functions {list(fast.switching)} are not independent affine functions.")
+class _Tools:
+    """The exact condition tools above, bound to a scene's count presentation."""
+
+    def __init__(self, scene):
+        self.presenter = _Presenter(scene)
+        self.positive = self.presenter.positive_expressions
+
+    def condition(self, expr) -> _Condition:
+        return _cached(self.presenter, ("condition", expr), _condition, self.presenter, expr)
+
+    def sign(self, condition: _Condition) -> int | None:
+        return _sign(condition, self.positive)
+
+    sign_choices = staticmethod(_sign_choices)
+    boolean = staticmethod(_boolean)
+
+    def infeasible(self, conditions, quick: bool = False) -> bool:
+        return _infeasible(conditions, self.presenter, _QUICK if quick else None)
+
+    def drop_implied(self, conditions, quick: bool = False):
+        return _drop_implied(conditions, [], self.presenter, _QUICK if quick else None)
+
+    def closed(self, conditions) -> frozenset:
+        return _closed_conjuncts(conditions, [], self.presenter)
+
+    def merge(self, disjuncts):
+        return _merge_or(disjuncts, self.positive)
 
 
-def _orthant_class(negative: set, patterns: list) -> str:
-    if not negative or len(negative) == len(patterns):
-        return "unique"
-    full = len(patterns) == 4 and len(patterns[0]) == 2
-    if full and len(negative) == 2:
-        a, b = negative
-        if sum(x != y for x, y in zip(a, b)) == 1:
-            return "two or none"
-    if full and len(negative) in (1, 3):
-        return "one or three"
-    return "undecided"
-
-
-def _orthant_regions(scene) -> dict[str, sp.Basic]:
-    _check_fan(scene)
-    presenter = _Presenter(scene)
-    positive = presenter.positive_expressions
-    u = scene.fast_subsystem().u
-    patterns = scene.sign_patterns()
-    determinants = []
-    for pattern in patterns:
-        lin = scene.linearization(signs=pattern)
-        if any(a.has(*u) for a in lin.A):
-            raise ContactsymError(f"A depends on {u} on the piece {pattern}: counts need a piecewise-linear f.")
-        determinants.append(_Condition(*_forms(presenter, lin.det_A)))
-    known = [_sign(d, positive) for d in determinants]
-    open_ = [i for i, s in enumerate(known) if s is None]
-    disjuncts: dict[str, list[frozenset]] = {}
-    for signs in _sign_choices(known, open_):
-        conditions = [_Condition(*_forms(presenter, signs[i] * determinants[i].raw)) for i in open_]
-        if _infeasible(conditions, presenter):
-            continue
-        name = _orthant_class({p for p, s in zip(patterns, signs) if s < 0}, patterns)
-        kept = _drop_implied(conditions, [], presenter)
-        disjuncts.setdefault(name, []).append(_closed_conjuncts(kept, [], presenter))
-    return {name: _boolean(_merge_or(ds, positive)) for name, ds in disjuncts.items()}
+def _uses_corners(scene) -> bool:
+    """k = 1 with bilateral contact: the corner cases (any number of corners)."""
+    return scene.k == 1 and not scene.contacts[0].unilateral
 
 
 def count_regions(scene) -> dict[str, Region]:
@@ -566,7 +610,7 @@ def count_regions(scene) -> dict[str, Region]:
     >>> count_regions(cs.scene("brake"))
     {'unique': Region(unique: True)}
     """
-    raw = _k1_regions(scene) if scene.k == 1 else _orthant_regions(scene)
+    raw = _k1_regions(scene) if _uses_corners(scene) else orthant_regions(scene, _Tools(scene))
     regions = {}
     for name, condition in raw.items():
         if condition == sp.false:

@@ -608,11 +608,28 @@ def _regions_section(scene, named: _Named) -> str:
     if counts:
         text.append(r"\subsection*{Number of equilibria}")
         for name, region in counts.items():
-            text.append(f"\\paragraph{{{_escape(name.capitalize())}.}}")
+            text.append(
+                f"\\paragraph{{{_escape(name.capitalize())}.}} " + _escape(region.description.split(": ", 1)[-1])
+            )
             text.append(_display(Formula(name, "", region.condition, "", _count_tag(scene, name), ""), named))
     elif note:
         text.append(r"\paragraph{Number of equilibria.} " + _escape(note))
+    text += _one_sided_section(scene, named)
     return "\n".join(text)
+
+
+def _one_sided_section(scene, named: _Named) -> list[str]:
+    """The one-sided Painleve cases of a unilateral contact (k = 1), with lift-off."""
+    if scene.k != 1 or not scene.contacts[0].unilateral:
+        return []
+    from .one_sided import one_sided_cases
+
+    text = [r"\subsection*{One-sided contact: consistent, inconsistent, indeterminate}"]
+    for case in one_sided_cases(scene):
+        found = ", ".join(f"{kind} ({'stable' if stable else 'unstable'})" for kind, stable in case.equilibria)
+        text.append(f"\\paragraph{{{_escape(case.name.capitalize())}.}} " + _escape(found or "no equilibrium"))
+        text.append(_display(Formula(case.name, "", case.region.condition, "", (), ""), named))
+    return text
 
 
 def _special_cases(scene, named: _Named) -> list[str]:
@@ -955,7 +972,10 @@ class FigureSource:
             if hasattr(plotting, "scene_figures"):
                 directory = self.workdir / scene.name
                 directory.mkdir(parents=True, exist_ok=True)
-                return _paths(plotting.scene_figures(scene, directory), directory), []
+                figures = dict(plotting.scene_figures(scene, directory))
+                own = getattr(scene, "report_figures", None)  # a scene's own figures: {caption: PNG path}
+                figures.update(own(directory) if own is not None else {})
+                return _paths(figures, directory), []
             if not hasattr(plotting, "paper_figures"):
                 return [], ["No figures: contactsym.plotting has no paper_figures function in this version."]
             if self._paper is None:

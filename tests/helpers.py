@@ -38,3 +38,22 @@ def same(a, b) -> bool:
     if isinstance(difference, sp.MatrixBase):
         return difference.is_zero_matrix
     return difference == 0
+
+
+_VARIANTS: dict = {}
+
+
+def variant(name: str):
+    """A built-in scene, or a variant that a scene module builds by keyword (built once)."""
+    import contactsym as cs
+    from contactsym.scenes import painleve_rod, two_leg_block
+
+    builders = {
+        "painleve-rod-bilateral": lambda: painleve_rod.build(unilateral=False),
+        "two-leg-block-unilateral": lambda: two_leg_block.build(unilateral=True),
+    }
+    if name not in builders:
+        return cs.scene(name)
+    if name not in _VARIANTS:
+        _VARIANTS[name] = builders[name]()
+    return _VARIANTS[name]

@@ -120,6 +120,8 @@ def test_report_all_scenes_writes_tex_json_figures_and_summary(capfd, tmp_path):
         data = json.loads((directory / "conditions.json").read_text())
         assert data["scene"] == name
         assert set(data["regions"]) >= {"stable for every law", "unstable for every law", "Hopf line"}
+        if name == "two-leg-block":  # the region is a fold (degree 0), not a cusp
+            assert set(data["equilibrium_counts"]) == {"unique", "two or none"}
         assert f"{name}: " in out  # the summary names each scene
         assert f"] {name}: " in err  # progress on stderr
     total = len(cs.scene_names())

@@ -11,7 +11,15 @@ from sympy.physics.mechanics import Lagrangian, Particle, Point, ReferenceFrame,
 import contactsym as cs
 from contactsym.errors import ContactsymError, SceneError, SignPatternError
 
-NAMES = ["sliding-point", "painleve-klein-rod", "painleve-klein-guides", "brake", "double-pendulum-tip"]
+NAMES = [
+    "sliding-point",
+    "painleve-klein-rod",
+    "painleve-klein-guides",
+    "brake",
+    "double-pendulum-tip",
+    "painleve-rod",
+    "two-leg-block",
+]
 
 x, y, z = dynamicsymbols("x y z")
 t = dynamicsymbols._t

@@ -15,6 +15,8 @@ _MODULES = {
     "painleve-klein-guides": "painleve_klein_guides",
     "brake": "brake",
     "double-pendulum-tip": "double_pendulum_tip",
+    "painleve-rod": "painleve_rod",
+    "two-leg-block": "two_leg_block",
 }
 
 #: The scene that ``contactsym`` shows when no scene is named.
@@ -29,7 +31,7 @@ def scene_names() -> list[str]:
     Examples
     --------
     >>> scene_names()
-    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake', 'double-pendulum-tip']
+    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake', 'double-pendulum-tip', 'painleve-rod', 'two-leg-block']
     """
     return list(_MODULES)
 
@@ -44,7 +46,7 @@ def scene(name: str):
     >>> scene("break")
     Traceback (most recent call last):
     ...
-    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, double-pendulum-tip.
+    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, double-pendulum-tip, painleve-rod, two-leg-block.
     """
     name = scene_name(name)
     if name not in _MODULES:
