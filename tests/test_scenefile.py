@@ -58,8 +58,8 @@ def test_example_files_give_the_built_in_results_exactly(name):
 def test_readme_walkthrough_file_is_the_example_and_shows_painleves_bound():
     readme = (EXAMPLES.parent / "README.md").read_text()
     block = readme.split("## Your own system in a file", 1)[1].split("```toml\n", 1)[1].split("```", 1)[0]
-    assert block == (EXAMPLES / "painleve-rod.toml").read_text()
-    scene = read_scene(block, "painleve-rod.toml")
+    assert block == (EXAMPLES / "leaning-rod.toml").read_text()
+    scene = read_scene(block, "leaning-rod.toml")
     stable = scene.regions()["stable for every law"].condition
     mu, theta = sp.Symbol("mu", positive=True), sp.Symbol("theta", real=True)
     # Painleve's bound 1 + 3 cos^2 - 3 mu sin cos > 0, by a second route: sampled both ways
