@@ -77,24 +77,24 @@ def _monomial_denominator(expr: sp.Expr) -> bool:
     return all(base.is_Symbol or base.is_Number for base in sp.fraction(expr)[1].as_powers_dict())
 
 
-def contact_accelerations(scene, u) -> list[sp.Expr]:
-    """f(u) = b + G u + H phi(u) from the scene's contact space, frozen on the manifold.
+def contact_accelerations(scene, u, *, load: bool) -> list[sp.Expr]:
+    """The parts of f(u) = b + G u + H phi(u) from the scene's contact space, on the manifold:
+    the load b (``load=True``) or the reaction part G u + H phi(u).
 
     G = W^T M^-1 W (Delassus), H = W^T M^-1 D (friction), b = W^T M^-1 F + h with h_j the
-    part of g_j'' without accelerations; see :mod:`contactsym.mechanics`.
+    part of g_j'' without accelerations; see :mod:`contactsym.mechanics`. The linearization
+    needs only the reaction part, so a large load is never derived for it.
     """
     from .mechanics import solve_fraction_free
 
-    space, freeze = scene.contact_space, scene.freeze
+    space = scene.contact_space
     log.info(
-        "scene '%s': contact space, adj(M) of the %d x %d mass matrix and the %d x %d Delassus matrix",
+        "scene '%s': contact space (%s), adj(M) of the %d x %d mass matrix",
         scene.name,
+        "load b" if load else f"{scene.k} x {scene.k} Delassus matrix",
         space.M.rows,
         space.M.rows,
-        scene.k,
-        scene.k,
     )
-    to_u = dict(zip(scene.reactions, u))
     # positions are put on the manifold by substitution, rates inside the field (they are rational)
     rate_symbols = {scene.frozen_symbols[sp.diff(q, t)] for q in scene.coordinates}
     rates = {k: v for k, v in scene.manifold.items() if k in rate_symbols}
@@ -103,19 +103,17 @@ def contact_accelerations(scene, u) -> list[sp.Expr]:
     def place(expr):
         return scene._plain(expr).subs(positions)
 
-    second = {sp.diff(q, t, 2): 0 for q in scene.coordinates}
-    h = sp.Matrix([place(sp.diff(g, t, 2).subs(second)) for g in scene.gaps])
+    M, W = space.M.applyfunc(place), space.W.applyfunc(place)
+    if load:
+        second = {sp.diff(q, t, 2): 0 for q in scene.coordinates}
+        h = sp.Matrix([place(sp.diff(g, t, 2).subs(second)) for g in scene.gaps])
+        (b,) = solve_fraction_free(M, [space.F.applyfunc(place)], W, substitution=rates, offsets=[h])
+        return b
     frozen = [term for term in space.friction if term is not None]
-    loads = [space.F] + [space.W[:, j] for j in range(scene.k)] + [term[0] for term in frozen]
-    W = space.W.applyfunc(place)
-    columns = solve_fraction_free(
-        space.M.applyfunc(place),
-        [load.applyfunc(place) for load in loads],
-        W,
-        substitution=rates,
-        offsets=[h] + [None] * (len(loads) - 1),
-    )
-    multipliers = [sp.S.One, *u] + [freeze(term[1]).subs(to_u) for term in frozen]
+    loads = [space.W[:, j] for j in range(scene.k)] + [term[0] for term in frozen]
+    columns = solve_fraction_free(M, [x.applyfunc(place) for x in loads], W)
+    to_u = dict(zip(scene.reactions, u))
+    multipliers = [*u] + [scene.freeze(term[1]).subs(to_u) for term in frozen]
     return [sp.Add(*[c[i] * w for c, w in zip(columns, multipliers)]) for i in range(scene.k)]
 
 
@@ -172,7 +170,8 @@ class FastSubsystem:
         to_u = dict(zip(self.scene.reactions, self.u))
         if self.scene.contact_space is not None:
             # b + G u + H phi(u) with canonical coefficients: one fraction only when that stays small
-            structured = contact_accelerations(self.scene, self.u)
+            load = contact_accelerations(self.scene, self.u, load=True)
+            structured = [b + r for b, r in zip(load, self._reaction_part)]
             compact = all(_monomial_denominator(c) for fj in structured for c in sp.Add.make_args(fj))
             f = sp.Matrix([normalize(fj) if compact else fj for fj in structured])
         else:
@@ -203,8 +202,20 @@ class FastSubsystem:
         return sp.Matrix(du + list(self.f))
 
     @cached_property
+    def _reaction_part(self) -> list | None:
+        """G u + H phi(u) of a Lagrangian scene (see :func:`contact_accelerations`), else None."""
+        if self.scene.contact_space is None:
+            return None
+        return contact_accelerations(self.scene, self.u, load=False)
+
+    @cached_property
+    def _depends_on_u(self) -> sp.Matrix:
+        """The terms of f that depend on u: all of f, or its reaction part when that is known."""
+        return self.f if self._reaction_part is None else sp.Matrix(self._reaction_part)
+
+    @cached_property
     def switching(self) -> tuple[sp.Expr, ...]:
-        return switching_functions(self.f, self.u)
+        return switching_functions(self._depends_on_u, self.u)
 
     @cached_property
     def constant_laws(self) -> bool:
@@ -214,6 +225,11 @@ class FastSubsystem:
     def piece(self, signs) -> sp.Matrix:
         """f on the piece of a sign pattern (numbers or symbols)."""
         return self.f.applyfunc(lambda e: on_piece(e, self.switching, signs, self.u))
+
+    def jacobian(self, signs) -> sp.Matrix:
+        """df/du on the piece of a sign pattern, from the terms of f that depend on u."""
+        piece = self._depends_on_u.applyfunc(lambda e: on_piece(e, self.switching, signs, self.u))
+        return piece.jacobian(self.u)
 
     @cached_property
     def equations(self) -> list[sp.Eq]:

@@ -117,7 +117,7 @@ class Linearization:
 
     @cached_property
     def A(self) -> sp.Matrix:
-        return self.f.jacobian(self.fast.u).applyfunc(normalize)
+        return self.fast.jacobian(self.sign_values).applyfunc(normalize)
 
     @cached_property
     def det_A(self) -> sp.Expr:
