@@ -56,7 +56,7 @@ def _notes(o: dict | None, n: dict | None, ours_limit: float, naive_limit: float
 
 
 def run(quick: bool, out_dir) -> list[dict]:
-    ours_limit, naive_limit = (300.0, 60.0) if quick else (900.0, 600.0)
+    ours_limit, naive_limit = (300.0, 20.0) if quick else (900.0, 600.0)
     cases = [(f"chain n={n}", f"chain-{n}", n) for n in range(1, 7)]
     cases += [("stepladder", "stepladder", 4), ("brake", "brake", 3), ("guides", "painleve-klein-guides", 3)]
     records, rows = [], []
