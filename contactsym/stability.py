@@ -22,16 +22,26 @@ from __future__ import annotations
 import logging
 from dataclasses import dataclass
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import sympy as sp
 
 from .algebra import normalize
 from .errors import SingularJacobianError
 from .hurwitz import Hurwitz
-from .robustness import Robustness, decide
-from .robustness import regions as robustness_regions
+
+if TYPE_CHECKING:
+    from .robustness import Robustness
 
 __all__ = ["Stability"]
+
+
+def robustness_regions(A: sp.Matrix) -> dict:
+    """:func:`contactsym.robustness.regions`, imported when first needed (k >= 3): it brings
+    scipy.optimize, a second of import time that scenes with k <= 2 never pay."""
+    from .robustness import regions
+
+    return regions(A)
 
 
 def _gt(expr) -> sp.Basic:
@@ -129,6 +139,8 @@ class Stability:
         """The point decision of :func:`contactsym.robustness.decide` for a numeric A (k >= 3), else None."""
         if self.k < 3 or self.A.free_symbols or self.linearization.det_A == 0:
             return None
+        from .robustness import decide  # see robustness_regions: imported for k >= 3 only
+
         return decide(self.A)
 
     @cached_property
