@@ -49,7 +49,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.polys.fields import FracField
 
-from .algebra import SignSymbol, known_sign
+from .algebra import SignSymbol, known_sign, reduce_signs, reduce_trig
 from .parse import sympy_only
 
 __all__ = ["canonical", "Fraction", "TrigField", "to_fraction"]
@@ -421,4 +421,20 @@ def canonical(expr: sp.Expr) -> sp.Expr:
     expr = sympy_only(expr, "the expression")
     if expr.is_Number or expr.is_Symbol:
         return expr
+    if _laurent_in_plain_angles(expr):
+        # a polynomial over monomial denominators in sin q, cos q of plain angles: expanding and
+        # reducing term by term gives the same normal form, without building a fraction field
+        return reduce_signs(reduce_trig(sp.expand(expr)))
     return to_fraction(expr).as_expr()
+
+
+def _laurent_in_plain_angles(expr: sp.Expr) -> bool:
+    """No denominator but powers of generators, and sin/cos only of plain angles."""
+    for node in sp.preorder_traversal(expr):
+        if node.is_Pow and node.exp.is_negative and (node.base.is_Add or node.base.is_Mul):
+            return False
+        if isinstance(node, (sp.sin, sp.cos)) and not _is_angle(node.args[0]):
+            return False
+        if node.is_Pow and not node.exp.is_Integer:
+            return False
+    return True
