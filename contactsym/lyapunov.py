@@ -235,3 +235,80 @@ def multilinear(derivatives: sp.MutableDenseNDimArray | list, order: int):
         return sp.Matrix(rows)
 
     return form
+
+
+# --- the fast subsystem (2.1) in (u, v) -------------------------------------------------
+
+
+def _derivative_name(base: sp.Symbol, counts: tuple[int, int]) -> sp.Symbol:
+    """Phi_1 with (2, 1) -> Phi_1_uuv: the derivative of a generic law at the equilibrium."""
+    return sp.Symbol(f"{base.name}_{'u' * counts[0]}{'v' * counts[1]}", real=True)
+
+
+def _law_function(fast, j: int, which: str) -> sp.Expr:
+    return sp.Function(f"{which}{j}")(fast.u[j], fast.v[j])
+
+
+def fast_first_lyapunov(stability, at: dict | None = None) -> sp.Expr | None:
+    """l1 of (2.1) at its equilibrium on the Hopf set, symbolically (None without a Hopf set).
+
+    The field ``u_j' = Phi_j(u_j, v_j) v_j + Psi_j(u_j, v_j) f_j(u)``, ``v_j' = f_j(u)`` is
+    differentiated with Phi_j, Psi_j and f_j as functions; at the equilibrium f_j = 0, the
+    derivatives of f come from the piece and those of the law from the law. A generic law
+    (1.5) contributes symbols: ``Phi_1_u`` is dPhi_1/du_1 and ``Psi_2_uv`` is
+    d^2 Psi_2/du_2 dv_2 at (u*, 0). The eigenvectors come from the block form (4.5)
+    (:func:`hopf_vectors_45`); the normalization is ``<q, q> = 1`` in (u, v).
+
+    ``at`` is substituted before the linear algebra (a slice of parameter space, the
+    Hopf line solved for one parameter): the result is then far shorter. Its keys may be
+    the parameters and the derivative symbols.
+    """
+    lin = stability.linearization
+    fast, k = lin.fast, stability.k
+    if stability.hopf_frequency is None:
+        return None
+    given = dict(at or {})
+    at = {**dict.fromkeys(fast.v, 0), **lin.u_star}
+    omega = sp.sqrt(sp.factor(stability.poly.omega_squared.subs(given))) if given else stability.hopf_frequency
+    F = [sp.Function(f"f{j}")(*fast.u) for j in range(k)]
+    Phi = [_law_function(fast, j, "Phi") for j in range(k)]
+    Psi = [_law_function(fast, j, "Psi") for j in range(k)]
+    state = list(fast.u) + list(fast.v)
+    rhs = [Phi[j] * fast.v[j] + Psi[j] * F[j] for j in range(k)] + F
+    law_values = {**dict(zip(Phi, lin.Phi)), **dict(zip(Psi, lin.Psi)), **dict.fromkeys(F, 0)}
+    pieces = lin.f
+
+    def at_equilibrium(expr: sp.Expr) -> sp.Expr:
+        replace = {}
+        for d in expr.atoms(sp.Derivative):
+            function, variables = d.expr, [x for x, n in d.variable_count for _ in range(n)]
+            if function in F:
+                actual = pieces[F.index(function)]
+            else:
+                j = (Phi + Psi).index(function) % k
+                generic = (fast.Phi if function in Phi else fast.Psi)[j]
+                if isinstance(stability.linearization.scene.contacts[j].compliance, _generic_law()):
+                    counts = (variables.count(fast.u[j]), variables.count(fast.v[j]))
+                    replace[d] = _derivative_name(generic, counts)
+                    continue
+                actual = generic
+            replace[d] = sp.diff(actual, *variables).subs(at)
+        return expr.xreplace(replace).xreplace(law_values).subs(at).subs(given)
+
+    n = 2 * k
+    first = [[sp.diff(r, x) for x in state] for r in rhs]
+    H = [[[at_equilibrium(sp.diff(first[i][a], state[b])) for b in range(n)] for a in range(n)] for i in range(n)]
+    T = [
+        [[[at_equilibrium(sp.diff(first[i][a], state[b], state[c])) for c in range(n)] for b in range(n)] for a in range(n)]
+        for i in range(n)
+    ]
+    A = lin.A.subs(at).subs(given)
+    Phi_star, Psi_star = ([sp.sympify(x).subs(given) for x in values] for values in (lin.Phi, lin.Psi))
+    q, p = hopf_vectors_45(A, Phi_star, Psi_star, omega)
+    return lyapunov_symbolic(lin.matrix.subs(at).subs(given), multilinear(H, 2), multilinear(T, 3), omega, q, p)
+
+
+def _generic_law():
+    from .laws import Generic
+
+    return Generic
