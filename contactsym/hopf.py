@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
@@ -31,7 +31,6 @@ from .numerics import (
     _cached,
     _in_domain,
     _contact_law,
-    _invert_law,
     _laws_key,
     _Values,
     lambdify_cse,
@@ -57,8 +56,13 @@ class HopfCoefficient:
         a jump to a large cycle, hysteresis) or 'degenerate' (l1 = 0 to rounding).
     u_star : ndarray
         The equilibrium reactions.
-    reaction_shape : ndarray
-        ``2 |dN_j . q|``: the reaction amplitudes per unit radius |z| of the normal form.
+    reaction_vector : ndarray
+        ``dN_j . q``, the reactions' part of the critical eigenvector; ``2 |dN_j . q|`` are the
+        reaction amplitudes per unit radius |z| of the normal form.
+    vectors : HopfVectors
+        l1, c1, q and p in the state (Q_1..Q_k, V_1..V_k).
+    state : ndarray
+        The equilibrium (Q*, 0).
     parameter, value, dalpha : optional
         The bifurcation parameter, its value on the line and d Re(lambda)/d parameter there
         (from :func:`hopf_point`).
@@ -68,12 +72,12 @@ class HopfCoefficient:
     omega: float
     direction: str
     u_star: np.ndarray
-    reaction_shape: np.ndarray
+    reaction_vector: np.ndarray
     vectors: HopfVectors
+    state: np.ndarray
     parameter: object = None
     value: float | None = None
     dalpha: float | None = None
-    extra: dict = field(default_factory=dict)
 
     def amplitude(self, value: float) -> np.ndarray | None:
         """Predicted reaction amplitudes (half peak-to-peak) of the small cycle at ``parameter = value``.
@@ -85,7 +89,12 @@ class HopfCoefficient:
         if self.dalpha is None:
             raise HopfError("amplitude(value) needs the bifurcation parameter: compute the point with hopf_point().")
         radius = self.vectors.radius(self.dalpha * (value - self.value))
-        return None if radius is None else radius * self.reaction_shape
+        return None if radius is None else 2 * radius * np.abs(self.reaction_vector)
+
+    def cycle_start(self, value: float, factor: float = 1.0) -> np.ndarray | None:
+        """A state on the predicted cycle at ``parameter = value`` (radius times ``factor``)."""
+        radius = self.vectors.radius(self.dalpha * (value - self.value))
+        return None if radius is None else self.state + 2 * factor * radius * self.vectors.q.real
 
     def in_time(self, eps: float) -> dict:
         """The cycle's frequency and period in tau and in the physical time t = eps tau."""
@@ -140,8 +149,12 @@ def _field(scene, signs: tuple, laws, functions: dict) -> dict:
         return {
             "params": params,
             "tensors": lambdify_cse(args, [J.tolist(), H, T, dN]),
-            "N_rest": [lambdify_cse([Q[j], *params], _inside(scene, j, laws, N[j], Q[j], V[j]).subs(V[j], 0)) for j in range(k)],
-            "N_QV": [lambdify_cse([Q[j], *params], [N[j].diff(x).subs(V[j], 0) for x in (Q[j], V[j])]) for j in range(k)],
+            "N_rest": [
+                lambdify_cse([Q[j], *params], _inside(scene, j, laws, N[j], Q[j], V[j]).subs(V[j], 0)) for j in range(k)
+            ],
+            "N_QV": [
+                lambdify_cse([Q[j], *params], [N[j].diff(x).subs(V[j], 0) for x in (Q[j], V[j])]) for j in range(k)
+            ],
             "k": k,
         }
 
@@ -155,30 +168,48 @@ def _parameter_values(data: dict, vals: _Values) -> list[float]:
     return [float(vals.numbers[p]) for p in data["params"]]
 
 
-def _monotone_check(data: dict, j: int, Q_star: float, u_star: float, params: list[float]) -> None:
-    """(1.5) at the equilibrium: N_Q < 0 and N_V < 0 there, else name where the law is monotone."""
-    N_Q, N_V = (float(x) for x in data["N_QV"][j](Q_star, *params))
-    if N_Q < 0 and N_V < 0:
-        return
-    if N_V >= 0:
-        raise ComplianceError(f"contact {j + 1}: dN/dq' = {N_V:g} >= 0 at the equilibrium N = {u_star:g}: no damping.")
-    grid = np.linspace(-1, 1, 4001) * 10 * (abs(Q_star) + 1)
-    slope = np.array([float(data["N_QV"][j](x, *params)[0]) for x in grid])
-    N = np.array([float(data["N_rest"][j](x, *params)) for x in grid])
-    inside = slope < 0
-    pieces, start = [], None
-    for i, ok in enumerate(np.append(inside, False)):
-        if ok and start is None:
-            start = i
-        if not ok and start is not None:
-            pieces.append(f"N in ({N[i - 1]:.4g}, {N[start]:.4g}) (Q in ({grid[start]:.4g}, {grid[i - 1]:.4g}))")
-            start = None
-    where = "; ".join(pieces) or "nowhere on the sampled range"
-    raise ComplianceError(
-        f"contact {j + 1}: the law is not monotone at the equilibrium N = {u_star:g} (Q = {Q_star:.4g}, "
-        f"eps^2 dN/dq = {N_Q:g} >= 0), so (1.5) fails there; it is monotone for {where}. "
-        "Choose loads that keep the reaction inside that interval, or a law monotone there."
-    )
+def _invert_on_branch(data: dict, j: int, target: float, params: list[float]) -> float:
+    """Q with N_j(Q, 0) = target on the monotone branch through Q = 0, walking out from 0.
+
+    Raises ComplianceError naming the interval of N that branch covers when the law stops
+    decreasing (or leaves its domain) before it reaches the target."""
+    from scipy.optimize import brentq
+
+    def N(x):
+        return float(data["N_rest"][j](x, *params))
+
+    direction = -1.0 if target > N(0.0) else 1.0
+    step, here, value = 1e-3 * (abs(target) + 1.0), 0.0, N(0.0)
+    for _ in range(400):
+        there = here + direction * step
+        new = N(there)
+        if (target - value) * (target - new) <= 0:
+            return float(brentq(lambda x: N(x) - target, min(here, there), max(here, there), xtol=1e-15, rtol=1e-15))
+
+        def slope(x):
+            return float(data["N_QV"][j](x, *params)[0])
+
+        if not (slope(there) < 0 and (new - value) * direction < 0):
+            if slope(there) >= 0 > slope(here):  # the exact turning point: the end of the monotone branch
+                here = brentq(slope, min(here, there), max(here, there), xtol=1e-14)
+                value = N(here)
+            low, high = sorted((N(0.0), value))
+            raise ComplianceError(
+                f"contact {j + 1}: the law is not monotone where it is used: along Q = q/eps^2 from 0 it stops "
+                f"decreasing at Q = {here:.4g}, so it covers only N in [{low:.4g}, {high:.4g}] there, and the "
+                f"equilibrium needs N = {target:.4g}; (1.5) fails. Choose loads inside that interval or a law "
+                "monotone up to that load."
+            )
+        here, value, step = there, new, step * 1.5
+    raise ComplianceError(f"contact {j + 1}: the law does not reach N = {target:g}; it is bounded.")
+
+
+def _check_damping(data: dict, j: int, Q_star: float, u_star: float, params: list[float]) -> None:
+    N_V = float(data["N_QV"][j](Q_star, *params)[1])
+    if not N_V < 0:
+        raise ComplianceError(
+            f"contact {j + 1}: eps dN/dq' = {N_V:g} >= 0 at the equilibrium N = {u_star:g}; (1.5) needs damping."
+        )
 
 
 def _at_point(scene, vals: _Values, laws, signs):
@@ -188,13 +219,12 @@ def _at_point(scene, vals: _Values, laws, signs):
     u_star = np.array([float(substitute(u, vals)) for u in branch.u_star])
     Q_star = []
     for j in range(scene.k):
-        N_rest = data["N_rest"][j]
-        Q_j = _invert_law(lambda x, f=N_rest: float(f(x, *params)), u_star[j], abs(u_star[j]) + 1.0)
-        _monotone_check(data, j, Q_j, u_star[j], params)
+        Q_j = _invert_on_branch(data, j, u_star[j], params)
+        _check_damping(data, j, Q_j, u_star[j], params)
         Q_star.append(Q_j)
     z = [*Q_star, *([0.0] * scene.k)]
     J, H, T, dN = (np.asarray(x, dtype=float) for x in data["tensors"](*z, *params))
-    return u_star, J, H, T, dN
+    return u_star, J, H, T, dN, np.array(z)
 
 
 def first_lyapunov(
@@ -216,16 +246,16 @@ def first_lyapunov(
     contactsym.errors.HopfError: the point is off the Hopf set: the critical eigenvalues are -0.0723968 +- 1.61232 i, so Re(lambda)/omega = -0.0449 (tolerance 1e-06); l1 is defined where Re(lambda) = 0: move the point onto the line (e.g. with contactsym.numerics.hopf_point).
     """
     vals = numeric_values(scene, values)
-    u_star, J, H, T, dN = _at_point(scene, vals, laws, signs)
+    u_star, J, H, T, dN, z = _at_point(scene, vals, laws, signs)
     vectors = lyapunov_numeric(J, H, T, tol=tol)
-    return _coefficient(vectors, u_star, dN)
+    return _coefficient(vectors, u_star, dN, state=z)
 
 
-def _coefficient(vectors: HopfVectors, u_star, dN, **extra) -> HopfCoefficient:
+def _coefficient(vectors: HopfVectors, u_star, dN, state, **extra) -> HopfCoefficient:
     scale = np.max(np.abs(vectors.c1)) if vectors.c1 else 0.0
     degenerate = abs(vectors.c1.real) <= 1e-10 * max(scale, vectors.omega * np.max(np.abs(vectors.q)) ** 2)
     direction = "degenerate" if degenerate else ("supercritical" if vectors.l1 < 0 else "subcritical")
-    return HopfCoefficient(vectors.l1, vectors.omega, direction, u_star, 2 * np.abs(dN @ vectors.q), vectors, **extra)
+    return HopfCoefficient(vectors.l1, vectors.omega, direction, u_star, dN @ vectors.q, vectors, state, **extra)
 
 
 def hopf_point(
@@ -274,9 +304,9 @@ def hopf_point(
     h = 1e-6 * max(abs(p_star), 1e-8)
     slope = (alpha(p_star + h) - alpha(p_star - h)) / (2 * h)
     point = _Values({**vals.numbers, key: sp.Float(p_star)}, vals.functions)
-    u_star, J, H, T, dN = _at_point(scene, point, laws, signs)
+    u_star, J, H, T, dN, z = _at_point(scene, point, laws, signs)
     vectors = lyapunov_numeric(J, H, T, tol=1e-6)
-    return _coefficient(vectors, u_star, dN, parameter=key, value=p_star, dalpha=slope)
+    return _coefficient(vectors, u_star, dN, state=z, parameter=key, value=p_star, dalpha=slope)
 
 
 def _widen(alpha, start: float) -> tuple[float, float]:

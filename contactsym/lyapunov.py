@@ -296,12 +296,16 @@ def fast_first_lyapunov(stability, at: dict | None = None) -> sp.Expr | None:
         return expr.xreplace(replace).xreplace(law_values).subs(at).subs(given)
 
     n = 2 * k
-    first = [[sp.diff(r, x) for x in state] for r in rhs]
-    H = [[[at_equilibrium(sp.diff(first[i][a], state[b])) for b in range(n)] for a in range(n)] for i in range(n)]
-    T = [
-        [[[at_equilibrium(sp.diff(first[i][a], state[b], state[c])) for c in range(n)] for b in range(n)] for a in range(n)]
-        for i in range(n)
-    ]
+    memo: dict = {}
+
+    def derivative(i: int, *index: int) -> sp.Expr:  # symmetric in index: each sorted tuple once
+        key = (i, *sorted(index))
+        if key not in memo:
+            memo[key] = at_equilibrium(sp.diff(rhs[i], *[state[a] for a in key[1:]]))
+        return memo[key]
+
+    H = [[[derivative(i, a, b) for b in range(n)] for a in range(n)] for i in range(n)]
+    T = [[[[derivative(i, a, b, c) for c in range(n)] for b in range(n)] for a in range(n)] for i in range(n)]
     A = lin.A.subs(at).subs(given)
     Phi_star, Psi_star = ([sp.sympify(x).subs(given) for x in values] for values in (lin.Phi, lin.Psi))
     q, p = hopf_vectors_45(A, Phi_star, Psi_star, omega)

@@ -2566,3 +2566,20 @@ def fast_trajectories_data(
         "equilibria": points,
         "title": system.description,
     }
+
+
+# --- the Hopf bifurcation of the fast subsystem (contactsym.hopf) -------------------------
+
+
+def first_lyapunov(scene, values: Mapping, **options):
+    """l1 of the fast subsystem at a point on its Hopf set; see :func:`contactsym.hopf.first_lyapunov`."""
+    from .hopf import first_lyapunov as compute
+
+    return compute(scene, values, **options)
+
+
+def hopf_point(scene, values: Mapping, parameter, **options):
+    """The Hopf crossing along ``parameter`` and l1 there; see :func:`contactsym.hopf.hopf_point`."""
+    from .hopf import hopf_point as compute
+
+    return compute(scene, values, parameter, **options)
