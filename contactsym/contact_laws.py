@@ -30,6 +30,12 @@ __all__ = ["CubicStiffening", "Hertz", "HuntCrossley", "KelvinVoigt", "with_laws
 
 _q, _qd = sp.symbols("q qdot", real=True)
 _eps = sp.Symbol("epsilon", positive=True)
+_HERTZ = sp.Rational(3, 2)  # the exponent of Hertz contact between smooth bodies
+
+
+def _positive(value, name: str) -> sp.Expr:
+    """A positive parameter; a float is taken as the exact rational it is, so sign checks stay exact."""
+    return _require_positive(sp.Rational(value) if isinstance(value, float) else value, name)
 
 
 def _exponent(n) -> sp.Expr:
@@ -60,9 +66,9 @@ class Hertz(Law):
     (-3*k**(2/3)*(d*v + u)**(1/3)/2, -d)
     """
 
-    def __init__(self, stiffness=1, damping=1, exponent=sp.Rational(3, 2)):
-        self.stiffness = _require_positive(stiffness, "stiffness")
-        self.damping = _require_positive(damping, "damping")
+    def __init__(self, stiffness=1, damping=1, exponent=_HERTZ):
+        self.stiffness = _positive(stiffness, "stiffness")
+        self.damping = _positive(damping, "damping")
         self.exponent = _exponent(exponent)
         n = self.exponent
         expr = self.stiffness * (-_q) ** n / _eps ** (2 * n) - self.damping * _qd / _eps
@@ -88,9 +94,9 @@ class HuntCrossley(Law):
     [-3*k**(2/3)*u**(1/3)/2, -c*u]
     """
 
-    def __init__(self, stiffness=1, damping=1, exponent=sp.Rational(3, 2)):
-        self.stiffness = _require_positive(stiffness, "stiffness")
-        self.damping = _require_positive(damping, "damping")
+    def __init__(self, stiffness=1, damping=1, exponent=_HERTZ):
+        self.stiffness = _positive(stiffness, "stiffness")
+        self.damping = _positive(damping, "damping")
         self.exponent = _exponent(exponent)
         k, c, n = self.stiffness, self.damping, self.exponent
         expr = k * (-_q) ** n * (1 - c * _qd / _eps) / _eps ** (2 * n)
@@ -115,9 +121,9 @@ class CubicStiffening(Law):
     """
 
     def __init__(self, stiffness=1, cubic=1, damping=1):
-        self.stiffness = _require_positive(stiffness, "stiffness")
-        self.cubic = _require_positive(cubic, "cubic stiffness")
-        self.damping = _require_positive(damping, "damping")
+        self.stiffness = _positive(stiffness, "stiffness")
+        self.cubic = _positive(cubic, "cubic stiffness")
+        self.damping = _positive(damping, "damping")
         Q = _q / _eps**2
         expr = -self.stiffness * Q - self.cubic * Q**3 - self.damping * _qd / _eps
         super().__init__(expr, _q, _qd, _eps)

@@ -24,13 +24,13 @@ import sympy as sp
 
 from .errors import ComplianceError, HopfError
 from .laws import Generic, KelvinVoigt, Law
-from .lyapunov import HopfVectors, critical_pair, lyapunov_numeric
+from .lyapunov import HopfVectors, lyapunov_numeric
 from .numerics import (
     NumericsError,
     _branch_at,
     _cached,
-    _in_domain,
     _contact_law,
+    _in_domain,
     _laws_key,
     _Values,
     lambdify_cse,
@@ -239,11 +239,11 @@ def first_lyapunov(
     --------
     >>> import contactsym as cs
     >>> from contactsym.contact_laws import Hertz
-    >>> values = {"m": 1, "mu": 1, "alpha": 1.5707963267948966, "F_x": 2, "F_y": -4}
+    >>> values = {"m": 1, "mu": 1.2, "alpha": 1.5707963267948966, "F_x": 0, "F_y": -4}
     >>> first_lyapunov(cs.scene("brake"), values, laws={0: Hertz(), 1: Hertz()})
     Traceback (most recent call last):
     ...
-    contactsym.errors.HopfError: the point is off the Hopf set: the critical eigenvalues are -0.0723968 +- 1.61232 i, so Re(lambda)/omega = -0.0449 (tolerance 1e-06); l1 is defined where Re(lambda) = 0: move the point onto the line (e.g. with contactsym.numerics.hopf_point).
+    contactsym.errors.HopfError: the point is off the Hopf set: the critical eigenvalues are 0.033063 +- 2.08966 i, so Re(lambda)/omega = 0.0158 (tolerance 1e-06); l1 is defined where Re(lambda) = 0: move the point onto the line (e.g. with contactsym.numerics.hopf_point).
     """
     vals = numeric_values(scene, values)
     u_star, J, H, T, dN, z = _at_point(scene, vals, laws, signs)
@@ -276,10 +276,10 @@ def hopf_point(
     --------
     >>> import contactsym as cs
     >>> from contactsym.contact_laws import Hertz
-    >>> values = {"m": 1, "mu": 1, "alpha": 1.5707963267948966, "F_x": 2, "F_y": -4}
+    >>> values = {"m": 1, "mu": 1, "alpha": 1.5707963267948966, "F_x": 0, "F_y": -4}
     >>> h = hopf_point(cs.scene("brake"), values, "mu", laws={0: Hertz(), 1: Hertz()})
     >>> h.direction, round(h.value, 6)
-    ('supercritical', 1.480932)
+    ('supercritical', 1.074858)
     """
     from scipy.optimize import brentq
 
