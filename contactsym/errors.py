@@ -21,3 +21,7 @@ class SingularJacobianError(ContactsymError):
 
 class SignPatternError(ContactsymError):
     """A sign pattern has the wrong length or values other than +1 and -1."""
+
+
+class HopfError(ContactsymError):
+    """A Hopf question asked where it has no answer: off the Hopf set, or no oscillatory pair."""

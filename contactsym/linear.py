@@ -19,6 +19,7 @@ import sympy as sp
 
 from .algebra import normalize, sign_symbols
 from .canonical import to_fraction
+from .errors import ContactsymError
 
 __all__ = ["lam", "charpoly", "principal_minors", "Linearization"]
 
@@ -78,7 +79,8 @@ class Linearization:
     A : Matrix
         (4.3) ``df_i/du_j``; for nonlinear f it depends on u = u*, the equilibrium.
     Phi, Psi : tuple
-        The law's values at the equilibrium (v = 0).
+        The law's values at the equilibrium: v = 0 and, for a law that depends on u and
+        a piece with one equilibrium, u = u*.
     matrix : Matrix
         (4.5) ``[[Psi A, Phi], [A, 0]]``.
     charpoly : Poly
@@ -123,8 +125,23 @@ class Linearization:
     def det_A(self) -> sp.Expr:
         return normalize(self.A.det(method="berkowitz"))
 
+    @cached_property
+    def u_star(self) -> dict:
+        """{u_j: u_j*} when this piece has exactly one equilibrium, else {} (Phi, Psi stay in u)."""
+        from .equilibria import Equilibria
+
+        if self.fast.constant_laws:
+            return {}
+        try:
+            branches = Equilibria(self.scene, tuple(self.sign_values)).branches
+        except ContactsymError:
+            return {}
+        return dict(zip(self.fast.u, branches[0].u_star)) if len(branches) == 1 else {}
+
     def _at_equilibrium(self, values) -> tuple:
-        return tuple(sp.sympify(x).subs(dict.fromkeys(self.fast.v, 0)) for x in values)
+        """The law's values at the equilibrium: v = 0 and, for a law that depends on u, u = u*."""
+        at = {**dict.fromkeys(self.fast.v, 0), **self.u_star}
+        return tuple(sp.sympify(x).subs(at) for x in values)
 
     @cached_property
     def Phi(self) -> tuple:

@@ -55,7 +55,7 @@ from scipy.integrate import solve_ivp
 from . import validate
 from .errors import ContactsymError
 from .intervals import interval_sign
-from .laws import Compliance, Generic, KelvinVoigt, Law
+from .laws import Compliance, Generic, ImplicitDeformation, KelvinVoigt, Law
 from .parse import sympy_only
 from .progress import Budget, Progress
 from .scene import t as _time
@@ -166,7 +166,7 @@ def _scene_symbols(scene) -> dict[str, sp.Basic]:
         if isinstance(law, KelvinVoigt):
             exprs += [law.stiffness, law.damping]
         elif isinstance(law, Law):
-            exprs.append(law.expr.xreplace({law.q: 0, law.qdot: 0, law.eps: 1}))
+            exprs.append(sp.Tuple(*(law.expr.free_symbols - {law.q, law.qdot, law.eps})))
     names: dict[str, sp.Basic] = {}
     for expr in exprs:
         expr = sp.sympify(expr)
@@ -538,7 +538,8 @@ def _law_in_gap(scene, j, law, vals: _Values, eps: float, g: sp.Expr, gd: sp.Exp
     if isinstance(law, KelvinVoigt):
         return substitute(-law.stiffness * g / e**2 - law.damping * gd / e, vals)
     if isinstance(law, Law):
-        return substitute(law.expr.xreplace({law.q: g, law.qdot: gd, law.eps: e}), vals)
+        at = {law.q: g, law.qdot: gd, law.eps: e}
+        return substitute(_in_domain(law.expr.xreplace(at), [w.xreplace(at) for w in law.where]), vals)
     raise NumericsError(f"unsupported compliance law {law!r}; use Generic, KelvinVoigt or Law.")
 
 
@@ -550,8 +551,18 @@ def _law_scaled(scene, j, law, vals: _Values, Q: sp.Symbol, V: sp.Symbol) -> sp.
     if isinstance(law, KelvinVoigt):
         return substitute(-law.stiffness * Q - law.damping * V, vals)
     if isinstance(law, Law):
-        return substitute(law.scaled.xreplace({law.Q: Q, law.V: V}), vals)
+        at = {law.Q: Q, law.V: V}
+        return substitute(_in_domain(law.scaled.xreplace(at), [w.xreplace(at) for w in law.domain]), vals)
     raise NumericsError(f"unsupported compliance law {law!r}; use Generic, KelvinVoigt or Law.")
+
+
+def _in_domain(N: sp.Expr, conditions) -> sp.Expr:
+    """A law defined only where its conditions are positive (Hertz: in compression) gives N = 0 elsewhere."""
+    if not conditions:
+        return N
+    # NumPy evaluates both branches: keep fractional powers real where the law is not used
+    real = {p: sp.Pow(sp.Max(p.base, 0), p.exp) for p in N.atoms(sp.Pow) if not p.exp.is_integer}
+    return sp.Piecewise((N.xreplace(real), sp.And(*[sp.Gt(w, 0) for w in conditions])), (0, True))
 
 
 def _clamps(scene, unilateral) -> list[bool]:
@@ -744,7 +755,8 @@ def _fast_form(scene, unilateral, form) -> str:
         if form not in ("uv", "deformation"):
             raise NumericsError(f"form = {form!r}; use 'uv' (the paper's (2.1)) or 'deformation' (Q, V).")
         return form
-    return "deformation" if any(_clamps(scene, unilateral)) else "uv"
+    implicit = any(x.atoms(ImplicitDeformation) for x in scene.fast_subsystem().Phi + scene.fast_subsystem().Psi)
+    return "deformation" if implicit or any(_clamps(scene, unilateral)) else "uv"
 
 
 def fast_system(
@@ -785,6 +797,11 @@ def _build_fast(scene, vals: _Values, laws, unilateral, form: str) -> OdeSystem:
                 phi, psi = _generic_phi_psi(scene, j, vals)
             else:
                 phi, psi = law.phi_psi(fast.u[j], fast.v[j], None if scene.k == 1 else j + 1)
+            if sp.Tuple(phi, psi).atoms(ImplicitDeformation):
+                raise NumericsError(
+                    f"the law {law!r} of contact {j + 1} has no closed-form inverse Q(u, v), so (2.1) cannot be "
+                    "integrated in (u, v); use form='deformation' (the same system in Q, V)."
+                )
             Phi.append(substitute(phi, vals))
             Psi.append(substitute(psi, vals))
         rhs = [Phi[j] * fast.v[j] + Psi[j] * f[j] for j in range(scene.k)] + f
@@ -2628,3 +2645,20 @@ def fast_trajectories_data(
         "equilibria": points,
         "title": system.description,
     }
+
+
+# --- the Hopf bifurcation of the fast subsystem (contactsym.hopf) -------------------------
+
+
+def first_lyapunov(scene, values: Mapping, **options):
+    """l1 of the fast subsystem at a point on its Hopf set; see :func:`contactsym.hopf.first_lyapunov`."""
+    from .hopf import first_lyapunov as compute
+
+    return compute(scene, values, **options)
+
+
+def hopf_point(scene, values: Mapping, parameter, **options):
+    """The Hopf crossing along ``parameter`` and l1 there; see :func:`contactsym.hopf.hopf_point`."""
+    from .hopf import hopf_point as compute
+
+    return compute(scene, values, parameter, **options)

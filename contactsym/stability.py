@@ -164,6 +164,20 @@ class Stability:
             return None
         return sp.sqrt(self.poly.omega_squared)
 
+    @cached_property
+    def first_lyapunov(self) -> sp.Expr | None:
+        """The first Lyapunov coefficient l1 of (2.1) at the equilibrium, valid on the Hopf set.
+
+        l1 < 0: supercritical (a small stable cycle past the line, amplitude ~ sqrt(distance));
+        l1 > 0: subcritical (a jump and hysteresis). Normalization ``<q, q> = <p, q> = 1`` in
+        (u, v); only the sign is invariant. A generic law contributes its derivatives at
+        (u*, 0) as symbols (``Phi_1_u`` = dPhi_1/du_1, ...). None where there is no Hopf set.
+        See :mod:`contactsym.lyapunov`.
+        """
+        from .lyapunov import fast_first_lyapunov
+
+        return fast_first_lyapunov(self)
+
     # --- k = 1: Propositions 3, 4, 5 ------------------------------------------------
 
     @cached_property
