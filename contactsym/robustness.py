@@ -328,7 +328,7 @@ def decide(A, laws: int = 300, seed: int = 0) -> Robustness:
         statement = None if certificate else positivstellensatz_certificate(lp, coefficients)
         if statement:
             certificate = Certificate("unstable", "Positivstellensatz", statement)
-        elif certificate is None and k <= 3:  # (P8); for k = 4 the degree-4 program is too large
+        elif certificate is None and k <= 3:  # (P8); for k = 4 degrees 2-3 certified no benchmark point
             others = [g for (kind, order), g in zip(lp.labels, conditions) if kind == "p" and order != 2 * k - 1]
             statement = damped_positivstellensatz_certificate(lp, others)
             if statement:
