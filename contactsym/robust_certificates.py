@@ -1,4 +1,4 @@
-"""Certificates and witness-law searches for :mod:`contactsym.robustness` (proofs P3-P7 there).
+"""Certificates and witness-law searches for :mod:`contactsym.robustness` (proofs P3-P8 there).
 
 Polynomials are ``QQ[c1..ck, d1..dk]`` ring elements from
 :class:`contactsym.law_polynomials.LawPolynomials`; every certificate found in floating
@@ -40,6 +40,7 @@ __all__ = [
     "weak_damping_laws",
     "generic_vertex_coefficients",
     "positivstellensatz_certificate",
+    "damped_positivstellensatz_certificate",
     "rational_law",
     "vertex_laws",
 ]
@@ -358,3 +359,19 @@ def _solve_and_check(lp, matrix, scale, products, monomials, margin, degree) -> 
     if used == 0 or any(v > 0 for v in total.values()):
         return None
     return f"a combination of {used} Liénard–Chipart conditions times monomials of degree <= {degree} has every coefficient <= 0"
+
+
+def damped_positivstellensatz_certificate(lp, conditions, degree: int = 4) -> str | None:
+    """(P8): P5 on the other conditions after d_i = u + sum_(j != i) (-a_jj / a_ii) d_j, when a_ii > 0 is the
+    only positive diagonal entry: u > 0 exactly when p_(2k-1) = sum a_jj d_j > 0 (u reuses the generator d_i)."""
+    diagonal = [lp.minors[(j,)] for j in range(lp.k)]
+    positive = [j for j, a in enumerate(diagonal) if a > 0]
+    if len(positive) != 1:
+        return None
+    i = positive[0]
+    d_i = lp.d[i] + sum((-diagonal[j] / diagonal[i]) * lp.d[j] for j in range(lp.k) if j != i)
+    substituted = [g.compose(lp.d[i], d_i) for g in conditions if g is not None]
+    statement = positivstellensatz_certificate(lp, substituted, degrees=(degree,))
+    if statement is None:
+        return None
+    return f"with d_{i + 1} = u + sum_j (-a_jj / a_{i + 1}{i + 1}) d_j (u > 0 exactly when p_{2 * lp.k - 1} > 0): {statement}"

@@ -58,6 +58,15 @@ lam^2 + mu s lam + mu = 0 with s = sum_j (d_j / c_j) y_j x_j / (y.x). A non-real
 real mu > 0 with some y_j x_j / (y.x) < 0 (d concentrated on that j makes s < 0), gives
 Re lam > 0 for D small: a candidate unstable law (each is then checked exactly).
 
+(P8) *Positivstellensatz on the damping cone.* If a_ii > 0 is the only positive diagonal
+entry, the laws with p_(2k-1) = sum_j a_jj d_j > 0 are exactly the images of the open
+orthant (c, u, d_j for j != i) under d_i = u + sum_(j != i) (-a_jj / a_ii) d_j
+(u = p_(2k-1) / a_ii; the coefficients -a_jj / a_ii are >= 0, so d_i > 0). A P5 certificate
+for the other conditions after this substitution says that no law has p_(2k-1) > 0 and
+all of them > 0: unstable for every law (P1). The substitution removes the boundary of the
+orthant where the plain certificate fails (the spectral abscissa of these points tends to
+0 only as d_i dominates every other entry of the law).
+
 Witness laws are confirmed twice: by the exact Liénard–Chipart signs in rationals and by
 the eigenvalues of (4.5) in floating point.
 
@@ -101,6 +110,7 @@ from .law_polynomials import LawPolynomials, fast_spectral_abscissa
 from .robust_certificates import (
     amgm_certificate,
     climbed_laws,
+    damped_positivstellensatz_certificate,
     fisher_fuller_laws,
     generic_vertex_coefficients,
     positivstellensatz_certificate,
@@ -318,6 +328,11 @@ def decide(A, laws: int = 300, seed: int = 0) -> Robustness:
         statement = None if certificate else positivstellensatz_certificate(lp, coefficients)
         if statement:
             certificate = Certificate("unstable", "Positivstellensatz", statement)
+        elif certificate is None and k <= 3:  # (P8); for k = 4 degrees 2-3 certified no benchmark point
+            others = [g for (kind, order), g in zip(lp.labels, conditions) if kind == "p" and order != 2 * k - 1]
+            statement = damped_positivstellensatz_certificate(lp, others)
+            if statement:
+                certificate = Certificate("unstable", "damped Positivstellensatz", statement)
         if certificate is not None:
             return Robustness("unstable", certificate, unstable_law=unstable_law)
     return Robustness("undecided", stable_law=stable_law, unstable_law=unstable_law)

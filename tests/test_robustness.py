@@ -20,7 +20,12 @@ from contactsym.errors import ContactsymError
 from contactsym.hurwitz import Hurwitz
 from contactsym.law_polynomials import LawPolynomials, fast_spectral_abscissa, law_ring
 from contactsym.linear import charpoly
-from contactsym.robust_certificates import amgm_certificate, positivstellensatz_certificate, vertex_laws
+from contactsym.robust_certificates import (
+    amgm_certificate,
+    damped_positivstellensatz_certificate,
+    positivstellensatz_certificate,
+    vertex_laws,
+)
 from contactsym.robustness import decide, nested_sequences, regions
 
 from .stool import h, mu, stool_scene
@@ -220,6 +225,24 @@ def test_positivstellensatz_certificate_is_exact():
     assert positivstellensatz_certificate(lp, p) is not None
     result = check_claims(A)
     assert result.verdict == "unstable" and result.certificate.kind == "Positivstellensatz"
+
+
+def test_damped_positivstellensatz_certificate_where_the_plain_one_fails():
+    """(P8): a_22 > 0 is the only positive diagonal entry; on the laws with p_5 > 0 some other p_s is <= 0."""
+    A = sp.Matrix([[-176, 53, 149], [-65, 55, -114], [-136, -200, -1]]) / 100
+    lp = LawPolynomials(A)
+    assert lp.minors[(0, 1, 2)] > 0 and not nested_sequences(lp.minors)
+    p = [g for (kind, _), g in zip(lp.labels, lp.conditions()) if kind == "p"]
+    assert positivstellensatz_certificate(lp, p) is None
+    assert damped_positivstellensatz_certificate(lp, p[1:]) is not None
+    result = check_claims(A)
+    assert result.verdict == "unstable" and result.certificate.kind == "damped Positivstellensatz"
+    # independently: sampled laws with p_5 > 0 have some p_s <= 0, s < 5 (floats, from the minors)
+    rng = np.random.default_rng(1)
+    law = 10.0 ** rng.uniform(-3, 3, (LAWS, 6))
+    values = np.array([sum(float(v) * np.prod(law**e, axis=1) for e, v in lp.p[s].items()) for s in range(6)]).T
+    assert (values[:, 5] > 0).any()
+    assert (values[values[:, 5] > 0, :5].min(axis=1) <= 1e-12 * np.abs(values).max()).all()
 
 
 def test_a_stable_law_without_a_nested_sequence():
