@@ -72,8 +72,31 @@ def _integer_combination(arg: sp.Expr) -> bool:
     return True
 
 
+_ROOTS: dict = {}  # (base, q) -> the symbol standing for base**(1/q)
+_ROOT_VALUES: dict = {}  # that symbol -> base**(1/q)
+
+
+def _root_symbol(base: sp.Expr, q: int) -> sp.Symbol:
+    if (base, q) not in _ROOTS:
+        symbol = sp.Dummy(f"root{len(_ROOTS)}")
+        _ROOTS[(base, q)], _ROOT_VALUES[symbol] = symbol, base ** sp.Rational(1, q)
+    return _ROOTS[(base, q)]
+
+
+def _roots_back(expr: sp.Expr) -> sp.Expr:
+    """Undo the root symbols of :func:`_expand_angles` (for presentation)."""
+    used = {s: _ROOT_VALUES[s] for s in expr.free_symbols if s in _ROOT_VALUES} if _ROOT_VALUES else {}
+    return expr.xreplace(used) if used else expr
+
+
 def _expand_angles(expr: sp.Expr) -> sp.Expr:
-    """sin/cos of integer combinations of angles as products of sin q_i, cos q_i."""
+    """sin/cos of integer combinations of angles as products of sin q_i, cos q_i; a power
+    base**(p/q) as r**p with one symbol r = base**(1/q), so that base**(1/3) and base**(2/3)
+    are powers of one generator."""
+    expr = expr.replace(
+        lambda e: e.is_Pow and e.exp.is_Rational and not e.exp.is_Integer,
+        lambda e: _root_symbol(e.base, int(e.exp.q)) ** int(e.exp.p),
+    )
     return expr.replace(
         lambda e: isinstance(e, (sp.sin, sp.cos)) and _integer_combination(e.args[0]),
         lambda e: sp.expand_trig(e),
@@ -109,15 +132,15 @@ class Fraction:
         """The presented expression (see the module docstring)."""
         monomial, rest = _split_monomial(self.denom)
         if rest == 1:
-            return sp.expand(self.numer.as_expr() / monomial.as_expr())
+            return _roots_back(sp.expand(self.numer.as_expr() / monomial.as_expr()))
         numer, scale_n = present_factor(self.numer, self.pairs)
         denom, scale_d = present_factor(rest, self.pairs)
-        return (scale_n / scale_d) * numer / (monomial.as_expr() * denom)
+        return (scale_n / scale_d) * numer / (_roots_back(monomial.as_expr()) * denom)
 
     def denominator_split(self) -> tuple[sp.Expr, object]:
         """(c * monomial, rest): the denominator is their product; rest = 1 for a monomial."""
         monomial, rest = _split_monomial(self.denom)
-        return monomial.as_expr(), rest
+        return _roots_back(monomial.as_expr()), rest
 
     def denominator_sign(self, positive=()) -> int | None:
         """The sign of the denominator when it follows from ``positive`` (expressions known
@@ -160,7 +183,7 @@ def present_factor(poly, pairs) -> tuple[sp.Expr, sp.Rational]:
     form = sp.expand(form / scale)
     if form.could_extract_minus_sign():
         form, scale = -form, -scale
-    return form, scale
+    return _roots_back(form), scale
 
 
 def _as_poly(expr: sp.Expr, ring, pairs, signs):
