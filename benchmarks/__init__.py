@@ -9,6 +9,26 @@ and writes its PNG plots to ``out_dir``.
 BENCHMARKS = ("classification", "region_evaluate", "work_precision", "derivation", "scaling", "atlas", "robustness", "counts", "hopf_direction")
 
 
+def fresh_process(module: str, *args: str, timeout: float) -> dict | None:
+    """Run ``python -m module args`` from the source tree; its last stdout line as JSON, or
+    None when it does not finish within ``timeout`` seconds (a cold run: empty caches)."""
+    import json
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    env = dict(os.environ)
+    env["PYTHONPATH"] = str(root) + os.pathsep + env.get("PYTHONPATH", "")
+    command = [sys.executable, "-m", module, *args]
+    try:
+        done = subprocess.run(command, cwd=root, env=env, capture_output=True, text=True, timeout=timeout, check=True)
+    except subprocess.TimeoutExpired:
+        return None
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
 def record(name, ours_s, baseline_s, error, n, notes) -> dict:
     """One JSON record; ratio = baseline_s / ours_s (how many times faster ours is)."""
     ratio = baseline_s / ours_s if ours_s and baseline_s is not None else None

@@ -16,13 +16,11 @@ map (``OrthantMap.count_set``).
 from __future__ import annotations
 
 import json
-import os
-import subprocess
 import sys
 import time
 from pathlib import Path
 
-from . import record
+from . import fresh_process, record
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES = ("painleve-klein-guides", "two-leg-block", "generic-k2", "generic-stool-k3")
@@ -82,21 +80,7 @@ def _build(target: str):
 
 
 def _worker(mode: str, target: str, timeout: float) -> dict | None:
-    env = dict(os.environ)
-    env["PYTHONPATH"] = str(ROOT) + os.pathsep + env.get("PYTHONPATH", "")
-    try:
-        done = subprocess.run(
-            [sys.executable, "-m", "benchmarks.counts", mode, target],
-            cwd=ROOT,
-            env=env,
-            capture_output=True,
-            text=True,
-            timeout=timeout,
-            check=True,
-        )
-    except subprocess.TimeoutExpired:
-        return None
-    return json.loads(done.stdout.strip().splitlines()[-1])
+    return fresh_process("benchmarks.counts", mode, target, timeout=timeout)
 
 
 def run(quick: bool, out_dir) -> list[dict]:

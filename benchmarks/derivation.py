@@ -12,34 +12,16 @@ The import of contactsym is excluded from both and reported in the notes.
 
 from __future__ import annotations
 
-import json
-import os
-import subprocess
-import sys
 from pathlib import Path
 
-from . import record
+from . import fresh_process, record
 
 ROOT = Path(__file__).resolve().parent.parent
 PAPER_SCENES = ("sliding-point", "painleve-klein-rod", "painleve-klein-guides", "brake")
 
 
 def _worker(mode: str, target: str, timeout: float, *extra: str) -> dict | None:
-    env = dict(os.environ)
-    env["PYTHONPATH"] = str(ROOT) + os.pathsep + env.get("PYTHONPATH", "")
-    try:
-        done = subprocess.run(
-            [sys.executable, "-m", "benchmarks._derive_worker", mode, target, *extra],
-            cwd=ROOT,
-            env=env,
-            capture_output=True,
-            text=True,
-            timeout=timeout,
-            check=True,
-        )
-    except subprocess.TimeoutExpired:
-        return None
-    return json.loads(done.stdout.strip().splitlines()[-1])
+    return fresh_process("benchmarks._derive_worker", mode, target, *extra, timeout=timeout)
 
 
 def run(quick: bool, out_dir) -> list[dict]:

@@ -12,34 +12,16 @@ conditions and robust classification, and the operation counts of f, A and the c
 
 from __future__ import annotations
 
-import json
-import os
-import subprocess
-import sys
 from pathlib import Path
 
-from . import record
+from . import fresh_process, record
 
 ROOT = Path(__file__).resolve().parent.parent
 TARGETS = {"chain n=6": 60.0, "chain n=3": 10.0, "stepladder": 30.0}
 
 
 def _worker(mode: str, target: str, timeout: float) -> dict | None:
-    env = dict(os.environ)
-    env["PYTHONPATH"] = str(ROOT) + os.pathsep + env.get("PYTHONPATH", "")
-    try:
-        done = subprocess.run(
-            [sys.executable, "-m", "benchmarks._scaling_worker", mode, target],
-            cwd=ROOT,
-            env=env,
-            capture_output=True,
-            text=True,
-            timeout=timeout,
-            check=True,
-        )
-    except subprocess.TimeoutExpired:
-        return None
-    return json.loads(done.stdout.strip().splitlines()[-1])
+    return fresh_process("benchmarks._scaling_worker", mode, target, timeout=timeout)
 
 
 def _notes(o: dict | None, n: dict | None, ours_limit: float, naive_limit: float) -> str:
