@@ -6,7 +6,17 @@ returning records ``{"name", "ours_s", "baseline_s", "ratio", "error", "n", "not
 and writes its PNG plots to ``out_dir``.
 """
 
-BENCHMARKS = ("classification", "region_evaluate", "work_precision", "derivation", "scaling", "atlas", "robustness", "counts")
+BENCHMARKS = (
+    "classification",
+    "region_evaluate",
+    "work_precision",
+    "derivation",
+    "scaling",
+    "atlas",
+    "robustness",
+    "counts",
+    "regions_k3",
+)
 
 
 def record(name, ours_s, baseline_s, error, n, notes) -> dict:
