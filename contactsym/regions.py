@@ -18,8 +18,8 @@ closed form: for q_i'' = sum_j a_ij N_j + b_i with k = 3, Delta_5 of the Hopf li
 operations unexpanded and 19390 terms expanded, and ``factor_list`` of its 306-term
 Delta_3 alone takes seconds (it is irreducible). Past :data:`RAW_OPS` operations a relation
 is kept exactly as derived (step 1 only: no expansion, no factoring); past
-:data:`FACTOR_TERMS` terms a numerator is kept unfactored (steps 3-6 still apply to it as a
-whole). Both only skip rewriting: the relation kept is the derived one or an equivalent
+:data:`FACTOR_TERMS` terms a numerator is kept unfactored and its sides are not regrouped by
+common factors (steps 3-6 still apply to it as a whole). Both only skip rewriting: the relation kept is the derived one or an equivalent
 multiple of it, so the region means the same; only its presentation is less reduced. The
 paper's scenes stay far below both limits (at most 986 operations, 130 terms).
 
@@ -114,7 +114,7 @@ def _arrange(expr: sp.Expr, op: type, positive) -> sp.Basic:
     rest = sp.Add(*[t for t, s in zip(terms, signs) if s is None])
     strict = op is sp.StrictGreaterThan
     less, greater = (sp.Lt, sp.Gt) if strict else (sp.Le, sp.Ge)
-    tidy = sp.factor_terms
+    tidy = sp.factor_terms if len(terms) <= FACTOR_TERMS else sp.Add  # gcd_terms costs seconds on big sums
     if rest == 0:
         return less(tidy(-negative_part), tidy(positive_part))
     if rest.could_extract_minus_sign():
