@@ -19,9 +19,10 @@ operations unexpanded and 19390 terms expanded, and ``factor_list`` of its 306-t
 Delta_3 alone takes seconds (it is irreducible). Past :data:`RAW_OPS` operations a relation
 is kept exactly as derived (step 1 only: no expansion, no factoring); past
 :data:`FACTOR_TERMS` terms a numerator is kept unfactored and its sides are not regrouped by
-common factors (steps 3-6 still apply to it as a whole). Both only skip rewriting: the relation kept is the derived one or an equivalent
-multiple of it, so the region means the same; only its presentation is less reduced. The
-paper's scenes stay far below both limits (at most 986 operations, 130 terms).
+common factors (steps 3-6 still apply to it as a whole). Both only skip rewriting: the
+relation kept is the derived one or an equivalent multiple of it, so the region means the
+same; only its presentation is less reduced. The built-in scenes stay far below both limits
+(at most 986 operations, 130 terms).
 
 A :class:`Region` wraps such a Boolean: ``&``, ``|``, ``~``, ``latex()``, vectorised
 ``evaluate``, exact ``contains`` and ``plot``.
