@@ -6,7 +6,18 @@ returning records ``{"name", "ours_s", "baseline_s", "ratio", "error", "n", "not
 and writes its PNG plots to ``out_dir``.
 """
 
-BENCHMARKS = ("classification", "region_evaluate", "work_precision", "derivation", "scaling", "atlas", "robustness", "counts", "hopf_direction")
+BENCHMARKS = (
+    "classification",
+    "region_evaluate",
+    "work_precision",
+    "derivation",
+    "scaling",
+    "atlas",
+    "robustness",
+    "counts",
+    "regions_k3",
+    "hopf_direction",
+)
 
 
 def fresh_process(module: str, *args: str, timeout: float) -> dict | None:

@@ -13,6 +13,17 @@
    ``a x + c`` in it (``mu <= |cot(alpha)|``);
 6. merge ``x < c`` and ``-x < c`` into ``|x| < c``.
 
+Size limits. A fully symbolic scene with k >= 3 has Hurwitz minors no reader can use in
+closed form: for q_i'' = sum_j a_ij N_j + b_i with k = 3, Delta_5 of the Hopf line is 2665
+operations unexpanded and 19390 terms expanded, and ``factor_list`` of its 306-term
+Delta_3 alone takes seconds (it is irreducible). Past :data:`RAW_OPS` operations a relation
+is kept exactly as derived (step 1 only: no expansion, no factoring); past
+:data:`FACTOR_TERMS` terms a numerator is kept unfactored and its sides are not regrouped by
+common factors (steps 3-6 still apply to it as a whole). Both only skip rewriting: the
+relation kept is the derived one or an equivalent multiple of it, so the region means the
+same; only its presentation is less reduced. The built-in scenes stay far below both limits
+(at most 986 operations, 130 terms).
+
 A :class:`Region` wraps such a Boolean: ``&``, ``|``, ``~``, ``latex()``, vectorised
 ``evaluate``, exact ``contains`` and ``plot``.
 """
@@ -33,6 +44,11 @@ from .latex import tex
 from .parse import sympy_only
 
 __all__ = ["Region", "closed_form", "known_sign"]
+
+#: Relations with more operations (unexpanded) are kept as derived: see the module docstring.
+RAW_OPS = 1500
+#: Numerators with more terms are not factored: see the module docstring.
+FACTOR_TERMS = 200
 
 _FLIP = {
     sp.StrictGreaterThan: sp.StrictLessThan,
@@ -58,7 +74,10 @@ def _drop_known_factors(expr: sp.Expr, op: type, positive) -> tuple[sp.Expr, typ
     sign = known_sign(denominator, positive)
     if sign is None:
         numerator, sign = sp.expand(numerator * denominator), 1
-    coefficient, factors = sp.factor_list(numerator)
+    if len(sp.Add.make_args(numerator)) > FACTOR_TERMS:  # factoring costs seconds and finds nothing readable
+        coefficient, factors = sp.S.One, [(numerator, 1)]
+    else:
+        coefficient, factors = sp.factor_list(numerator)
     sign *= 1 if coefficient > 0 else -1
     rest, nonzero = sp.S.One, []
     for base, power in factors:
@@ -96,7 +115,7 @@ def _arrange(expr: sp.Expr, op: type, positive) -> sp.Basic:
     rest = sp.Add(*[t for t, s in zip(terms, signs) if s is None])
     strict = op is sp.StrictGreaterThan
     less, greater = (sp.Lt, sp.Gt) if strict else (sp.Le, sp.Ge)
-    tidy = sp.factor_terms
+    tidy = sp.factor_terms if len(terms) <= FACTOR_TERMS else sp.Add  # gcd_terms costs seconds on big sums
     if rest == 0:
         return less(tidy(-negative_part), tidy(positive_part))
     if rest.could_extract_minus_sign():
@@ -262,6 +281,8 @@ def _reduce(condition, positive, solve_for):
         return condition
     if isinstance(condition, Relational):
         expr, op = _as_positive_relation(condition)
+        if sp.count_ops(expr) > RAW_OPS:  # too large to expand: kept as derived (module docstring)
+            return condition
         rest, op, nonzero = _drop_known_factors(normalize(expr), op, positive)
         arranged = _arrange(rest, op, positive)
         if solve_for is not None:
