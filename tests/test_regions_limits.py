@@ -4,20 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 import sympy as sp
-from sympy.physics.mechanics import dynamicsymbols
 
-import contactsym as cs
+from benchmarks._derive_worker import generic_scene
 from contactsym import regions
-
-
-def _generic_scene(k: int) -> cs.Scene:
-    """q_i'' = sum_j a_ij N_j + b_i with every a_ij symbolic."""
-    q = [dynamicsymbols(f"q_{i}") for i in range(1, k + 1)]
-    N = sp.symbols(f"N_1:{k + 1}", real=True)
-    a = sp.Matrix(k, k, lambda i, j: sp.Symbol(f"a_{i + 1}{j + 1}", real=True))
-    b = sp.symbols(f"b_1:{k + 1}", real=True)
-    G = [sum(a[i, j] * N[j] for j in range(k)) + b[i] for i in range(k)]
-    return cs.Scene.from_accelerations(q, G, [cs.Contact(coordinate=q[i], reaction=N[i]) for i in range(k)])
 
 
 def _samples(found: dict, n: int = 2000) -> dict:
@@ -28,10 +17,10 @@ def _samples(found: dict, n: int = 2000) -> dict:
 
 
 def test_limits_keep_every_region(monkeypatch):
-    reduced = _generic_scene(2).regions()
+    reduced = generic_scene(2).regions()
     monkeypatch.setattr(regions, "RAW_OPS", 20)
     monkeypatch.setattr(regions, "FACTOR_TERMS", 2)
-    limited = _generic_scene(2).regions()
+    limited = generic_scene(2).regions()
     assert set(limited) == set(reduced)
     assert any(str(limited[n].condition) != str(reduced[n].condition) for n in reduced)  # the limits did act
     values = _samples(reduced)
