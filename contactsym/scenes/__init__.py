@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from importlib import import_module
+
+import sympy as sp
 
 from ..errors import SceneError
 from ..validate import scene_name, shorten
 
-__all__ = ["scene", "scene_names", "paper_name", "DEFAULT_SCENE"]
+__all__ = ["scene", "scene_names", "paper_name", "paper_knowledge", "SpecialCase", "DEFAULT_SCENE"]
 
 _MODULES = {
     "sliding-point": "sliding_point",
@@ -77,3 +80,55 @@ def paper_name(scene) -> str | None:
     """
     name = getattr(scene, "name", None)
     return name if isinstance(name, str) and _built.get(name) is scene else None
+
+
+def paper_knowledge(scene, attribute: str, default=None):
+    """What the paper says about the built-in ``scene``: ``attribute`` of the scene's own module.
+
+    Scene knowledge (equation numbers, count presentation, figures with captions, special
+    cases) lives in ``scenes/<name>.py``. Output code asks for it here with the Scene object,
+    never with a name, so a user's scene gets ``default`` even when it shares a built-in name.
+
+    The attributes a scene module may define:
+
+    - ``EQUATIONS``: ``{formula key: (paper equation numbers, note)}``;
+    - ``COUNT_EQUATIONS``: ``((word in a count region's name, paper numbers), ...)``;
+    - ``figures(scene, directory, *, resolution, dpi)``: ``[(PNG path, LaTeX caption), ...]``;
+    - ``special_cases(scene)``: a list of :class:`SpecialCase`.
+
+    Examples
+    --------
+    >>> paper_knowledge(scene("brake"), "no such attribute", "none here")
+    'none here'
+    >>> from contactsym.scenefile import load_scene
+    >>> from pathlib import Path
+    >>> own = load_scene(Path(__file__).parents[2] / "examples" / "brake.toml")
+    >>> paper_knowledge(own, "special_cases") is None
+    True
+    """
+    name = paper_name(scene)
+    if name is None:
+        return default
+    return getattr(import_module(f".{_MODULES[name]}", __name__), attribute, default)
+
+
+@dataclass(frozen=True)
+class SpecialCase:
+    r"""One of the paper's special cases of a scene, derived from the scene's stages.
+
+    Printed as ``intro`` followed by the display ``lhs relation rhs`` tagged with ``paper``.
+
+    Examples
+    --------
+    >>> case = SpecialCase("With $x = 0$:", "special", "", "", sp.Symbol("y") > 0, ("6.4",))
+    >>> case.paper
+    ('6.4',)
+    """
+
+    intro: str  # LaTeX sentence before the formula
+    key: str
+    lhs: str  # LaTeX of the left side, "" for a condition standing alone
+    relation: str  # LaTeX of the relation, "" for a condition
+    rhs: sp.Basic
+    paper: tuple = ()
+    note: str = ""
