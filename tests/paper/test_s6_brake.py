@@ -53,35 +53,56 @@ def test_robust_stability_is_6_3_with_equality_allowed(a, mu_value, m_value):
 
 def test_6_3_boundary_mu_equal_cot_alpha_is_stable_for_every_sampled_law():
     rng = np.random.default_rng(63)
+    on_boundary = sp.lambdify(alpha, lin.A.subs({mu: sp.cot(alpha), m: 1}))
     for _ in range(300):
-        a = rng.uniform(0.1, 1.5)
-        A = np.array([[1, 1 / math.tan(a) * math.sin(a) - math.cos(a)], [-2 * math.cos(a), 1]])
+        A = on_boundary(rng.uniform(0.1, 1.5))
         Phi_values, Psi_values = -np.exp(rng.normal(0, 2, 2)), -np.exp(rng.normal(0, 2, 2))
         assert max_real_part(A, Phi_values, Psi_values) < 0
     values = {alpha: sp.pi / 3, mu: sp.cot(sp.pi / 3), m: 1}
     assert truth(stab.robustly_stable, values)  # mu = |cot alpha| is inside (4.4)
 
 
+# the paper's special case: identical pads (Phi_j = Phi, Psi_j = Psi) at a right angle
 right_angle = {alpha: sp.pi / 2, Phi1: Phi, Phi2: Phi, Psi1: Psi, Psi2: Psi}
+# printed (6.4), corrected as in erratum 13 (the print has m = 1): stable iff -m mu^2 Phi < Psi^2 (1 + mu^2)
+printed_6_4 = sp.Lt(-m * mu**2 * Phi, Psi**2 * (1 + mu**2))
+margin_6_4 = printed_6_4.rhs - printed_6_4.lhs
+hurwitz_at_right_angle = [sp.factor(c.subs(right_angle)) for c in stab.hurwitz]
+(hopf_equation,) = stab.hopf.atoms(sp.Eq)  # Delta_(n-1) = 0 of the Hopf set
+delta_at_right_angle = sp.factor((hopf_equation.lhs - hopf_equation.rhs).subs(right_angle))
+A_at_right_angle = sp.lambdify((mu, m), lin.A.subs(alpha, sp.pi / 2))
+derived_hurwitz = sp.lambdify((mu, m, Phi, Psi), hurwitz_at_right_angle)
+printed_margin = sp.lambdify((mu, m, Phi, Psi), margin_6_4)
 
 
 def test_hopf_condition_is_6_4_with_the_mass():
-    # Delta_3 = -4 Phi Psi^2 (1 + mu^2) (m mu^2 Phi + (1 + mu^2) Psi^2) / m^5: stable iff
-    # -m mu^2 Phi < Psi^2 (1 + mu^2); the print has m = 1.
-    delta3 = sp.factor(stab.hurwitz[-1].subs(right_angle))
-    assert same(delta3, -4 * Phi * Psi**2 * (1 + mu**2) * (m * mu**2 * Phi + (1 + mu**2) * Psi**2) / m**5)
-    for c in stab.hurwitz[:-1]:  # the first group of (4.7) holds for every law
-        assert sp.factor(c.subs(right_angle)).is_positive
+    # Delta_3 = -4 Phi Psi^2 (1 + mu^2) (m mu^2 Phi + (1 + mu^2) Psi^2) / m^5: a positive factor
+    # times the margin of the corrected (6.4), so the two conditions have the same sign everywhere
+    assert same(delta_at_right_angle, -4 * Phi * Psi**2 * (1 + mu**2) * (m * mu**2 * Phi + (1 + mu**2) * Psi**2) / m**5)
+    factor = sp.factor(delta_at_right_angle / margin_6_4)
+    assert factor.is_positive  # None if the margin did not divide Delta_3 exactly
+    assert same(sp.together(factor * margin_6_4 - delta_at_right_angle), 0)
+    assert delta_at_right_angle in hurwitz_at_right_angle
+    for c in hurwitz_at_right_angle:  # the others, the first group of (4.7), hold for every law
+        assert c == delta_at_right_angle or c.is_positive
+    # the Hopf set is the line where the margin of (6.4) vanishes
+    on_line = {Phi: sp.solve(margin_6_4, Phi)[0]}
+    assert same(sp.cancel(delta_at_right_angle.subs(on_line)), 0)
+    assert stab.hopf.subs(right_angle).subs(on_line).simplify() == sp.true
+    assert stab.hopf.subs(right_angle).subs(Phi, 2 * on_line[Phi]).simplify() == sp.false
 
 
 @settings(max_examples=200, deadline=None)
 @given(st.floats(0.05, 3), st.floats(0.1, 10), st.floats(-10, -0.01), st.floats(-10, -0.01))
 def test_6_4_agrees_with_eigenvalues(mu_value, m_value, phi_value, psi_value):
-    margin = psi_value**2 * (1 + mu_value**2) + m_value * mu_value**2 * phi_value
-    assume(abs(margin) > 1e-6 * (psi_value**2 * (1 + mu_value**2)))
-    A = np.array([[1, mu_value], [-mu_value, 1]]) / m_value
-    stable = max_real_part(A, [phi_value] * 2, [psi_value] * 2) < 0
-    assert stable == (margin > 0)
+    # eigenvalues of (4.5) built from the pipeline's own A, against the pipeline's Hurwitz
+    # conditions and the corrected print, both at the same random point
+    growth = max_real_part(A_at_right_angle(mu_value, m_value), [phi_value] * 2, [psi_value] * 2)
+    assume(abs(growth) > 1e-9)
+    derived = all(c > 0 for c in derived_hurwitz(mu_value, m_value, phi_value, psi_value))
+    printed = printed_margin(mu_value, m_value, phi_value, psi_value) > 0
+    assert derived == (growth < 0)
+    assert printed == derived
 
 
 def test_hopf_frequency_on_the_line_is_omega_over_m():
@@ -93,8 +114,7 @@ def test_hopf_frequency_on_the_line_is_omega_over_m():
     for _ in range(20):
         mu_v, m_v, psi_v = rng.uniform(0.2, 3), rng.uniform(0.2, 5), -rng.uniform(0.1, 5)
         phi_v = -(1 + mu_v**2) * psi_v**2 / (m_v * mu_v**2)
-        A = np.array([[1, mu_v], [-mu_v, 1]]) / m_v
-        eigenvalues = np.linalg.eigvals(fast_matrix(A, [phi_v] * 2, [psi_v] * 2))
+        eigenvalues = np.linalg.eigvals(fast_matrix(A_at_right_angle(mu_v, m_v), [phi_v] * 2, [psi_v] * 2))
         critical = eigenvalues[np.argmax(eigenvalues.real)]
         expected = -(1 + mu_v**2) * psi_v / (mu_v * m_v)
         assert abs(critical.real) < 1e-8 * expected
