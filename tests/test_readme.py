@@ -74,6 +74,19 @@ def test_python_examples_run():
     assert len(example_namespaces()) == len(fenced_blocks("python")) >= 4
 
 
+def test_report_command_writes_what_the_quick_start_says(tmp_path, monkeypatch, capsys):
+    # "writes a report for each built-in scene ... into `contactsym-report/<scene>/`: `report.tex`
+    # ...; `figures/*.png`; and `conditions.json`. It prints a short summary of the conditions."
+    folder = stated(r"into `([\w-]+)/<scene>/`: `report.tex`").group(1)
+    stated(r"`figures/\*.png`; and `conditions.json`. It prints a short summary of the conditions.")
+    monkeypatch.chdir(tmp_path)
+    assert command_line(["report", "sliding-point", "--no-pdf"]) == 0
+    written = tmp_path / folder / "sliding-point"
+    assert (written / "report.tex").is_file() and (written / "conditions.json").is_file()
+    assert list((written / "figures").glob("*.png"))
+    assert "stable for every law: True" in capsys.readouterr().out
+
+
 def test_built_in_scenes_are_the_ones_the_readme_names(capsys):
     # "the paper's four and three mechanisms beyond it"; the Use example names them all
     paper, beyond = stated(r"the paper's (\w+) and (\w+) mechanisms beyond it").groups()
