@@ -136,18 +136,20 @@ def test_equilibrium_branches_are_the_roots_of_f(values):
 
 
 def test_proposition_5_no_cycles_for_constant_laws():
-    # V = Phi v^2/2 - Pi(u), Pi' = f: along (3.1) V' = -Psi f^2 >= 0 (the print says V' < 0;
+    # V = Phi v^2/2 - Pi(u), Pi' = f: along the derived (3.1) V' = -Psi f^2 >= 0 (the print says V' < 0;
     # either way V is monotone and no cycle exists)
-    uu, vv = sp.symbols("uu vv", real=True)
-    Phi, Psi = sp.symbols("Phi Psi", negative=True)
-    f = sp.Function("f", real=True)(uu)
-    Pi = sp.Integral(f, uu)
-    V = Phi * vv**2 / 2 - Pi
-    rhs = (Phi * vv + Psi * f, f)
-    dV = sp.diff(V, uu) * rhs[0] + sp.diff(V, vv) * rhs[1]
+    assert rod.stability().no_cycles and fast.constant_laws
+    (v,), (f,), (Phi,), (Psi,) = fast.v, fast.f, fast.Phi, fast.Psi
+    V = Phi * v**2 / 2 - sp.Integral(f, u)
+    dV = sum(V.diff(x) * x_dot for x, x_dot in zip(fast.state, fast.rhs))
     assert same(dV, -Psi * f**2)
-    assert (-Psi * f**2).is_nonnegative
-    assert rod.stability().no_cycles
+    symbols = (phi, mu1, mu2, X1, X2, Y1, Y2, u, v, Phi, Psi)
+    rate, expected = sp.lambdify(symbols, dV.doit()), sp.lambdify(symbols, -Psi * f**2)
+    rng = np.random.default_rng(5)
+    for _ in range(200):  # the same at random points of the state and the parameters, and never negative
+        values = (rng.uniform(0.05, 1.5), *rng.uniform(0, 3, 2), *rng.normal(0, 3, 6), *-rng.exponential(2, 2))
+        assert rate(*values) >= 0
+        assert math.isclose(rate(*values), expected(*values), rel_tol=1e-9, abs_tol=1e-12)
 
 
 def test_cusp_three_roots_and_fold_none_occur():
