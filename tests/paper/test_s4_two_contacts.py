@@ -1,5 +1,7 @@
 """§4: two contacts. (4.5)-(4.10), Proposition 6 and Remarks 1-2."""
 
+import math
+
 import numpy as np
 import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
@@ -64,37 +66,32 @@ def test_4_8_derived_is_delta3_over_det_a():
 
 
 def test_printed_4_8_is_the_derived_form_with_phi_and_psi_swapped():
-    lhs, rhs = derived_4_8()
     printed_lhs, printed_rhs = printed_4_8()
-    assert same(printed_rhs - printed_lhs, (rhs - lhs).xreplace(swap))
-    assert not same(printed_rhs - printed_lhs, rhs - lhs)
+    derived = sp.cancel(scene.stability().hurwitz[-1] / D)  # the library's Delta_3 / det A
+    assert same(printed_rhs - printed_lhs, derived.xreplace(swap))
+    assert not same(printed_rhs - printed_lhs, derived)
 
 
 def test_printed_4_8_misjudges_stability_where_eigenvalues_decide():
+    symbols = (a11, a12, a21, a22, Phi1, Phi2, Psi1, Psi2)
+    coefficients_at = sp.lambdify(symbols, lin.charpoly.all_coeffs())
+    delta3_at = sp.lambdify(symbols, scene.stability().hurwitz[-1])
+    derived_at, printed_at = sp.lambdify(symbols, derived_4_8()), sp.lambdify(symbols, printed_4_8())
     rng = np.random.default_rng(4)
     disagreements = 0
     for _ in range(400):
         A = rng.normal(size=(2, 2))
         Phi, Psi = -np.exp(rng.normal(size=2) * 2), -np.exp(rng.normal(size=2) * 2)
-        values = {
-            a11: A[0, 0],
-            a12: A[0, 1],
-            a21: A[1, 0],
-            a22: A[1, 1],
-            Phi1: Phi[0],
-            Phi2: Phi[1],
-            Psi1: Psi[0],
-            Psi2: Psi[1],
-        }
-        coefficients = [float(c.subs(values)) for c in lin.charpoly.all_coeffs()]
-        if min(coefficients) <= 0:
+        values = (*A.flat, *Phi, *Psi)
+        if min(coefficients_at(*values)) <= 0:
             continue
         stable = max_real_part(A, Phi, Psi) < 0
-        lhs, rhs = (float(e.subs(values)) for e in derived_4_8())
-        printed_lhs, printed_rhs = (float(e.subs(values)) for e in printed_4_8())
+        lhs, rhs = derived_at(*values)
+        printed_lhs, printed_rhs = printed_at(*values)
         if abs(rhs - lhs) < 1e-9 * (abs(rhs) + abs(lhs)):
             continue
         assert (lhs < rhs) == stable  # the derived (4.8) is exact, given p_s > 0
+        assert (delta3_at(*values) > 0) == stable  # and so is the library's Delta_3
         disagreements += (printed_lhs < printed_rhs) != stable
     assert disagreements > 0
 
@@ -103,8 +100,25 @@ def test_4_9_to_4_10_reduces_to_a_square():
     # (4.9) derived: chi_1^2 a11 a22 < chi_4 (a11 Phi1^2 Psi2 + a22 Psi1 Phi2^2); its slack is
     # Psi1 Psi2 (a11 Phi1 - a22 Phi2)^2 >= 0, i.e. (4.10) holds with Phi (printed: Psi) and
     # equality where a11 Phi1 = a22 Phi2 (Remark 1 prints a11 Psi1 = a22 Phi2).
-    slack = chi[4] * (a11 * Phi1**2 * Psi2 + a22 * Psi1 * Phi2**2) - chi[1] ** 2 * a11 * a22
-    assert same(slack, Psi1 * Psi2 * (a11 * Phi1 - a22 * Phi2) ** 2)
+    # From the library: Delta_3 / det A is linear in det A (write a21 through it); (4.9) keeps its
+    # constant part on the right and puts det A = a11 a22 in chi_1^2 det A, chi_1 = p_1 / det A (4.6).
+    det = sp.Symbol("det_A")
+    per_det = sp.cancel(scene.stability().hurwitz[-1].subs(a21, (a11 * a22 - det) / a12) / det)
+    assert sp.degree(per_det, det) == 1
+    chi1 = sp.cancel(lin.charpoly.all_coeffs()[3] / D)
+    slack = per_det.subs(det, 0) - chi1**2 * a11 * a22
+    square = Psi1 * Psi2 * (a11 * Phi1 - a22 * Phi2) ** 2
+    assert same(slack, square)
+    dropped = per_det.coeff(det, 1) + chi1**2  # times det A: the term that (4.9) drops, "always positive"
+    positive = {a11: sp.Symbol("b11", positive=True), a22: sp.Symbol("b22", positive=True)}
+    assert sp.factor(dropped.xreplace(positive)).is_positive
+    assert same(slack, chi[4] * (a11 * Phi1**2 * Psi2 + a22 * Psi1 * Phi2**2) - chi[1] ** 2 * a11 * a22)
+    rng = np.random.default_rng(49)
+    evaluate = sp.lambdify((a11, a12, a22, Phi1, Phi2, Psi1, Psi2), [slack, square])
+    for _ in range(200):  # the same at random points, and never negative for laws (1.5)
+        values = (*rng.normal(size=3), *-np.exp(rng.normal(size=4)))
+        ours, theirs = evaluate(*values)
+        assert ours >= -1e-12 * (1 + abs(theirs)) and math.isclose(ours, theirs, rel_tol=1e-9, abs_tol=1e-12)
 
 
 def test_proposition_6_conditions_are_4_4():
