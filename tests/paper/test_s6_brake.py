@@ -51,6 +51,29 @@ def test_robust_stability_is_6_3_with_equality_allowed(a, mu_value, m_value):
     assert stab.robustly_unstable == sp.false
 
 
+def test_6_3_against_eigenvalues_over_a_spread_of_laws():
+    # the bound |cot alpha| checked independently of Proposition 6, on the pipeline's A: below it
+    # every sampled law is stable, above it some sampled law is stable and some is not
+    A_of = sp.lambdify((alpha, mu, m), lin.A)
+    grid = [10.0**e for e in range(-2, 3)]
+    laws = [([-p1, -p2], [-s1, -s2]) for p1 in grid for p2 in grid for s1 in grid for s2 in grid]
+    rng = np.random.default_rng(36)
+    seen = {True: 0, False: 0}
+    for _ in range(40):
+        a, mu_value, m_value = rng.uniform(0.05, 3.09), rng.uniform(0, 3), math.exp(rng.normal())
+        bound = abs(1 / math.tan(a))
+        if abs(mu_value - bound) < 0.05:
+            continue
+        A = A_of(a, mu_value, m_value)
+        parts = [max_real_part(A, Phi_values, Psi_values) for Phi_values, Psi_values in laws]
+        if mu_value < bound:
+            assert max(parts) < 0
+        else:
+            assert min(parts) < 0 < max(parts)
+        seen[mu_value < bound] += 1
+    assert min(seen.values()) >= 5
+
+
 def test_6_3_boundary_mu_equal_cot_alpha_is_stable_for_every_sampled_law():
     rng = np.random.default_rng(63)
     on_boundary = sp.lambdify(alpha, lin.A.subs({mu: sp.cot(alpha), m: 1}))
