@@ -22,11 +22,25 @@ Psi1, Psi2 = lin.Psi
 Phi, Psi = sp.symbols("Phi Psi", negative=True)
 
 
+def newton_6_1() -> sp.Matrix:
+    """m q_j'' by Newton's law for the disc's centre: a second derivation, apart from the library's Lagrangian.
+
+    n_1 = (0, 1), n_2 = (-sin a, -cos a); the disc's surface slides along t_j = z x n_j at pad j,
+    friction -mu N_j t_j opposes it, and F_j = n_j . F.
+    """
+    normals = [sp.Matrix([0, 1]), sp.Matrix([-sp.sin(alpha), -sp.cos(alpha)])]
+    tangents = [sp.Matrix([-n[1], n[0]]) for n in normals]
+    force = sum((N * (n - mu * t) for N, n, t in zip((u1, u2), normals, tangents)), sp.zeros(2, 1))
+    along = [sp.expand(n.dot(force)).subs(sp.cos(alpha) ** 2, 1 - sp.sin(alpha) ** 2) for n in normals]
+    return sp.Matrix([sp.expand(a) + F for a, F in zip(along, (F1, F2))])
+
+
 def test_equations_along_the_normals_are_6_1():
     # at rest on the pads (N_j > 0): m q1'' = N1 + N2 (mu sin a - cos a) + F1, m q2'' = N2 - N1 (mu sin a + cos a) + F2
     f = scene.present(fast.piece((1, 1)))
-    assert same(m * f[0], u1 + u2 * (mu * sp.sin(alpha) - sp.cos(alpha)) + F1)
-    assert same(m * f[1], u2 - u1 * (mu * sp.sin(alpha) + sp.cos(alpha)) + F2)
+    printed = [u1 + u2 * (mu * sp.sin(alpha) - sp.cos(alpha)) + F1, u2 - u1 * (mu * sp.sin(alpha) + sp.cos(alpha)) + F2]
+    for ours, newton, paper in zip(m * f, newton_6_1(), printed):
+        assert same(ours, paper) and same(newton, paper)
 
 
 def test_pads_only_push_so_one_sign_pattern_is_enumerated():
@@ -37,6 +51,7 @@ def test_pads_only_push_so_one_sign_pattern_is_enumerated():
 def test_matrix_is_6_2():
     printed = sp.Matrix([[1, mu * sp.sin(alpha) - sp.cos(alpha)], [-mu * sp.sin(alpha) - sp.cos(alpha), 1]]) / m
     assert same(lin.A, printed)
+    assert same(newton_6_1().jacobian([u1, u2]) / m, printed)
     assert same(lin.det_A, (1 + mu**2) * sp.sin(alpha) ** 2 / m**2)
 
 
