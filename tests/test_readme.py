@@ -45,21 +45,18 @@ def math_of(text: str, symbols) -> sp.Expr:
 
 
 @cache
-def example_namespaces() -> tuple[dict, ...]:
-    """Run every Python block of the README, each in a namespace of its own."""
-    namespaces = []
-    for block in fenced_blocks("python"):
-        namespace: dict = {}
-        exec(compile(block, "README.md", "exec"), namespace)
-        namespaces.append(namespace)
-    return tuple(namespaces)
+def run(block: str) -> dict:
+    """Run a Python block of the README in a namespace of its own (once per test process)."""
+    namespace: dict = {}
+    exec(compile(block, "README.md", "exec"), namespace)
+    return namespace
 
 
 def example(containing: str) -> tuple[str, dict]:
     """The Python block that contains ``containing`` and the namespace it leaves."""
-    found = [(b, ns) for b, ns in zip(fenced_blocks("python"), example_namespaces()) if containing in b]
+    found = [block for block in fenced_blocks("python") if containing in block]
     assert len(found) == 1, f"README.md has {len(found)} Python blocks containing {containing!r}"
-    return found[0]
+    return found[0], run(found[0])
 
 
 def test_quick_start_has_two_commands_and_ci_runs_the_second():
@@ -71,7 +68,8 @@ def test_quick_start_has_two_commands_and_ci_runs_the_second():
 
 
 def test_python_examples_run():
-    assert len(example_namespaces()) == len(fenced_blocks("python")) >= 4
+    blocks = fenced_blocks("python")
+    assert len(blocks) >= 4 and all(isinstance(run(block), dict) for block in blocks)
 
 
 def test_report_command_writes_what_the_quick_start_says(tmp_path, monkeypatch, capsys):
@@ -108,7 +106,7 @@ def test_built_in_scenes_are_the_ones_the_readme_names(capsys):
 def test_attributes_named_in_the_examples_comments_exist():
     # `lin = s.linearization()  # .A (4.3) .matrix (4.5) ...`: each .name is an attribute of lin
     checked = 0
-    for block, namespace in zip(fenced_blocks("python"), example_namespaces()):
+    for block in fenced_blocks("python"):
         target = None
         for line in block.splitlines():
             assignment = re.match(r"(\w+) = [^#]*#(.*)", line)
@@ -121,7 +119,7 @@ def test_attributes_named_in_the_examples_comments_exist():
                 target = None
                 continue
             for attribute in re.findall(r"(?:^|\s)\.(\w+)", comment):
-                assert hasattr(namespace[target], attribute), (target, attribute)
+                assert hasattr(run(block)[target], attribute), (target, attribute)
                 checked += 1
     assert checked >= 10
 
