@@ -32,10 +32,10 @@ from pathlib import Path
 
 import sympy as sp
 
-from .errata import AGREE, latex_table, text_to_latex
-from .errors import ContactsymError
-from .latex import Formula, hurwitz_names, paper_equations, robustness_formulas, tex
-from .scenes import paper_name
+from ..errata import AGREE, latex_table, text_to_latex
+from ..errors import ContactsymError
+from ..latex import Formula, hurwitz_names, paper_equations, robustness_formulas, tex
+from ..scenes import paper_name
 
 __all__ = [
     "Figure",
@@ -384,7 +384,7 @@ def _parameters(scene) -> str:
 
 
 def _chain(scene, named: _Named) -> list[str]:
-    from .latex import formulas
+    from ..latex import formulas
 
     parts = []
     parts.append(
@@ -438,7 +438,7 @@ def _index(fast, j: int) -> str:
 
 
 def _equilibria_section(scene, named: _Named) -> str:
-    from .latex import formulas
+    from ..latex import formulas
 
     fast = scene.fast_subsystem()
     text = [_section("4. Equilibria (4.2)")]
@@ -514,7 +514,7 @@ def _tidy(expr):
 
 
 def _hurwitz_section(scene, named: _Named) -> str:
-    from .latex import _generic_minors
+    from ..latex import _generic_minors
 
     st = scene.stability()
     names = hurwitz_names(st)
@@ -557,7 +557,7 @@ def _counts(scene) -> tuple[dict, str]:
         counts = method()
     except (ContactsymError, NotImplementedError) as error:
         return {}, f"No equilibrium counts for this scene: {error}"
-    from .regions import Region
+    from ..regions import Region
 
     if isinstance(counts, dict):
         items = counts.items()
@@ -622,7 +622,7 @@ def _one_sided_section(scene, named: _Named) -> list[str]:
     """The one-sided Painleve cases of a unilateral contact (k = 1), with lift-off."""
     if scene.k != 1 or not scene.contacts[0].unilateral:
         return []
-    from .one_sided import one_sided_cases
+    from ..one_sided import one_sided_cases
 
     text = [r"\subsection*{One-sided contact: consistent, inconsistent, indeterminate}"]
     for case in one_sided_cases(scene):
@@ -636,7 +636,7 @@ def _special_cases(scene, named: _Named) -> list[str]:
     """The paper's special cases of a scene, derived here: the brake's (6.4) and its frequency."""
     if paper_name(scene) != "brake":  # the built-in brake itself, not a scene that shares its name
         return []
-    from .regions import closed_form
+    from ..regions import closed_form
 
     st = scene.stability()
     fast = scene.fast_subsystem()
@@ -750,7 +750,7 @@ def report_tex(scene, figures: list[Figure] | tuple = (), notes: list[str] | tup
 
 
 def _reduced_section(scene, named: _Named) -> str:
-    from .latex import formulas
+    from ..latex import formulas
 
     text = [
         _section(
@@ -950,7 +950,7 @@ class FigureSource:
 
     def _plotting(self):
         try:
-            from . import plotting
+            from .. import plotting
         except ImportError:  # the figures module is not in this version
             return None, "No figures: this version of contactsym has no plotting module."
         return plotting, ""
@@ -961,7 +961,7 @@ class FigureSource:
             return [], [note]
         if paper_name(scene) is None or getattr(scene, "figure_plan", None) is not None:
             # any other scene, or a built-in one beyond the paper: the figures its plan asks for
-            from .scenefigures import plan_figures
+            from ..scenefigures import plan_figures
 
             self._own += 1
             try:
@@ -1079,7 +1079,7 @@ def write_report(
     >>> "Errata" in text, result.figures, result.notes[0][:40]
     (False, [], 'No figures: give the scene a [figures] t')
     """
-    from .atomic import replaced_directory
+    from ..atomic import replaced_directory
 
     directory = Path(directory)
     with replaced_directory(directory, force=force, error=ReportError) as work:
