@@ -25,7 +25,7 @@ from .build import ReportError, ReportResult, compile_pdf, write_report
 from .conditions import conditions, summary_text
 from .document import Figure, report_tex
 
-# used by the command line and the tests: re-exported under their old names
+# FigureSource for the command line; the typesetting names also under their old import path
 from .scene_parts import FigureSource as FigureSource
 from .typesetting import WIDTH as WIDTH
 from .typesetting import _display as _display
