@@ -117,7 +117,7 @@ def test_a_report_that_fails_midway_leaves_the_old_report_whole(tmp_path, monkey
     def fail(*args, **kwargs):
         raise report.ReportError(f"{step} failed")
 
-    monkeypatch.setattr(report, step, fail)
+    monkeypatch.setattr(report.build, step, fail)
     with pytest.raises(report.ReportError, match=f"{step} failed"):
         report.write_report(cs.scene("sliding-point"), target, pdf=True)
     assert _snapshot(target) == before
@@ -129,7 +129,7 @@ def test_a_pdflatex_failure_keeps_the_old_report_and_the_log(tmp_path, monkeypat
     target = tmp_path / "sliding-point"
     before = _old_report(target)
     bad = r"\documentclass{article}\begin{document}\undefinedmacro\end{document}"
-    monkeypatch.setattr(report, "report_tex", lambda *args: bad)
+    monkeypatch.setattr(report.build, "report_tex", lambda *args: bad)
     with pytest.raises(report.ReportError) as caught:
         report.write_report(cs.scene("sliding-point"), target, pdf=True)
     kept = tmp_path / "sliding-point-pdflatex.log"

@@ -1,0 +1,166 @@
+"""Building a scene's report directory: figures, ``conditions.json``, ``report.tex`` and ``report.pdf``.
+
+:func:`write_report` writes the files all or nothing (:mod:`contactsym.atomic`);
+:func:`compile_pdf` runs pdflatex when it is installed.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+import tempfile
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..atomic import replaced_directory
+from ..errors import ContactsymError
+from .conditions import conditions
+from .document import Figure, report_tex
+from .scene_parts import FigureSource
+
+__all__ = ["ReportError", "ReportResult", "compile_pdf", "write_report"]
+
+
+class ReportError(ContactsymError):
+    """The report could not be written or compiled."""
+
+
+@dataclass
+class ReportResult:
+    """What :func:`write_report` wrote."""
+
+    scene: str
+    directory: Path
+    tex: Path
+    conditions: Path
+    pdf: Path | None = None
+    figures: list = field(default_factory=list)
+    notes: list = field(default_factory=list)
+
+
+# --- files ------------------------------------------------------------------------------------
+
+
+def compile_pdf(tex: Path, timeout: float = 120) -> Path | None:
+    """Run pdflatex on ``tex`` in its directory; the PDF, or None when pdflatex is not installed.
+
+    Raises ReportError (with the first LaTeX error line) when pdflatex fails.
+    """
+    pdflatex = shutil.which("pdflatex")
+    if pdflatex is None:
+        return None
+    command = [pdflatex, "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape", tex.name]
+    for _ in range(2):  # a second run only when LaTeX asks for it (longtable widths)
+        try:
+            run = subprocess.run(command, cwd=tex.parent, capture_output=True, text=True, timeout=timeout)
+        except subprocess.TimeoutExpired as error:
+            raise ReportError(f"pdflatex took more than {timeout:.0f} s on {tex}.") from error
+        log = tex.with_suffix(".log")
+        log_text = log.read_text(errors="replace") if log.exists() else run.stdout
+        if run.returncode != 0:
+            first = next((line for line in log_text.splitlines() if line.startswith("!")), "unknown error")
+            raise ReportError(f"pdflatex failed on {tex}: {first.lstrip('! ')} (see {log}).")
+        if "Rerun LaTeX" not in log_text and "Rerun to get" not in log_text:
+            break
+    return tex.with_suffix(".pdf")
+
+
+def write_report(
+    scene,
+    directory: Path | str,
+    *,
+    pdf: bool = True,
+    figures: FigureSource | None = None,
+    progress: Callable[[str], None] | None = None,
+    force: bool = False,
+) -> ReportResult:
+    """Write ``directory/report.tex``, ``conditions.json``, ``figures/*.png`` and ``report.pdf``.
+
+    Works for any Scene: a built-in one, one read from a scene file
+    (:func:`contactsym.load_scene`) or one built in Python. The paper's errata, its
+    scene-specific equation numbers and figures appear only for the built-in scene objects
+    (decided by identity, not by name). Other scenes get the figures of their
+    ``figure_plan`` (a scene file's ``[figures]``, or ``scene.figure_plan =
+    contactsym.FigurePlan(x, y, x_range, y_range, values)``): region maps in that plane and,
+    for one contact, the phase portrait of (2.1).
+
+    ``figures`` shares drawn figures between scenes (one is made when not given);
+    ``progress`` receives short messages. ``report.pdf`` is made when ``pdf`` is true and
+    pdflatex is installed. All or nothing: the files are written to a directory beside
+    ``directory`` that replaces it only when all succeeded (see :mod:`contactsym.atomic`);
+    an existing directory that contactsym did not write is replaced only with ``force``.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> import sympy as sp
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> import contactsym as cs
+    >>> x, y = dynamicsymbols("x y")
+    >>> N, mu = sp.Symbol("N", real=True), sp.Symbol("mu", positive=True)
+    >>> own = cs.Scene.from_accelerations([x, y], [-mu*sp.Abs(N), N - 1], [cs.Contact(y, N)], name="brake")
+    >>> with tempfile.TemporaryDirectory() as directory:
+    ...     result = write_report(own, directory, pdf=False)
+    ...     text = result.tex.read_text()
+    >>> "Errata" in text, result.figures, result.notes[0][:40]
+    (False, [], 'No figures: give the scene a [figures] t')
+    """
+    directory = Path(directory)
+    with replaced_directory(directory, force=force, error=ReportError) as work:
+        result = _write_files(scene, work, pdf, figures, progress or (lambda message: None), directory)
+    return ReportResult(
+        scene.name,
+        directory,
+        directory / result.tex.name,
+        directory / result.conditions.name,
+        None if result.pdf is None else directory / result.pdf.name,
+        [Figure(directory / "figures" / f.path.name, f.caption) for f in result.figures],
+        result.notes,
+    )
+
+
+def _compile_keeping_log(tex: Path, target: Path) -> Path | None:
+    """compile_pdf; on failure the log is copied beside ``target``, since the directory of ``tex`` is removed."""
+    try:
+        return compile_pdf(tex)
+    except ReportError as error:
+        log, kept = tex.with_suffix(".log"), target.with_name(f"{target.name}-pdflatex.log")
+        message = str(error).replace(str(tex), str(target / tex.name))
+        if log.exists():
+            shutil.copyfile(log, kept)
+            message = message.replace(str(log), str(kept))
+        raise ReportError(f"{message} The previous report is unchanged.") from error
+
+
+def _write_files(scene, directory: Path, pdf: bool, figures: FigureSource | None, say, final: Path) -> ReportResult:
+    try:
+        (directory / "figures").mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise ReportError(f"cannot create {directory / 'figures'}: {error.strerror or error}.") from error
+    result = ReportResult(scene.name, directory, directory / "report.tex", directory / "conditions.json")
+    say("conditions")
+    data = conditions(scene)
+    result.conditions.write_text(json.dumps(data, indent=2, ensure_ascii=False) + "\n")
+    say("figures")
+    with tempfile.TemporaryDirectory(prefix="contactsym-figures-") as scratch:
+        source = figures or FigureSource(Path(scratch))
+        drawn, notes = source.for_scene(scene)
+        placed = []
+        for path, caption in drawn:
+            target = directory / "figures" / path.name
+            if path.resolve() != target.resolve():
+                shutil.copyfile(path, target)
+            placed.append(Figure(target, caption))
+    result.figures, result.notes = placed, list(notes)
+    say("LaTeX")
+    result.tex.write_text(report_tex(scene, placed, notes))
+    if pdf:
+        say("pdflatex")
+        result.pdf = _compile_keeping_log(result.tex, final)
+        if result.pdf is None:
+            result.notes.append(
+                "pdflatex is not installed: report.pdf was not made (apt-get install texlive-latex-base)."
+            )
+    return result

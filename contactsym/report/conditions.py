@@ -1,0 +1,145 @@
+"""The conditions of a scene as data: :func:`conditions` (written as ``conditions.json``) and :func:`summary_text`.
+
+Each expression is given as SymPy text and LaTeX, with the paper's equation numbers where
+it has them; the report's long expressions appear here in full.
+
+Examples
+--------
+>>> import contactsym as cs
+>>> data = conditions(cs.scene("painleve-klein-guides"))
+>>> data["equilibrium_counts"]["unique"]["sympy"], data["equilibrium_counts"]["unique"]["paper"]
+('Abs(v_1) + Abs(v_2) < 2*kappa**2', ['(5.8)'])
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ..errors import ContactsymError
+from ..latex import hurwitz_names, paper_equations, tex
+from ..regions import Region
+from .scene_parts import _count_tag
+
+__all__ = ["conditions", "summary_text"]
+
+
+def _counts(scene) -> tuple[dict[str, Region], str]:
+    """The scene's equilibrium-count regions and "", or no regions and why they could not be derived."""
+    try:
+        return scene.equilibrium_counts(), ""
+    except (ContactsymError, NotImplementedError) as error:
+        return {}, f"No equilibrium counts for this scene: {error}"
+
+
+def _entry(expr, paper=(), note="") -> dict:
+    entry = {"sympy": sp.sstr(expr), "latex": tex(expr)}
+    if paper:
+        entry["paper"] = [f"({number})" for number in paper]
+    if note:
+        entry["note"] = note
+    return entry
+
+
+def conditions(scene, signs=None) -> dict:
+    """The scene's conditions as JSON-ready data: regions, Hurwitz conditions, A, branches.
+
+    Each expression is given as SymPy text (``sympy``) and LaTeX (``latex``), with the
+    paper's equation numbers where it has them. ``signs`` selects one sign pattern.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> data = conditions(cs.scene("brake"))
+    >>> data["regions"]["stable for every law"]["sympy"], data["regions"]["stable for every law"]["paper"]
+    ('mu <= Abs(cot(alpha))', ['(4.4)', '(6.3)'])
+    """
+    st = scene.stability(signs)
+    lin = scene.linearization(signs)
+    data = {
+        "scene": scene.name,
+        "signs": None if signs is None else list(signs),
+        "description": scene.description,
+        "k": scene.k,
+        "parameters": [
+            {"name": str(s), "assumptions": [a for a in ("positive", "negative", "real") if getattr(s, f"is_{a}")]}
+            for s in scene.parameters
+        ],
+        "regions": {},
+        "hurwitz": [],
+        "A": _entry(lin.A, *paper_equations(scene, "A")),
+        "det_A": _entry(lin.det_A, *paper_equations(scene, "det A")),
+        "charpoly": _entry(lin.charpoly.as_expr(), *paper_equations(scene, "charpoly")),
+        "hopf_frequency": None,
+        "equilibria": [],
+        "equilibrium_counts": None,
+    }
+    if scene.presentation:
+        data["presentation"] = {sp.sstr(k): sp.sstr(v) for k, v in scene.presentation.items()}
+    for name, region in scene.regions(signs).items():
+        data["regions"][name] = _entry(region.condition, *paper_equations(scene, name))
+    for name, condition in zip(hurwitz_names(st), st.hurwitz):
+        key = "coefficient" if name.startswith("p") else "hurwitz"
+        data["hurwitz"].append({"name": name, **_entry(condition, *paper_equations(scene, key))})
+    if st.hopf_frequency is not None:
+        data["hopf_frequency"] = _entry(st.hopf_frequency)
+    if st.robustness is not None:
+        data["robustness"] = _robustness_entry(st.robustness)
+    try:
+        for branch in scene.equilibria(signs).branches:
+            data["equilibria"].append(
+                {
+                    "signs": list(branch.signs),
+                    "u_star": [_entry(x) for x in branch.u_star],
+                    "condition": _entry(branch.condition),
+                }
+            )
+    except ContactsymError as error:
+        data["equilibria"] = {"error": str(error)}
+    counts, note = _counts(scene)
+    if counts:
+        data["equilibrium_counts"] = {
+            name: _entry(region.condition, _count_tag(scene, name)) for name, region in counts.items()
+        }
+    elif note:
+        data["equilibrium_counts_note"] = note
+    return data
+
+
+def _robustness_entry(robustness) -> dict:
+    """The point decision for a numeric A (k >= 3): verdict, certificate and witness laws."""
+    laws = {}
+    for name, law in (("stable", robustness.stable_law), ("unstable", robustness.unstable_law)):
+        if law is not None:
+            laws[name] = {"Phi": [sp.sstr(x) for x in law.Phi], "Psi": [sp.sstr(x) for x in law.Psi]}
+    certificate = robustness.certificate
+    return {
+        "verdict": robustness.verdict,
+        "certificate": None if certificate is None else {"kind": certificate.kind, "statement": certificate.statement},
+        "witness_laws": laws,
+    }
+
+
+def summary_text(data: dict) -> str:
+    """A short plain-text summary of :func:`conditions`: the closed-form regions.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> print(summary_text(conditions(cs.scene("brake"))).splitlines()[1])
+      stable for every law: mu <= Abs(cot(alpha))   (4.4), (6.3)
+    """
+    lines = [f"{data['scene']}: {data['description']}"]
+    for name, entry in data["regions"].items():
+        cite = ", ".join(entry.get("paper", []))
+        text = entry["sympy"]
+        if len(text) > 100:
+            text = text[:97] + "..."
+        lines.append(f"  {name}: {text}" + (f"   {cite}" if cite else ""))
+    for name, entry in (data.get("equilibrium_counts") or {}).items():
+        text = entry["sympy"] if len(entry["sympy"]) <= 100 else entry["sympy"][:97] + "..."
+        cite = ", ".join(entry.get("paper", []))
+        lines.append(f"  equilibria, {name}: {text}" + (f"   {cite}" if cite else ""))
+    if data.get("hopf_frequency"):
+        text = data["hopf_frequency"]["sympy"]
+        lines.append("  Hopf frequency omega: " + (text if len(text) <= 100 else text[:97] + "..."))
+    return "\n".join(lines)

@@ -1,0 +1,322 @@
+r"""Typesetting for the report: widths of LaTeX mathematics, line breaking, escaping, named long expressions.
+
+A displayed formula must fit the page: :func:`width` estimates the printed width of
+LaTeX mathematics; a long equation is broken at the terms of its sums (``split``), a long
+Boolean condition one conjunct per line; what would still take more than
+:data:`MAX_LINES` lines is replaced by a name (``H_1``) that :class:`_Named` remembers,
+so the document can list it with its size.
+
+Examples
+--------
+>>> import sympy as sp
+>>> from contactsym.latex import Formula
+>>> x, y = sp.symbols("x y")
+>>> print(_display(Formula("f", "f", x + y, "=", ("4.6",)), _Named()))
+\begin{equation}
+f = x + y
+\tag*{(4.6)}
+\end{equation}
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from ..errata import text_to_latex
+from ..latex import Formula, tex
+
+#: Visible width (in characters of math) of one displayed line, and the most lines one formula may take.
+WIDTH = 78
+MAX_LINES = 6
+
+# --- widths and line breaking ---------------------------------------------------------
+
+_FUNCTION_WIDTH = {"sin": 3, "cos": 3, "tan": 3, "cot": 3, "det": 3, "log": 3, "exp": 3, "sqrt": 1.5}
+_ZERO_WIDTH = {"left", "right", "displaystyle", "limits", "begin", "end", "big", "Big", "bigg", "Bigg"}
+
+
+def _group(tex: str, i: int) -> tuple[str, int]:
+    """The brace group starting at tex[i] == '{' (or one character), and the index after it."""
+    if i >= len(tex):
+        return "", i
+    if tex[i] != "{":
+        if tex[i] == "\\":
+            match = re.match(r"\\[A-Za-z]+", tex[i:])
+            if match:
+                return match.group(), i + len(match.group())
+        return tex[i], i + 1
+    depth = 0
+    for j in range(i, len(tex)):
+        depth += {"{": 1, "}": -1}.get(tex[j], 0)
+        if depth == 0:
+            return tex[i + 1 : j], j + 1
+    return tex[i + 1 :], len(tex)
+
+
+def width(tex: str) -> float:
+    r"""Approximate printed width of LaTeX mathematics, in characters.
+
+    Fractions count their wider part, indices 0.7, ``\left``/``\right`` nothing.
+
+    Examples
+    --------
+    >>> width(r"\frac{a + b}{c}"), width(r"x^{2} + \sin{\left(\alpha \right)}")
+    (3.0, 8.7)
+    """
+    total, i = 0.0, 0
+    while i < len(tex):
+        c = tex[i]
+        if c == "\\":
+            match = re.match(r"\\([A-Za-z]+|.)", tex[i:])
+            name = match.group(1)
+            i += len(match.group())
+            if name == "frac":
+                numerator, i = _group(tex, i)
+                denominator, i = _group(tex, i)
+                total += max(width(numerator), width(denominator))
+            elif name in ("text", "mathrm", "operatorname"):
+                content, i = _group(tex, i)
+                total += len(content)
+            elif name in ("begin", "end"):
+                _, i = _group(tex, i)
+            elif name in _ZERO_WIDTH or name in (",", ";", "!"):
+                continue
+            elif name in ("quad",):
+                total += 2
+            elif name == " ":
+                total += 0.5
+            else:
+                total += _FUNCTION_WIDTH.get(name, 1)
+        elif c in "^_":
+            content, i = _group(tex, i + 1)
+            total += 0.7 * width(content)
+        elif c in "{} &":
+            i += 1
+        else:
+            total += 1
+            i += 1
+    return round(total, 2)
+
+
+@dataclass
+class _Named:
+    """Long subexpressions replaced by names H_1, H_2, ... while typesetting one report."""
+
+    items: list = field(default_factory=list)
+
+    def name(self, expr: sp.Expr) -> sp.Symbol:
+        for symbol, known in self.items:
+            if known == expr:
+                return symbol
+        symbol = sp.Symbol(f"H_{len(self.items) + 1}")
+        self.items.append((symbol, expr))
+        return symbol
+
+
+def _describe(expr: sp.Expr) -> str:
+    """A short description of a long expression: its kind, number of terms and symbols."""
+    numerator, denominator = sp.fraction(sp.together(expr))
+    terms = len(sp.Add.make_args(sp.expand(numerator)))
+    symbols = ", ".join(f"${tex(s)}$" for s in sorted(expr.free_symbols, key=str))
+    kind = "a polynomial" if denominator == 1 else "a rational function, numerator"
+    try:
+        degree = sp.Poly(sp.expand(numerator), *sorted(expr.free_symbols, key=str)).total_degree()
+        size = f"{terms} terms of total degree {degree}"
+    except sp.PolynomialError:
+        size = f"{terms} terms"
+    return f"{kind} with {size} in {symbols}"
+
+
+def _terms(expr: sp.Expr) -> tuple[str, list[str], str] | None:
+    """(prefix, LaTeX of the terms, suffix) of a sum, a multiple of a sum, or a sum over a denominator."""
+    if isinstance(expr, sp.Add):
+        return "", [tex(t) for t in expr.as_ordered_terms()], ""
+    numerator, denominator = sp.fraction(expr)
+    if denominator != 1 and isinstance(sp.expand(numerator), sp.Add):
+        prefix = r"\frac{1}{" + tex(denominator) + r"} \Big("
+        return prefix, [tex(t) for t in sp.expand(numerator).as_ordered_terms()], r"\Big)"
+    if isinstance(expr, sp.Mul):
+        sums = [f for f in expr.args if isinstance(f, sp.Add)]
+        if len(sums) == 1:
+            rest = sp.Mul(*[f for f in expr.args if f is not sums[0]])
+            prefix = ("-" if rest == -1 else tex(rest)) + r" \Big("
+            return prefix, [tex(t) for t in sums[0].as_ordered_terms()], r"\Big)"
+    return None
+
+
+def _fill(first: str, terms: list[str], suffix: str, budget: float) -> list[str] | None:
+    """Greedy lines of ``first t1 + t2 ...``; None when they take more than MAX_LINES."""
+    lines, current = [], first
+    for index, term in enumerate(terms):
+        joined = term if index == 0 else (f"- {term[1:].lstrip()}" if term.startswith("-") else f"+ {term}")
+        piece = f" {joined}"
+        if width(current + piece) > budget and width(current) > width(first) + 1:
+            lines.append(current)
+            current = r"\quad" + piece
+        else:
+            current += piece
+    lines.append(current + " " + suffix if suffix else current)
+    if len(lines) > MAX_LINES or any(width(line) > budget + 8 for line in lines):
+        return None
+    return lines
+
+
+def _compact(expr, named: _Named, budget: float):
+    """``expr`` with its long sums replaced by names (a product keeps its short factors)."""
+    if isinstance(expr, sp.Basic) and width(tex(expr)) <= budget:
+        return expr
+    if isinstance(expr, sp.MatrixBase):
+        return expr.applyfunc(lambda e: _compact(e, named, budget / max(expr.cols, 1)))
+    if isinstance(expr, sp.Pow) and expr.exp.is_Rational:
+        return sp.Pow(_compact(expr.base, named, budget), expr.exp, evaluate=False)
+    if isinstance(expr, sp.Mul):
+        return sp.Mul(*[_compact(f, named, budget) for f in expr.args], evaluate=False)
+    if isinstance(expr, (sp.Add, sp.Function)) or expr.is_Atom is False:
+        return named.name(expr)
+    return expr
+
+
+def _broken(first: str, expr, last: str, budget: float) -> list[str] | None:
+    """Lines of ``first expr last`` broken at the terms of ``expr``; None when that does not fit."""
+    parts = _terms(expr) if isinstance(expr, sp.Expr) else None
+    if parts is None:
+        return None
+    prefix, terms, suffix = parts
+    return _fill(f"{first}{prefix}", terms, f"{suffix}{last}", budget)
+
+
+def _lines(lhs: str, relation: str, expr, named: _Named) -> list[str]:
+    """LaTeX lines (for ``split``) of ``lhs relation expr`` that fit the page."""
+    head = f"{lhs} &{relation}" if lhs else "&"
+    text = tex(expr) if not isinstance(expr, str) else expr
+    if isinstance(expr, str) or width(head + " " + text) <= WIDTH:
+        return [f"{head} {text}"]
+    lines = _broken("", expr, "", WIDTH - width(lhs))
+    if lines is not None:
+        return [f"{head} {lines[0]}"] + ["& " + line for line in lines[1:]]
+    compacted = _compact(expr, named, WIDTH - width(head) - 4)
+    return [f"{head} {tex(compacted)}"]
+
+
+def _relation_tex(relational) -> str:
+    return {
+        sp.StrictLessThan: "<",
+        sp.LessThan: r"\le",
+        sp.StrictGreaterThan: ">",
+        sp.GreaterThan: r"\ge",
+        sp.Equality: "=",
+        sp.Unequality: r"\ne",
+    }[type(relational)]
+
+
+def _relational_lines(condition, named: _Named) -> list[str]:
+    """A long relation broken at the sums of its longer side; its long sums named when that fails."""
+    left, right = condition.lhs, condition.rhs
+    relation = _relation_tex(condition)
+    if width(tex(left)) >= width(tex(right)):
+        lines = _broken("", left, f" {relation} {tex(right)}", WIDTH)
+    else:
+        lines = _broken(f"{tex(left)} {relation} ", right, "", WIDTH)
+    if lines is None:
+        budget = WIDTH / 2
+        lines = [f"{tex(_compact(left, named, budget))} {relation} {tex(_compact(right, named, budget))}"]
+    return ["& " + line for line in lines]
+
+
+def _condition_lines(condition, named: _Named) -> list[str]:
+    """A Boolean condition as lines, each starting with ``&``: one conjunct (or disjunct) per line when long."""
+    text = tex(condition)
+    if width(text) <= WIDTH:
+        return [f"& {text}"]
+    if isinstance(condition, sp.core.relational.Relational):
+        return _relational_lines(condition, named)
+    if isinstance(condition, (sp.And, sp.Or)):
+        word = r"\wedge" if isinstance(condition, sp.And) else r"\vee"
+        lines = []
+        for index, arg in enumerate(condition.args):
+            inner = _condition_lines(arg, named)
+            if isinstance(arg, (sp.And, sp.Or)):
+                inner[0] = inner[0].replace("& ", r"& \left(", 1)
+                inner[-1] = inner[-1] + r" \right)" if len(inner) == 1 else inner[-1] + r" \Big)"
+                if len(inner) > 1:
+                    inner[0] = inner[0].replace(r"\left(", r"\Big(", 1)
+            if index:
+                inner[0] = inner[0].replace("& ", f"& {word} ", 1)
+            lines += inner
+        return lines
+    return [f"& {tex(_compact(condition, named, WIDTH))}"]
+
+
+def _equation(lines: list[str], tag: str) -> str:
+    """One numbered display: ``split`` when it has several lines."""
+    if len(lines) == 1:
+        return "\\begin{equation}\n" + lines[0].replace("&", "", 1) + f"\n{tag}\n\\end{{equation}}"
+    body = " \\\\\n".join(lines)
+    return f"\\begin{{equation}}\n\\begin{{split}}\n{body}\n\\end{{split}}\n{tag}\n\\end{{equation}}"
+
+
+def _display(formula: Formula, named: _Named) -> str:
+    if formula.relation in ("", ":") and not formula.lhs:
+        lines = _condition_lines(formula.rhs, named)
+    else:
+        lines = _lines(formula.lhs, formula.relation, formula.rhs, named)
+    text = _equation(lines, formula.tag())
+    if formula.note:
+        text += "\n" + _note(formula.note)
+    return text
+
+
+def _note(note: str) -> str:
+    return r"\noindent{\footnotesize " + _plain_to_latex(note) + r"}\par"
+
+
+def _plain_to_latex(text: str) -> str:
+    """Notes are ASCII plain text with names like Phi_j, Delta_3, mu: typeset them."""
+    names = {"Phi": "Φ", "Psi": "Ψ", "Delta": "Δ", "alpha": "α", "phi": "φ", "mu": "μ", "eps": "ε", "deg": "°"}
+    for word, symbol in names.items():
+        text = re.sub(rf"\b{word}\b", symbol, text)
+        text = re.sub(rf"\b{word}_", symbol + "_", text)
+    text = text.replace(" °", "°")
+    return text_to_latex(text)
+
+
+_SPECIALS = {
+    "\\": r"\textbackslash{}",
+    "{": r"\{",
+    "}": r"\}",
+    "$": r"\$",
+    "&": r"\&",
+    "#": r"\#",
+    "^": r"\^{}",
+    "_": r"\_",
+    "%": r"\%",
+    "~": r"\~{}",
+    "<": r"\textless{}",
+    ">": r"\textgreater{}",
+    "|": r"\textbar{}",
+}
+
+
+def _escape(text: str) -> str:
+    """Plain text (a name, a message, a path) for LaTeX: specials escaped, other characters through text_to_latex.
+
+    Examples
+    --------
+    >>> print(_escape("a_b & 50% of {x}, mu > 2, μ"))
+    a\\_b \\& 50\\% of \\{x\\}, mu \\textgreater{} 2, $\\mu$
+    """
+    out = []
+    for c in text:
+        if c in _SPECIALS:
+            out.append(_SPECIALS[c])
+        elif ord(c) < 128:
+            out.append(c)
+        else:
+            try:
+                out.append(text_to_latex(c))
+            except ValueError:
+                out.append("?")
+    return "".join(out)
