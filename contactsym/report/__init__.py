@@ -10,7 +10,7 @@ than a few lines is named (``H_1``) and its size given, with the full form in
 
 Modules: :mod:`~contactsym.report.typesetting` (widths, line breaking, escaping),
 :mod:`~contactsym.report.document` (the sections and :func:`report_tex`),
-:mod:`~contactsym.report.conditions` (the conditions as data),
+:mod:`~contactsym.report.summary` (the conditions as data),
 :mod:`~contactsym.report.scene_parts` (what the report knows of the paper's scenes) and
 :mod:`~contactsym.report.build` (the files).
 
@@ -22,11 +22,11 @@ Examples
 """
 
 from .build import ReportError, ReportResult, compile_pdf, write_report
-from .conditions import conditions, summary_text
 from .document import Figure, report_tex
 
 # FigureSource for the command line; the typesetting names also under their old import path
 from .scene_parts import FigureSource as FigureSource
+from .summary import conditions, summary_text
 from .typesetting import WIDTH as WIDTH
 from .typesetting import _display as _display
 from .typesetting import _Named as _Named

@@ -16,7 +16,7 @@ from pathlib import Path
 
 from ..atomic import replaced_directory
 from ..errors import ContactsymError
-from .conditions import conditions
+from .summary import conditions
 from .document import Figure, report_tex
 from .scene_parts import FigureSource
 
