@@ -16,9 +16,9 @@ from pathlib import Path
 
 from ..atomic import replaced_directory
 from ..errors import ContactsymError
-from .summary import conditions
 from .document import Figure, report_tex
 from .scene_parts import FigureSource
+from .summary import conditions
 
 __all__ = ["ReportError", "ReportResult", "compile_pdf", "write_report"]
 

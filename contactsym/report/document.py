@@ -30,8 +30,8 @@ from ..errors import ContactsymError
 from ..latex import Formula, _generic_minors, formulas, hurwitz_names, paper_equations, robustness_formulas, tex
 from ..one_sided import one_sided_cases
 from ..scenes import paper_name
-from .summary import _counts
 from .scene_parts import _count_tag, _special_cases
+from .summary import _counts
 from .typesetting import WIDTH, _describe, _display, _escape, _Named, width
 
 __all__ = ["Figure", "report_tex"]
