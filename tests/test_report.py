@@ -90,39 +90,25 @@ def test_conditions_are_json_and_summarised():
     assert "stable for every law: mu <= Abs(cot(alpha))   (4.4), (6.3)" in text
 
 
-class _FakePlotting:
-    """Stands in for contactsym.plotting: paper_figures writes two PNGs, one per scene."""
+def test_figure_source_asks_the_scene_module(tmp_path, monkeypatch):
+    import contactsym.scenes.brake as brake_module
 
-    @staticmethod
-    def paper_figures(directory):
-        return {
-            "brake map": a_png(Path(directory) / "brake_alpha_mu.png"),
-            "Extra_1 & more": a_png(Path(directory) / "guides_extra.png"),
-        }
+    def figures(scene, directory, *, resolution, dpi):
+        return [(a_png(directory / "brake_alpha_mu.png"), r"the $(\alpha, \mu)$ plane")]
 
-
-def test_figure_source_shares_figures_out_by_scene(tmp_path, monkeypatch):
-    import contactsym
-
-    monkeypatch.setattr(contactsym, "plotting", _FakePlotting, raising=False)
+    monkeypatch.setattr(brake_module, "figures", figures)
     source = FigureSource(tmp_path)
     brake, notes = source.for_scene(cs.scene("brake"))
-    assert [p.name for p, _ in brake] == ["brake_alpha_mu.png"] and notes == []
-    guides, _ = source.for_scene(cs.scene("painleve-klein-guides"))
-    assert [c for _, c in guides] == [r"Extra\_1 \& more"]  # a caption from the plotting module, escaped
-    rod, notes = source.for_scene(cs.scene("painleve-klein-rod"))
-    assert rod == [] and "belongs to this scene" in notes[0]
+    assert [(p.name, c) for p, c in brake] == [("brake_alpha_mu.png", r"the $(\alpha, \mu)$ plane")] and notes == []
 
 
 def test_a_failing_figure_function_becomes_a_note(tmp_path, monkeypatch):
-    import contactsym
+    import contactsym.scenes.brake as brake_module
 
-    class Broken:
-        @staticmethod
-        def paper_figures(directory):
-            raise RuntimeError("no display")
+    def figures(scene, directory, *, resolution, dpi):
+        raise RuntimeError("no display")
 
-    monkeypatch.setattr(contactsym, "plotting", Broken, raising=False)
+    monkeypatch.setattr(brake_module, "figures", figures)
     figures, notes = FigureSource(tmp_path).for_scene(cs.scene("brake"))
     assert figures == [] and notes == ["No figures: drawing them failed with RuntimeError: no display"]
 

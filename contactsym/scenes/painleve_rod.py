@@ -45,11 +45,17 @@ def build(unilateral: bool = True) -> Scene:
         description="classical Painleve rod, one end sliding on a rough floor"
         + (" (one-sided: the end may lift off)" if unilateral else " (end held to the floor)"),
     )
-    scene.report_figures = lambda directory: {_CAPTION: _count_figure(scene, directory)}
     return scene
 
 
-_CAPTION = "Number of equilibria, lift-off included, over (mu, thetadot) at tan(theta) = 2, m = l = 1, g = 9.81"
+_CAPTION = (
+    r"Number of equilibria, lift-off included, over $(\mu, \dot\theta)$ at $\tan\theta = 2$, $m = l = 1$, $g = 9.81$."
+)
+
+
+def figures(scene, directory, *, resolution: int = 400, dpi: int = 150) -> list:
+    """The map of the number of equilibria (lift-off included) over two parameters."""
+    return [(_count_figure(scene, directory), _CAPTION)]
 
 
 def _count_figure(scene, directory):
