@@ -14,6 +14,7 @@ import sympy as sp  # noqa: E402
 import contactsym as cs  # noqa: E402
 from contactsym.plotting import (  # noqa: E402
     ROD_CASES,
+    ContactPlot,
     brake_hopf_data,
     brake_hopf_plot,
     brake_map_data,
@@ -31,7 +32,7 @@ from contactsym.plotting import (  # noqa: E402
     scene_figures,
 )
 from contactsym.regions import Region  # noqa: E402
-from tests.helpers import max_real_part  # noqa: E402
+from tests.helpers import fast_matrix, max_real_part  # noqa: E402
 
 LAWS = [
     (-p1, -p2, -s1, -s2)
@@ -55,7 +56,10 @@ def ax():
 
 
 def drawn_on(artists, ax) -> bool:
-    return bool(artists) and all(getattr(a, "axes", None) is ax for a in artists)
+    """Artists were drawn on ``ax`` and came back as the ContactPlot of ``ax``."""
+    plot = isinstance(artists, ContactPlot) and artists.axes is ax and artists.figure is ax.figure
+    plot = plot and artists.legend is ax.get_legend()
+    return plot and bool(artists) and all(getattr(a, "axes", None) is ax for a in artists)
 
 
 # --- region_data / region_plot --------------------------------------------------------------------
@@ -219,6 +223,22 @@ def test_brake_hopf_agrees_with_eigenvalues_and_the_frequency_is_omega():
             continue
         part = max_real_part(A_6_2(math.pi / 2, mu_value), [Phi, Phi], [-1.0, -1.0])
         assert data.masks["stable"][i, j] == (part < 0)
+
+
+def test_brake_hopf_data_draws_the_special_case_of_the_scene_module():
+    from contactsym.scenes import paper_knowledge
+
+    brake = cs.scene("brake")
+    stable, omega = paper_knowledge(brake, "special_cases")(brake)  # (6.4) and its frequency, derived once
+    data = brake_hopf_data(brake, resolution=5)
+    assert (stable.paper, data.stable.condition, data.frequency) == (("6.4",), stable.rhs, omega.rhs)
+    # on the Hopf line drawn, the boundary of (6.4), (4.5) has the eigenvalues +-i omega (stretched time)
+    by_name = {str(s): s for s in data.hopf.condition.free_symbols | omega.rhs.free_symbols}
+    for mu_value, Psi in ((0.5, -1.0), (1.7, -0.3)):
+        point = {by_name["mu"]: mu_value, by_name["Psi"]: Psi, by_name["m"]: 1.0}
+        (Phi,) = sp.solve(data.hopf.condition.subs(point), by_name["Phi"])
+        eigenvalues = np.linalg.eigvals(fast_matrix(A_6_2(math.pi / 2, mu_value), [float(Phi)] * 2, [Psi] * 2))
+        assert min(abs(eigenvalues - 1j * float(omega.rhs.subs(point)))) < 1e-9
 
 
 def test_brake_plots(ax):

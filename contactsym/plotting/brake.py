@@ -56,7 +56,7 @@ def brake_map_data(scene, *, mu_max=2.0, resolution=300) -> BrakeMapData:
     return BrakeMapData(A, M, masks, boundary, {name: regions[name] for name in names})
 
 
-def brake_map_plot(data: BrakeMapData, ax=None, *, legend=True):
+def brake_map_plot(data: BrakeMapData, ax=None, *, legend=True) -> ContactPlot:
     """Draw the (alpha, mu) map; alpha in degrees.
 
     Parameters
@@ -160,7 +160,7 @@ def brake_hopf_data(scene, *, Psi=-1.0, m=1.0, mu_max=3.0, Phi_min=-10.0, resolu
     return BrakeHopfData(MU, PHI, {"Psi": Psi, "m": m}, stable_region, hopf_region, frequency, masks, field_)
 
 
-def brake_hopf_plot(data: BrakeHopfData, ax=None, *, legend=True):
+def brake_hopf_plot(data: BrakeHopfData, ax=None, *, legend=True) -> ContactPlot:
     """Draw the (mu, Phi) plane: stable single-hatched, unstable double-hatched, the Hopf line.
 
     Parameters

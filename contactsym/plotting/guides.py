@@ -116,7 +116,7 @@ def _label_points(mask) -> list[tuple[int, int]]:
     return points
 
 
-def fig1_plot(data: Fig1Data, ax=None, *, legend=True):
+def fig1_plot(data: Fig1Data, ax=None, *, legend=True) -> ContactPlot:
     """Draw Fig. 1 on an Axes: stability hatched, the four dashed lines, the counts written in.
 
     Returns

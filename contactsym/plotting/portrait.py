@@ -134,7 +134,7 @@ def _count_at(scene, values: dict) -> str:
     return next((n for n, r in known if bool(r.evaluate(**{k: values[k] for k in r._by_name}))), "undecided")
 
 
-def phase_portrait_plot(data: PhasePortraitData, ax=None, *, legend=True):
+def phase_portrait_plot(data: PhasePortraitData, ax=None, *, legend=True) -> ContactPlot:
     """Stream lines of (u', v'), equilibria (u*, 0) marked: filled stable, open unstable.
 
     Parameters

@@ -104,7 +104,7 @@ def region_plot(
     color="black",
     label=None,
     data: RegionData | None = None,
-):
+) -> ContactPlot:
     """Hatch a region in the (x, y) plane.
 
     Parameters

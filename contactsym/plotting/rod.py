@@ -149,7 +149,7 @@ def rod_f_data(scene, case="cusp", *, values=None, points=400) -> RodFData:
     )
 
 
-def rod_f_plot(data: RodFData, ax=None, *, legend=True):
+def rod_f_plot(data: RodFData, ax=None, *, legend=True) -> ContactPlot:
     """Draw f(u) for each load, roots marked (filled: stable, f' > 0; open: unstable).
 
     Parameters

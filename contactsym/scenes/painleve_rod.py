@@ -17,6 +17,7 @@ import sympy as sp
 from sympy.physics.mechanics import Lagrangian as lagrangian_of
 from sympy.physics.mechanics import RigidBody, dynamicsymbols, inertia
 
+from ..count_points import count_map_figure
 from ..laws import Coulomb
 from ..scene import Contact, Scene
 from ._planar import planar_body
@@ -59,7 +60,5 @@ def figures(scene, directory, *, resolution: int = 400, dpi: int = 150) -> list:
 
 
 def _count_figure(scene, directory):
-    from ..count_points import count_map_figure
-
     fixed = dict(m=1.0, l=1.0, g=9.81, theta=float(sp.atan(2)))
     return count_map_figure(scene, directory / "rod_counts.png", "mu", "thetadot", (0, 3), (0, 5), **fixed)

@@ -17,6 +17,7 @@ import sympy as sp
 from sympy.physics.mechanics import Lagrangian as lagrangian_of
 from sympy.physics.mechanics import RigidBody, dynamicsymbols, inertia
 
+from ..count_points import count_map_figure
 from ..laws import Coulomb
 from ..scene import Contact, Scene
 from ._planar import planar_body
@@ -64,6 +65,4 @@ def figures(scene, directory, *, resolution: int = 400, dpi: int = 150) -> list:
 
 
 def _count_figure(scene, directory):
-    from ..count_points import count_map_figure
-
     return count_map_figure(scene, directory / "block_counts.png", "Y", "M", (-30, 30), (-10, 10), **POINT)
