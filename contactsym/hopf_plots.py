@@ -6,6 +6,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from .plotting import ContactPlot, _axes
+
 __all__ = ["hopf_amplitude_data", "hopf_amplitude_plot"]
 
 
@@ -38,11 +40,23 @@ def hopf_amplitude_data(hopf, distances: Sequence[float], simulated: Sequence[fl
     }
 
 
-def hopf_amplitude_plot(data: dict, ax=None, *, label: str = "") -> list:
-    """Amplitude against distance on log-log axes: the prediction as a line, simulations as dots."""
-    import matplotlib.pyplot as plt
+def hopf_amplitude_plot(data: dict, ax=None, *, label: str = "") -> ContactPlot:
+    """Amplitude against distance on log-log axes: the prediction as a line, simulations as dots.
 
-    ax = ax if ax is not None else plt.gca()
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> data = {"distance": np.array([0.01, 0.04]), "predicted": np.array([0.1, 0.2]), "simulated": None,
+    ...         "direction": "supercritical", "parameter": "mu"}
+    >>> fig, ax = plt.subplots()
+    >>> drawn = hopf_amplitude_plot(data, ax=ax, label="Hertz")
+    >>> len(drawn), drawn.axes is ax, drawn.legend is not None
+    (1, True, True)
+    >>> plt.close(fig)
+    """
+    ax = _axes(ax)
     fine = np.geomspace(data["distance"].min(), data["distance"].max(), 50) if len(data["distance"]) > 1 else None
     artists = []
     if fine is not None:
@@ -58,4 +72,4 @@ def hopf_amplitude_plot(data: dict, ax=None, *, label: str = "") -> list:
     ax.set_xlabel(f"relative distance to the Hopf line in {data['parameter']}")
     ax.set_ylabel("reaction amplitude")
     ax.legend(fontsize="small")
-    return artists
+    return ContactPlot.of(ax, artists)

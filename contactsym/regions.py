@@ -387,7 +387,7 @@ class Region:
 
     def plot(self, ax=None, *, x, y, fixed=None, **style):
         """Hatch the region in the (x, y) plane; see :func:`contactsym.plotting.region_plot`."""
-        from .plotting import region_plot
+        from .plotting.regionplot import region_plot  # the leaf module: no import cycle
 
         return region_plot(self, ax=ax, x=x, y=y, fixed=fixed or {}, **style)
 

@@ -18,6 +18,7 @@ from .latex import tex
 from .plotting import (
     STABLE_HATCH,
     UNSTABLE_HATCH,
+    ContactPlot,
     _axes,
     _boundary_plot,
     _relational_fields,
@@ -25,6 +26,7 @@ from .plotting import (
     phase_portrait_plot,
     region_data,
     region_plot,
+    save_figure,
 )
 
 __all__ = ["RegionMapData", "plan_figures", "region_map_data", "region_map_plot"]
@@ -89,7 +91,7 @@ def region_map_data(scene, plan, *, resolution: int = 200) -> RegionMapData:
     return RegionMapData(title, plan.x, plan.y, grids, curves, skipped)
 
 
-def region_map_plot(data: RegionMapData, ax=None, *, legend: bool = True) -> list:
+def region_map_plot(data: RegionMapData, ax=None, *, legend: bool = True) -> ContactPlot:
     """Hatch each region: single for stable for every law, double for unstable, others in turn.
 
     Examples
@@ -115,22 +117,13 @@ def region_map_plot(data: RegionMapData, ax=None, *, legend: bool = True) -> lis
     for name, (X, Y, fields) in data.curves.items():
         drawn = _boundary_plot(ax, X, Y, fields, colors="black", linewidths=1.5)
         if drawn:
-            artists += drawn + ax.plot([], [], "k-", lw=1.5, label=name)
+            artists += [*drawn, *ax.plot([], [], "k-", lw=1.5, label=name)]
     ax.set_xlabel(f"${tex(sp.Symbol(data.x))}$")
     ax.set_ylabel(f"${tex(sp.Symbol(data.y))}$")
     ax.set_title(data.title, fontsize=10)
     if legend and artists:
         artists.append(ax.legend(loc="best", fontsize=8, framealpha=0.95))
-    return artists
-
-
-def _save(draw, path: Path, dpi: int) -> Path:
-    from matplotlib.figure import Figure
-
-    figure = Figure(figsize=(7.0, 5.0))
-    draw(figure.add_subplot())
-    figure.savefig(path, dpi=dpi, bbox_inches="tight")
-    return path
+    return ContactPlot.of(ax, artists)
 
 
 def _portrait_needs(scene) -> set[str]:
@@ -159,7 +152,7 @@ def plan_figures(scene, directory, *, resolution: int = 200, dpi: int = 150) -> 
     data = region_map_data(scene, plan, resolution=resolution)
     notes += [f"Region '{name}' is not drawn: {why}" for name, why in data.skipped.items()]
     if data.grids or data.curves:
-        path = _save(lambda ax: region_map_plot(data, ax), directory / "regions.png", dpi)
+        path = save_figure(directory / "regions.png", lambda f: region_map_plot(data, f.add_subplot()), dpi=dpi)
         caption = f"The closed-form regions of this scene in the $({tex(sp.Symbol(plan.x))}, {tex(sp.Symbol(plan.y))})$ plane."
         drawn.append((path, caption))
     if scene.k == 1:
@@ -170,7 +163,9 @@ def plan_figures(scene, directory, *, resolution: int = 200, dpi: int = 150) -> 
             if missing:
                 raise ValueError(f"give [figures] values for {', '.join(sorted(missing))}")
             portrait = phase_portrait_data(scene, values, **laws)
-            path = _save(lambda ax: phase_portrait_plot(portrait, ax), directory / "phase_portrait.png", dpi)
+            path = save_figure(
+                directory / "phase_portrait.png", lambda f: phase_portrait_plot(portrait, f.add_subplot()), dpi=dpi
+            )
             drawn.append(
                 (path, "Phase portrait of the fast subsystem (2.1) of this scene, at the values of [figures].")
             )

@@ -11,8 +11,10 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 import sympy as sp  # noqa: E402
 
+import contactsym as cs  # noqa: E402
 from contactsym.plotting import (  # noqa: E402
     ROD_CASES,
+    ContactPlot,
     brake_hopf_data,
     brake_hopf_plot,
     brake_map_data,
@@ -26,10 +28,11 @@ from contactsym.plotting import (  # noqa: E402
     region_plot,
     rod_f_data,
     rod_f_plot,
+    rod_portrait_values,
     scene_figures,
 )
 from contactsym.regions import Region  # noqa: E402
-from tests.helpers import max_real_part  # noqa: E402
+from tests.helpers import fast_matrix, max_real_part  # noqa: E402
 
 LAWS = [
     (-p1, -p2, -s1, -s2)
@@ -53,7 +56,10 @@ def ax():
 
 
 def drawn_on(artists, ax) -> bool:
-    return bool(artists) and all(getattr(a, "axes", None) is ax for a in artists)
+    """Artists were drawn on ``ax`` and came back as the ContactPlot of ``ax``."""
+    plot = isinstance(artists, ContactPlot) and artists.axes is ax and artists.figure is ax.figure
+    plot = plot and artists.legend is ax.get_legend()
+    return plot and bool(artists) and all(getattr(a, "axes", None) is ax for a in artists)
 
 
 # --- region_data / region_plot --------------------------------------------------------------------
@@ -92,7 +98,7 @@ def A_5_4(kappa, v1, v2):
 
 @pytest.mark.parametrize("degrees", [60, 45])
 def test_fig1_classification_agrees_with_eigenvalues(degrees):
-    data = fig1_data(sp.pi * degrees / 180, extent=4, resolution=61)
+    data = fig1_data(cs.scene("painleve-klein-guides"), sp.pi * degrees / 180, extent=4, resolution=61)
     kappa = 1 / math.tan(math.radians(degrees))
     assert math.isclose(float(data.kappa), kappa)
     rng = np.random.default_rng(degrees)
@@ -115,7 +121,7 @@ def test_fig1_classification_agrees_with_eigenvalues(degrees):
 
 
 def test_fig1_counts_are_the_square_sectors_and_half_strips():
-    data = fig1_data(sp.pi / 3, resolution=81)
+    data = fig1_data(cs.scene("painleve-klein-guides"), sp.pi / 3, resolution=81)
     k2 = 2 * float(data.kappa) ** 2
     s, d = np.abs(data.V1) + np.abs(data.V2), np.abs(np.abs(data.V1) - np.abs(data.V2))
     off_lines = (np.abs(s - k2) > 1e-9) & (np.abs(d - k2) > 1e-9)
@@ -126,7 +132,10 @@ def test_fig1_counts_are_the_square_sectors_and_half_strips():
 
 
 def test_fig1_panels_follow_the_threshold():
-    above, below = fig1_data(sp.pi / 3, resolution=81), fig1_data(sp.pi / 4, resolution=81)
+    above, below = (
+        fig1_data(cs.scene("painleve-klein-guides"), sp.pi / 3, resolution=81),
+        fig1_data(cs.scene("painleve-klein-guides"), sp.pi / 4, resolution=81),
+    )
     assert (above.panel, below.panel) == ("a", "b")
     assert above.threshold == sp.atan(sp.sqrt(2))
     assert not np.any(above.counts["unique"] & ~above.masks["stable for every law"])  # (5.9): inside
@@ -134,7 +143,7 @@ def test_fig1_panels_follow_the_threshold():
 
 
 def test_fig1_plot(ax):
-    artists = fig1_plot(fig1_data(sp.pi / 4, resolution=41), ax=ax)
+    artists = fig1_plot(fig1_data(cs.scene("painleve-klein-guides"), sp.pi / 4, resolution=41), ax=ax)
     assert drawn_on(artists, ax)
     assert (ax.get_xlabel(), ax.get_ylabel()) == ("$v_1$", "$v_2$")
     assert "Fig. 1b" in ax.get_title() and "45" in ax.get_title()
@@ -158,7 +167,7 @@ def f_3_6(u, values, load):
     [("unique", "unique stable", [1]), ("fold", "two or none", [2, 0]), ("cusp", "one or three", [3, 1])],
 )
 def test_rod_f_data_is_3_6_with_its_roots(case, count, roots):
-    data = rod_f_data(case, points=200)
+    data = rod_f_data(cs.scene("painleve-klein-rod"), case, points=200)
     assert data.count == count
     assert [len(r) for _, _, r in data.curves] == roots
     for load, values, found in data.curves:
@@ -172,7 +181,7 @@ def test_rod_f_data_is_3_6_with_its_roots(case, count, roots):
 
 
 def test_rod_f_plot(ax):
-    artists = rod_f_plot(rod_f_data("fold", points=50), ax=ax)
+    artists = rod_f_plot(rod_f_data(cs.scene("painleve-klein-rod"), "fold", points=50), ax=ax)
     assert drawn_on(artists, ax)
     assert (ax.get_xlabel(), ax.get_ylabel()) == ("$u = R$", "$f(u)$")
     assert "fold" in ax.get_title() and r"\mu_{-}" in ax.get_title()
@@ -186,7 +195,7 @@ def A_6_2(alpha, mu, m=1.0):
 
 
 def test_brake_map_agrees_with_6_3_and_eigenvalues():
-    data = brake_map_data(resolution=41)
+    data = brake_map_data(cs.scene("brake"), resolution=41)
     bound = np.abs(1 / np.tan(data.alpha))
     away = np.abs(data.mu - bound) > 1e-2
     assert np.array_equal(data.masks["stable for every law"][away], (data.mu <= bound)[away])
@@ -202,7 +211,7 @@ def test_brake_map_agrees_with_6_3_and_eigenvalues():
 
 
 def test_brake_hopf_agrees_with_eigenvalues_and_the_frequency_is_omega():
-    data = brake_hopf_data(Psi=-1.0, m=1.0, resolution=41)
+    data = brake_hopf_data(cs.scene("brake"), Psi=-1.0, m=1.0, resolution=41)
     mu, Psi = sp.symbols("mu", positive=True), sp.Symbol("Psi", negative=True)
     m = sp.Symbol("m", positive=True)
     assert sp.expand(data.frequency + (mu**2 + 1) * Psi / (mu * m)) == 0  # erratum 14
@@ -216,11 +225,27 @@ def test_brake_hopf_agrees_with_eigenvalues_and_the_frequency_is_omega():
         assert data.masks["stable"][i, j] == (part < 0)
 
 
+def test_brake_hopf_data_draws_the_special_case_of_the_scene_module():
+    from contactsym.scenes import paper_knowledge
+
+    brake = cs.scene("brake")
+    stable, omega = paper_knowledge(brake, "special_cases")(brake)  # (6.4) and its frequency, derived once
+    data = brake_hopf_data(brake, resolution=5)
+    assert (stable.paper, data.stable.condition, data.frequency) == (("6.4",), stable.rhs, omega.rhs)
+    # on the Hopf line drawn, the boundary of (6.4), (4.5) has the eigenvalues +-i omega (stretched time)
+    by_name = {str(s): s for s in data.hopf.condition.free_symbols | omega.rhs.free_symbols}
+    for mu_value, Psi in ((0.5, -1.0), (1.7, -0.3)):
+        point = {by_name["mu"]: mu_value, by_name["Psi"]: Psi, by_name["m"]: 1.0}
+        (Phi,) = sp.solve(data.hopf.condition.subs(point), by_name["Phi"])
+        eigenvalues = np.linalg.eigvals(fast_matrix(A_6_2(math.pi / 2, mu_value), [float(Phi)] * 2, [Psi] * 2))
+        assert min(abs(eigenvalues - 1j * float(omega.rhs.subs(point)))) < 1e-9
+
+
 def test_brake_plots(ax):
-    assert drawn_on(brake_map_plot(brake_map_data(resolution=30), ax=ax), ax)
+    assert drawn_on(brake_map_plot(brake_map_data(cs.scene("brake"), resolution=30), ax=ax), ax)
     assert ax.get_ylabel() == r"$\mu$" and r"\alpha" in ax.get_xlabel()
     figure, other = plt.subplots()
-    assert drawn_on(brake_hopf_plot(brake_hopf_data(resolution=30), ax=other), other)
+    assert drawn_on(brake_hopf_plot(brake_hopf_data(cs.scene("brake"), resolution=30), ax=other), other)
     assert (other.get_xlabel(), other.get_ylabel()) == (r"$\mu$", r"$\Phi$")
     plt.close(figure)
 
@@ -230,7 +255,7 @@ def test_brake_plots(ax):
 
 def test_phase_portrait_is_3_1_with_the_equilibria():
     load = ROD_CASES["cusp"]["loads"][0]
-    data = phase_portrait_data("painleve-klein-rod", Phi=-1.0, Psi=-0.5, resolution=15)
+    data = phase_portrait_data(cs.scene("painleve-klein-rod"), Phi=-1.0, Psi=-0.5, resolution=15)
     f = f_3_6(data.u, ROD_CASES["cusp"], load)
     assert np.allclose(data.dv, f)
     assert np.allclose(data.du, -1.0 * data.v - 0.5 * f)
@@ -245,20 +270,20 @@ def test_phase_portrait_is_3_1_with_the_equilibria():
 
 def test_phase_portrait_of_the_sliding_point_is_1_10_with_kelvin_voigt():
     # m u'' ... : u' = -v - 2 b f, v' = f with f = (u + Y)/m (1.10)-(1.12); u* = -Y
-    data = phase_portrait_data("sliding-point", values={"m": 2.0, "b": 0.25, "Y": -1.0}, resolution=9)
+    data = phase_portrait_data(cs.scene("sliding-point"), values={"m": 2.0, "b": 0.25, "Y": -1.0}, resolution=9)
     f = (data.u - 1.0) / 2.0
     assert np.allclose(data.dv, f) and np.allclose(data.du, -data.v - 0.5 * f)
     assert data.equilibria == [(1.0, True)]
 
 
-def test_phase_portrait_of_a_rod_case_by_name():
-    data = phase_portrait_data("cusp", resolution=9)
+def test_phase_portrait_of_a_rod_case():
+    data = phase_portrait_data(cs.scene("painleve-klein-rod"), rod_portrait_values("cusp"), resolution=9)
     assert data.scene == "painleve-klein-rod" and data.values["X^*"] == ROD_CASES["cusp"]["loads"][0]
-    assert data.equilibria == phase_portrait_data("painleve-klein-rod", resolution=9).equilibria
+    assert data.equilibria == phase_portrait_data(cs.scene("painleve-klein-rod"), resolution=9).equilibria
 
 
 def test_phase_portrait_plot(ax):
-    artists = phase_portrait_plot(phase_portrait_data(resolution=12), ax=ax)
+    artists = phase_portrait_plot(phase_portrait_data(cs.scene("painleve-klein-rod"), resolution=12), ax=ax)
     assert drawn_on(artists, ax)
     assert (ax.get_xlabel(), ax.get_ylabel()) == ("$u$", "$v$")
 
@@ -282,8 +307,6 @@ def test_paper_figures_writes_non_empty_pngs(tmp_path):
 
 
 def test_scene_figures_have_captions_from_the_data(tmp_path):
-    import contactsym as cs
-
     written = scene_figures(cs.scene("painleve-klein-guides"), tmp_path, resolution=30, dpi=30)
     captions = list(written)
     assert [p.name for p in written.values()] == ["fig1a_guides.png", "fig1b_guides.png"]

@@ -13,7 +13,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..plotting import _axes, _relational_fields
+from ..plotting import ContactPlot, _axes, _relational_fields
+from ..scenes import scene as scene_by_name
 from .grid import AtlasError
 
 __all__ = ["AtlasData", "atlas_data", "atlas_plot"]
@@ -69,8 +70,6 @@ def atlas_data(
     >>> data.x, data.y, sorted(data.boundaries), data.skipped
     ('alpha', 'mu', ['law-dependent', 'stable for every law'], ('Hopf line',))
     """
-    from ..scenes import scene as scene_by_name
-
     names = [v for v in ds.data_vars if v != "reason"]
     variable = variable or names[0]
     if variable not in ds.data_vars:
@@ -108,7 +107,7 @@ def atlas_data(
     return AtlasData(variable, x, y, xs, ys, values, title, tuple(fine), boundaries, tuple(skipped))
 
 
-def atlas_plot(data, ax=None, *, variable: str | None = None, legend: bool = True, **data_options) -> list:
+def atlas_plot(data, ax=None, *, variable: str | None = None, legend: bool = True, **data_options) -> ContactPlot:
     """Draw an atlas (a Dataset from :func:`~contactsym.atlas.sweep`, or :class:`AtlasData`) with the
     closed-form region boundaries over it; returns the artists.
 
@@ -149,7 +148,7 @@ def atlas_plot(data, ax=None, *, variable: str | None = None, legend: bool = Tru
     ax.set_title(data.title, fontsize=10)
     if legend and drawn:
         artists.append(ax.legend(fontsize=7, loc="best", framealpha=0.9))
-    return artists
+    return ContactPlot.of(ax, artists)
 
 
 def _boundaries(ax, data: AtlasData, fields, colour) -> list:

@@ -95,6 +95,7 @@ def paper_knowledge(scene, attribute: str, default=None):
     - ``COUNT_EQUATIONS``: ``((word in a count region's name, paper numbers), ...)``;
     - ``figures(scene, directory, *, resolution, dpi)``: ``[(PNG path, LaTeX caption), ...]``;
     - ``special_cases(scene)``: a list of :class:`SpecialCase`.
+    - ``PORTRAIT_VALUES``: numbers for the phase portrait of a one-contact scene.
 
     Examples
     --------

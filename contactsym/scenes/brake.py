@@ -9,12 +9,18 @@ unilateral with N_j > 0.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import sympy as sp
 from sympy.physics.mechanics import Lagrangian as lagrangian_of
 from sympy.physics.mechanics import RigidBody, dynamicsymbols, inertia
 
+from ..latex import tex
 from ..laws import Coulomb
+from ..plotting import brake_hopf_data, brake_hopf_plot, brake_map_data, brake_map_plot, save_figure
+from ..regions import closed_form
 from ..scene import Contact, Scene
+from . import SpecialCase
 from ._planar import planar_body
 
 
@@ -47,3 +53,74 @@ def build() -> Scene:
         solve_for=mu,
         description="(6.1)-(6.4): disc braked by two pads at angle alpha",
     )
+
+
+def special_cases(scene) -> list[SpecialCase]:
+    r"""The paper's special case (6.4): alpha = 90 deg, equal laws Phi_j = Phi, Psi_j = Psi.
+
+    Derived from the scene's Hurwitz conditions with these values substituted, and, when
+    its boundary (the Hopf line) is one equation in Phi, the frequency on it.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> stable, omega = special_cases(cs.scene("brake"))
+    >>> stable.rhs, stable.paper
+    (-Phi*m*mu**2 < Psi**2*(mu**2 + 1), ('6.4',))
+    >>> omega.lhs, omega.rhs
+    ('\\omega', -Psi*(mu**2 + 1)/(m*mu))
+    """
+    if id(scene) not in _SPECIAL:  # the built-in brake is one object: derived once, then shared
+        _SPECIAL[id(scene)] = (scene, _derive_special_cases(scene))
+    return list(_SPECIAL[id(scene)][1])
+
+
+_SPECIAL: dict = {}
+
+
+def _derive_special_cases(scene) -> list[SpecialCase]:
+    st, fast = scene.stability(), scene.fast_subsystem()
+    Phi, Psi = sp.Symbol("Phi", negative=True), sp.Symbol("Psi", negative=True)
+    alpha = next(s for s in scene.parameters if s.name == "alpha")
+    equal = {**dict.fromkeys(fast.Phi, Phi), **dict.fromkeys(fast.Psi, Psi), alpha: sp.pi / 2}
+    stable = closed_form(sp.And(*[sp.Gt(h.subs(equal), 0) for h in st.hurwitz]), scene)
+    intro = r"With $\Phi_j = \Phi$, $\Psi_j = \Psi$ and $\alpha = 90^\circ$ the Hurwitz conditions reduce to"
+    cases = [SpecialCase(intro, "special", "", "", stable, ("6.4",), "with the mass m: erratum 13")]
+    line = closed_form(st.hopf.subs(equal), scene)
+    solved = sp.solve(line, Phi, dict=True) if isinstance(line, sp.Equality) else []
+    if len(solved) == 1:
+        omega = sp.factor(sp.sqrt(sp.factor(st.poly.omega_squared.subs(equal).subs(solved[0]))))
+        on_line = "and on its boundary, a Hopf bifurcation, the frequency in the stretched time is"
+        cases.append(SpecialCase(on_line, "hopf frequency", r"\omega", "=", omega, (), "erratum 14"))
+    return cases
+
+
+def figures(scene, directory: Path, *, resolution: int = 400, dpi: int = 150) -> list[tuple[Path, str]]:
+    """The (alpha, mu) map (6.3) and the Hopf line of the special case (6.4)."""
+    plane = brake_map_data(scene, resolution=resolution)
+    hopf = brake_hopf_data(scene, resolution=resolution)
+    bound = tex(plane.regions["stable for every law"].condition)
+    return [
+        (
+            save_figure(
+                directory / "brake_alpha_mu.png",
+                lambda f: brake_map_plot(plane, ax=f.add_subplot()),
+                size=(6.5, 4.5),
+                dpi=dpi,
+            ),
+            rf"The brake in the $(\alpha, \mu)$ plane: stable for every contact law where ${bound}$ (6.3); "
+            "beyond that curve stability depends on the contact law (a Hopf bifurcation, brake squeal, is possible).",
+        ),
+        (
+            save_figure(
+                directory / "brake_hopf.png",
+                lambda f: brake_hopf_plot(hopf, ax=f.add_subplot()),
+                size=(6.5, 4.8),
+                dpi=dpi,
+            ),
+            rf"The brake at $\alpha = 90^\circ$ with $\Phi_j = \Phi$, $\Psi_j = \Psi$: asymptotically stable where "
+            rf"${tex(hopf.stable.condition)}$ ((6.4) with the mass $m$), unstable beyond the Hopf line "
+            rf"${tex(hopf.hopf.condition)}$, on which the squeal frequency is $\omega = {tex(hopf.frequency)}$ "
+            "(stretched time).",
+        ),
+    ]

@@ -8,12 +8,16 @@ the centre and moment M.
 
 from __future__ import annotations
 
+import math
+from pathlib import Path
+
 import sympy as sp
 from sympy.physics.mechanics import Lagrangian as lagrangian_of
 from sympy.physics.mechanics import Particle, dynamicsymbols
 
 from ..algebra import SignSymbol
 from ..laws import Coulomb
+from ..plotting import Fig1Data, fig1_data, fig1_plot, save_figure
 from ..scene import Contact, Scene
 from ._planar import planar_body
 
@@ -61,3 +65,35 @@ def build() -> Scene:
     # counts of (5.3) do not depend on the signs s_j: the paper writes them with mu_j = |v_j|/kappa
     scene.count_presentation = {**presentation, mu1: sp.Abs(v1) / kappa, mu2: sp.Abs(v2) / kappa}
     return scene
+
+
+#: Paper numbers of the count regions, by a word in the region's name.
+COUNT_EQUATIONS = (("unique", ("5.8",)), ("none", ("5.10",)), ("two", ("5.10",)))
+
+
+def figures(scene, directory: Path, *, resolution: int = 400, dpi: int = 150) -> list[tuple[Path, str]]:
+    """Fig. 1a and 1b of the paper, derived: the (v1, v2) plane at phi = 60 and 45 degrees."""
+    drawn = []
+    for file, phi in (("fig1a_guides.png", sp.pi / 3), ("fig1b_guides.png", sp.pi / 4)):
+        data = fig1_data(scene, phi, resolution=resolution)
+        path = save_figure(
+            directory / file, lambda f, data=data: fig1_plot(data, ax=f.add_subplot()), size=(6.0, 6.6), dpi=dpi
+        )
+        drawn.append((path, _fig1_caption(data)))
+    return drawn
+
+
+def _fig1_caption(data: Fig1Data) -> str:
+    where = (
+        "the unique square (5.8) lies inside the region stable for every law (5.9)"
+        if data.panel == "a"
+        else "part of the unique square (5.8) lies where stability depends on the contact law"
+    )
+    phi, threshold = (f"{math.degrees(float(angle)):.3g}" for angle in (data.phi, data.threshold))
+    return (
+        f"Fig. 1{data.panel}: the $(v_1, v_2)$ plane of the guides at $\\varphi = {phi}^\\circ$ "
+        f"(threshold $\\arctan\\sqrt{{2}} \\approx {threshold}^\\circ$). Single hatching: stable for every "
+        "contact law (5.6); double hatching: unstable for every law (5.7); dashed: the lines "
+        "$\\pm v_1 \\pm v_2 = 2 \\kappa^2$ bounding the unique square (5.8), the sectors with two solutions or none "
+        f"(5.10) and the half-strips with one or three. Here {where}."
+    )

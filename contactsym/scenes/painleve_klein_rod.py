@@ -8,9 +8,21 @@ The guides are rigid, so their normal forces N1, N2 balance the vertical forces.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import sympy as sp
 from sympy.physics.mechanics import ReferenceFrame, dynamicsymbols
 
+from ..plotting import (
+    ROD_CASES,
+    phase_portrait_caption,
+    phase_portrait_data,
+    phase_portrait_plot,
+    rod_f_data,
+    rod_f_plot,
+    rod_portrait_values,
+    save_figure,
+)
 from ..scene import Contact, Scene
 
 
@@ -48,3 +60,44 @@ def build() -> Scene:
         positive=(sp.sin(phi), sp.cos(phi)),  # 0 < phi < pi/2
         description="(3.5)-(3.9): Painleve-Klein system, deformable rod, rigid guides",
     )
+
+
+#: Paper numbers of the count regions, by a word in the region's name.
+COUNT_EQUATIONS = (
+    ("unique", ("3.8", "3.9")),
+    ("three", ("3.9",)),
+    ("cusp", ("3.9",)),
+    ("none", ("3.8",)),
+    ("fold", ("3.8",)),
+)
+
+#: The numbers of the phase portrait: the cusp of §3 at its first load.
+PORTRAIT_VALUES = rod_portrait_values("cusp")
+
+_CASES_CAPTION = (
+    "$f(u)$ of the Painlev\\'e--Klein rod (3.6) in the three cases of \\S3: a unique stable root ((3.8), (3.9)), "
+    "a fold with two roots or none (impact-type catastrophe), a cusp with one root or three; each panel's condition "
+    "is its derived count region. Filled dots: stable roots ($f' > 0$); open dots: unstable."
+)
+
+
+def figures(scene, directory: Path, *, resolution: int = 400, dpi: int = 150) -> list[tuple[Path, str]]:
+    """f(u) in the three cases of §3 side by side, and the phase portrait of the cusp."""
+
+    def cases(figure):
+        for i, case in enumerate(ROD_CASES, 1):
+            rod_f_plot(rod_f_data(scene, case, points=max(50, resolution)), ax=figure.add_subplot(1, 3, i))
+        figure.subplots_adjust(wspace=0.3)
+
+    portrait = phase_portrait_data(scene, resolution=max(20, resolution // 8))
+    return [
+        (save_figure(directory / "rod_f_cases.png", cases, size=(15.0, 4.6), dpi=dpi), _CASES_CAPTION),
+        (
+            save_figure(
+                directory / "rod_phase_portrait.png",
+                lambda f: phase_portrait_plot(portrait, ax=f.add_subplot()),
+                dpi=dpi,
+            ),
+            phase_portrait_caption(portrait),
+        ),
+    ]

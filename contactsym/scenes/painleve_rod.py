@@ -17,6 +17,7 @@ import sympy as sp
 from sympy.physics.mechanics import Lagrangian as lagrangian_of
 from sympy.physics.mechanics import RigidBody, dynamicsymbols, inertia
 
+from ..count_points import count_map_figure
 from ..laws import Coulomb
 from ..scene import Contact, Scene
 from ._planar import planar_body
@@ -45,15 +46,19 @@ def build(unilateral: bool = True) -> Scene:
         description="classical Painleve rod, one end sliding on a rough floor"
         + (" (one-sided: the end may lift off)" if unilateral else " (end held to the floor)"),
     )
-    scene.report_figures = lambda directory: {_CAPTION: _count_figure(scene, directory)}
     return scene
 
 
-_CAPTION = "Number of equilibria, lift-off included, over (mu, thetadot) at tan(theta) = 2, m = l = 1, g = 9.81"
+_CAPTION = (
+    r"Number of equilibria, lift-off included, over $(\mu, \dot\theta)$ at $\tan\theta = 2$, $m = l = 1$, $g = 9.81$."
+)
+
+
+def figures(scene, directory, *, resolution: int = 400, dpi: int = 150) -> list:
+    """The map of the number of equilibria (lift-off included) over two parameters."""
+    return [(_count_figure(scene, directory), _CAPTION)]
 
 
 def _count_figure(scene, directory):
-    from ..count_points import count_map_figure
-
     fixed = dict(m=1.0, l=1.0, g=9.81, theta=float(sp.atan(2)))
     return count_map_figure(scene, directory / "rod_counts.png", "mu", "thetadot", (0, 3), (0, 5), **fixed)

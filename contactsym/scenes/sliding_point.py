@@ -7,11 +7,14 @@ N = -2 b c y' - c^2 y with eps = 1/c.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import sympy as sp
 from sympy.physics.mechanics import Lagrangian as lagrangian_of
 from sympy.physics.mechanics import Particle, Point, ReferenceFrame, dynamicsymbols
 
 from ..laws import Coulomb, KelvinVoigt
+from ..plotting import phase_portrait_caption, phase_portrait_data, phase_portrait_plot, save_figure
 from ..scene import Contact, Scene, t
 
 
@@ -41,3 +44,18 @@ def build() -> Scene:
         name="sliding-point",
         description="(1.10)-(1.12): a point sliding on a rough line, Kelvin-Voigt contact",
     )
+
+
+#: The numbers of the phase portrait (a load Y(x, xdot) by its function's name).
+PORTRAIT_VALUES = {"m": 1.0, "b": 0.25, "Y": -1.0}
+
+
+def figures(scene, directory: Path, *, resolution: int = 400, dpi: int = 150) -> list[tuple[Path, str]]:
+    """The phase portrait of the fast subsystem (1.12): one stable equilibrium for the Kelvin–Voigt law."""
+    portrait = phase_portrait_data(scene, extent=(3.0, 3.0), resolution=max(20, resolution // 8))
+    path = save_figure(
+        directory / "sliding_point_phase_portrait.png",
+        lambda f: phase_portrait_plot(portrait, ax=f.add_subplot()),
+        dpi=dpi,
+    )
+    return [(path, phase_portrait_caption(portrait))]

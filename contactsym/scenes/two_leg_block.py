@@ -17,6 +17,7 @@ import sympy as sp
 from sympy.physics.mechanics import Lagrangian as lagrangian_of
 from sympy.physics.mechanics import RigidBody, dynamicsymbols, inertia
 
+from ..count_points import count_map_figure
 from ..laws import Coulomb
 from ..scene import Contact, Scene
 from ._planar import planar_body
@@ -46,7 +47,6 @@ def build(unilateral: bool = False) -> Scene:
         name="two-leg-block-unilateral" if unilateral else "two-leg-block",
         description="a block on two legs sliding on a rough floor" + (", legs that can lift off" if unilateral else ""),
     )
-    scene.report_figures = lambda directory: {_CAPTION: _count_figure(scene, directory)}
     return scene
 
 
@@ -54,11 +54,15 @@ def build(unilateral: bool = False) -> Scene:
 #: negative, yet the degree is 0, so the loads give two equilibria or none.
 POINT = dict(m=1.838, J=0.5558, a=0.6912, b=0.5569, mu_1=1.5555, mu_2=1.3973)
 _CAPTION = (
-    "Number of equilibria over the loads (Y, M) at m = 1.838, J = 0.5558, a = 0.6912, b = 0.5569, mu = (1.5555, 1.3973)"
+    r"Number of equilibria over the loads $(Y, M)$ at $m = 1.838$, $J = 0.5558$, $a = 0.6912$, $b = 0.5569$, "
+    r"$\mu = (1.5555, 1.3973)$."
 )
 
 
-def _count_figure(scene, directory):
-    from ..count_points import count_map_figure
+def figures(scene, directory, *, resolution: int = 400, dpi: int = 150) -> list:
+    """The map of the number of equilibria (lift-off included) over two parameters."""
+    return [(_count_figure(scene, directory), _CAPTION)]
 
+
+def _count_figure(scene, directory):
     return count_map_figure(scene, directory / "block_counts.png", "Y", "M", (-30, 30), (-10, 10), **POINT)

@@ -1,0 +1,100 @@
+"""All figures of a scene as PNG files, from the scene's own module.
+
+What a built-in scene draws, and with which caption, is scene knowledge: the function
+``figures(scene, directory, *, resolution, dpi)`` of ``scenes/<name>.py``, asked for
+through :func:`contactsym.scenes.paper_knowledge`. A user's scene has none here; its
+``[figures]`` plan is drawn by :mod:`contactsym.scenefigures`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+
+from ..scenes import paper_knowledge
+from ..scenes import scene as built_in
+
+__all__ = ["FIGURE_SCENES", "paper_figures", "save_figure", "scene_figures"]
+
+#: The paper's scenes whose figures :func:`paper_figures` writes, in its order (Fig. 1 first).
+FIGURE_SCENES = ("painleve-klein-guides", "painleve-klein-rod", "brake", "sliding-point")
+
+
+def save_figure(path: Path, draw: Callable, *, size=(7.0, 5.0), dpi: int = 150) -> Path:
+    r"""Call ``draw(figure)`` on a new matplotlib Figure of ``size`` inches and write it to ``path``.
+
+    The Figure is made without pyplot, so drawing many files keeps no global state.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as directory:
+    ...     path = save_figure(Path(directory) / "line.png", lambda f: f.add_subplot().plot([0, 1]), dpi=20)
+    ...     path.read_bytes()[:4]
+    b'\x89PNG'
+    """
+    from matplotlib.figure import Figure  # matplotlib only when a figure is drawn
+
+    figure = Figure(figsize=size)
+    draw(figure)
+    figure.savefig(path, dpi=dpi, bbox_inches="tight")
+    return Path(path)
+
+
+def scene_figures(scene, directory, *, resolution=400, dpi=150) -> dict[str, Path]:
+    """Write one scene's figures as PNGs into ``directory``; returns {LaTeX caption: path}.
+
+    Parameters
+    ----------
+    scene : Scene
+        A built-in scene (others have no figures here: an empty dict).
+    directory : str or Path
+        Created when missing.
+    resolution : int
+        Grid points per axis for the region plots (lower is faster).
+    dpi : int
+
+    Returns
+    -------
+    dict of str to Path
+        Caption (LaTeX, written from the computed data) -> PNG file.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> import contactsym as cs
+    >>> with tempfile.TemporaryDirectory() as directory:
+    ...     written = scene_figures(cs.scene("brake"), directory, resolution=20, dpi=20)
+    ...     sorted(p.name for p in written.values())
+    ['brake_alpha_mu.png', 'brake_hopf.png']
+    """
+    figures = paper_knowledge(scene, "figures")
+    if figures is None:
+        return {}
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    return {caption: path for path, caption in figures(scene, directory, resolution=resolution, dpi=dpi)}
+
+
+def paper_figures(directory, *, resolution=400, dpi=150) -> list[Path]:
+    """Write the figures of the paper's scenes (:data:`FIGURE_SCENES`) as PNGs into ``directory``.
+
+    Parameters
+    ----------
+    directory : str or Path
+        Created when missing.
+    resolution : int
+        Grid points per axis for the region plots (lower is faster).
+    dpi : int
+
+    Returns
+    -------
+    list of Path
+        ``fig1a_guides.png``, ``fig1b_guides.png``, ``rod_f_cases.png``,
+        ``rod_phase_portrait.png``, ``brake_alpha_mu.png``, ``brake_hopf.png``,
+        ``sliding_point_phase_portrait.png``.
+    """
+    paths = []
+    for name in FIGURE_SCENES:
+        paths.extend(scene_figures(built_in(name), directory, resolution=resolution, dpi=dpi).values())
+    return paths
