@@ -32,7 +32,6 @@ def normalize(expr: sp.Expr) -> sp.Expr:
     return canonical(expr)
 
 
-
 def present(expr: sp.Expr, presentation: dict, signs=None) -> sp.Expr:
     """``expr`` rewritten with the substitutions ``presentation`` (e.g. kappa, v_j, mu_pm).
 

@@ -34,8 +34,10 @@ import sympy as sp
 
 from .errata import AGREE, latex_table, text_to_latex
 from .errors import ContactsymError
-from .latex import Formula, hurwitz_names, paper_equations, robustness_formulas, tex
+from .latex import Formula, tex
+from .scene import paper_equations
 from .scenes import paper_name
+from .stability import hurwitz_names, robustness_formulas
 
 __all__ = [
     "Figure",
@@ -514,7 +516,7 @@ def _tidy(expr):
 
 
 def _hurwitz_section(scene, named: _Named) -> str:
-    from .latex import _generic_minors
+    from .stability import generic_minors as _generic_minors
 
     st = scene.stability()
     names = hurwitz_names(st)

@@ -14,6 +14,14 @@ from sympy.physics.mechanics import Particle, Point, ReferenceFrame, dynamicsymb
 from ..laws import Coulomb, KelvinVoigt
 from ..scene import Contact, Scene, t
 
+#: The paper's numbers of this example, by formula key (see :func:`contactsym.scenes.paper_knowledge`).
+EQUATIONS = {
+    "accelerations": (("1.10",), ""),
+    "regularized": (("1.12",), ""),
+    "fast": (("1.12",), "eps = 0 in (1.12)"),
+    "law": (("1.11",), "Kelvin-Voigt law (1.11)"),
+}
+
 
 def build() -> Scene:
     x, y = dynamicsymbols("x y")
@@ -39,5 +47,6 @@ def build() -> Scene:
         loads=[(point, X * frame.x + Y * frame.y)],
         frame=frame,
         name="sliding-point",
+        equations=EQUATIONS,
         description="(1.10)-(1.12): a point sliding on a rough line, Kelvin-Voigt contact",
     )
