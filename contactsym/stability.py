@@ -36,7 +36,7 @@ from .lyapunov import fast_first_lyapunov
 if TYPE_CHECKING:
     from .robustness import Robustness
 
-__all__ = ["Stability", "hurwitz_names", "robustness_formulas"]
+__all__ = ["Stability", "generic_minors", "hurwitz_names", "robustness_formulas"]
 
 #: The general theory's numbers and propositions, for k = 1, k = 2 and k >= 3 contacts.
 NUMBERS = Numbering(

@@ -8,9 +8,11 @@ import copy
 
 import pytest
 import sympy as sp
+from sympy.physics.mechanics import dynamicsymbols
 
 import contactsym as cs
 from contactsym.equilibria import Equilibria
+from contactsym.errors import SceneError
 from contactsym.latex import formulas
 from contactsym.linear import Linearization
 from contactsym.stability import Stability
@@ -101,3 +103,31 @@ def test_the_scene_shares_its_stages_with_equilibria():
     (pattern,) = rod.sign_patterns()
     assert eq.stability_of(pattern) is rod.stability(pattern)
     assert sp.And(*[sp.Gt(h, 0) for h in rod.stability(pattern).hurwitz]) == eq.stable(eq.branches[0])
+
+
+def _point(**options):
+    x, y = dynamicsymbols("x y")
+    N, mu, X, Y = sp.symbols("N mu X Y", real=True)
+    contact = cs.Contact(coordinate=y, reaction=N)
+    return cs.Scene.from_accelerations([x, y], [X - mu * sp.Abs(N), N + Y], [contact], **options)
+
+
+def test_a_scene_carries_its_own_paper_numbers_to_every_stage():
+    """Numbers travel with the scene, not with its name: any scene may cite its source."""
+    own = _point(equations={"A": (("7.1",), "my paper"), "fast": (("7.0",), "")})
+    assert formulas(own.linearization())[0].paper == ("3.2", "7.1")
+    assert formulas(own.linearization())[0].note == "my paper"
+    cited = {(row.key, row.cite()) for row in formulas(own.fast_subsystem())}
+    assert cited == {("fast", "(3.1), (7.0)"), ("f", "(3.1)")}
+    assert formulas(_point().linearization())[0].paper == ("3.2",)
+    brake = cs.scene("brake")
+    assert brake.equations is brake.fast_subsystem().paper_equations
+    assert brake.equations == cs.scenes.paper_knowledge(brake, "EQUATIONS")
+
+
+@pytest.mark.parametrize(
+    "equations", [{"A": "7.1"}, {"A": ("7.1", "")}, {"A": ((7.1,), "")}, {1: (("7.1",), "")}, {"A": (("7.1",),)}]
+)
+def test_malformed_paper_numbers_are_refused(equations):
+    with pytest.raises(SceneError, match="must be"):
+        _point(equations=equations)
