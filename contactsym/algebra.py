@@ -3,65 +3,21 @@
 - ``reduce_signs``: s**2 = 1 for sign symbols of open sign patterns;
 - ``reduce_trig``: cos(x)**2 = 1 - sin(x)**2, a polynomial reduction;
 - ``normalize``: the canonical rational form of :mod:`contactsym.canonical` (both
-  reductions, one fraction, cancelled; a polynomial in the parameters stays expanded).
+  reductions, one fraction, cancelled; a polynomial in the parameters stays expanded);
+- ``present``: an expression rewritten in a scene's presentation variables.
+
+The reductions themselves live in :mod:`contactsym.reductions`, below the canonical form.
 """
 
 from __future__ import annotations
 
 import sympy as sp
 
+from .canonical import canonical
 from .parse import sympy_only
+from .reductions import SignSymbol, known_sign, reduce_signs, reduce_trig, sign_symbols
 
-__all__ = ["SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "normalize", "known_sign"]
-
-
-class SignSymbol(sp.Symbol):
-    """A symbol for sign(sigma) on an open sign pattern: its value is +1 or -1."""
-
-    def __new__(cls, name, **assumptions):
-        return super().__new__(cls, name, integer=True, nonzero=True)
-
-
-def sign_symbols(count: int) -> tuple[SignSymbol, ...]:
-    """s (one switching function) or s_1, ..., s_count."""
-    if count == 1:
-        return (SignSymbol("s"),)
-    return tuple(SignSymbol(f"s_{i}") for i in range(1, count + 1))
-
-
-def reduce_signs(expr: sp.Expr) -> sp.Expr:
-    """Use s**2 = 1 for every SignSymbol s.
-
-    Examples
-    --------
-    >>> s = SignSymbol("s")
-    >>> reduce_signs(s**2 + 3*s**3 - s**4)
-    3*s
-    """
-    return sp.sympify(expr).replace(
-        lambda e: e.is_Pow and isinstance(e.base, SignSymbol) and e.exp.is_Integer,
-        lambda e: e.base ** (e.exp % 2),
-    )
-
-
-def reduce_trig(expr: sp.Expr) -> sp.Expr:
-    """Replace cos(x)**n, n >= 2, by cos(x)**(n % 2) (1 - sin(x)**2)**(n // 2), expanded.
-
-    Examples
-    --------
-    >>> a, m = sp.symbols("alpha m", positive=True)
-    >>> reduce_trig(sp.sin(a)**2/m + sp.cos(a)**2/m)
-    1/m
-    """
-
-    def is_cos_power(e):
-        return e.is_Pow and isinstance(e.base, sp.cos) and e.exp.is_Integer and e.exp >= 2
-
-    def rewrite(e):
-        n = int(e.exp)
-        return e.base ** (n % 2) * (1 - sp.sin(e.base.args[0]) ** 2) ** (n // 2)
-
-    return sp.expand(sp.sympify(expr).replace(is_cos_power, rewrite))
+__all__ = ["SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "normalize", "known_sign", "present"]
 
 
 def normalize(expr: sp.Expr) -> sp.Expr:
@@ -73,31 +29,34 @@ def normalize(expr: sp.Expr) -> sp.Expr:
     >>> normalize(s**3/m + (s*m - s)/(m**2 - m))
     2*s/m
     """
-    from .canonical import canonical
-
     return canonical(expr)
 
 
-def known_sign(expr: sp.Expr, positive=()) -> int | None:
-    """+1 or -1 when the sign of ``expr`` follows from assumptions, else None.
+def present(expr: sp.Expr, presentation: dict, signs=None) -> sp.Expr:
+    """``expr`` rewritten with the substitutions ``presentation`` (e.g. kappa, v_j, mu_pm).
 
-    ``positive`` lists expressions known to be positive in the scene's domain
-    (e.g. ``sin(phi)`` for 0 < phi < pi/2).
+    ``signs`` gives the sign pattern of ``expr`` when it belongs to one piece, so that the
+    presentation's sign symbols (v_j = kappa s_j mu_j) take its values. Relations and
+    Boolean combinations are rewritten argument by argument.
 
     Examples
     --------
-    >>> m = sp.Symbol("m", positive=True)
-    >>> Phi = sp.Symbol("Phi", negative=True)
-    >>> known_sign(-3*m*Phi), known_sign(Phi - m), known_sign(sp.Symbol("x"))
-    (1, -1, None)
-    >>> a = sp.Symbol("alpha", positive=True)
-    >>> known_sign(sp.sin(a)**2 + 1), known_sign(sp.sin(a)), known_sign(sp.sin(a), [sp.sin(a)])
-    (1, None, 1)
+    >>> a, b, kappa = sp.symbols("a b kappa", real=True)
+    >>> s = SignSymbol("s")
+    >>> present(a*b + a > 0, {b: kappa*s})
+    s*a*kappa + a > 0
+    >>> present(a*b, {b: kappa*s}, signs=(-1,))
+    -a*kappa
     """
-    stand_ins = {p: sp.Dummy(positive=True) for p in positive}
-    expr = sympy_only(expr, "the expression").subs(stand_ins)
-    if expr.is_positive:
-        return 1
-    if expr.is_negative:
-        return -1
-    return None
+    expr = sympy_only(expr, "the expression")
+    if not presentation or expr in (sp.true, sp.false):
+        return expr
+    if isinstance(expr, (sp.core.relational.Relational, sp.logic.boolalg.BooleanFunction)):
+        return expr.func(*[present(arg, presentation, signs) for arg in expr.args])
+    if signs is not None:
+        values = dict(zip(sign_symbols(len(signs)), signs))
+        presentation = {k: sp.sympify(v).subs(values) for k, v in presentation.items()}
+    replaced = expr.subs(presentation)
+    if isinstance(replaced, sp.MatrixBase):
+        return replaced.applyfunc(lambda e: reduce_signs(sp.cancel(sp.expand(e))))
+    return reduce_signs(sp.cancel(sp.expand(replaced)))

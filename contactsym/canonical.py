@@ -48,9 +48,9 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.polys.fields import FracField
 
-from .algebra import SignSymbol, known_sign, reduce_signs, reduce_trig
 from .fourier import best_form
 from .parse import sympy_only
+from .reductions import SignSymbol, known_sign, reduce_signs, reduce_trig
 
 __all__ = ["canonical", "Fraction", "TrigField", "to_fraction"]
 

@@ -60,7 +60,7 @@ def derivation_chain(name) -> str:
     lin = s.linearization()
     st = s.stability()
     lines = [f"scene {s.name}: {s.description}", "", "accelerations (1.4):"]
-    lines += [f"  {s._plain(q)}'' = {s._plain(g)}" for q, g in s.accelerations.items()]
+    lines += [f"  {s.plain(q)}'' = {s.plain(g)}" for q, g in s.accelerations.items()]
     lines += ["", "fast subsystem (2.1), tau = t/eps:"]
     lines += [f"  {eq.lhs} = {eq.rhs}" for eq in fast.equations]
     lines += ["", "equilibria f(u*) = 0 (4.2):"]
@@ -221,7 +221,7 @@ def _progress(message: str) -> None:
 
 
 def _report(names: list[str], out: str, pdf: bool, force: bool = False) -> int:
-    from .report import FigureSource, ReportError, conditions, summary_text, write_report
+    from .report import FigureSource, ReportError, conditions, summary_text, write_report  # brings matplotlib
 
     names = names or scene_names()
     scenes = [scene_or_file(name) for name in names]  # unknown names and bad files fail before any work
@@ -263,7 +263,7 @@ def _report(names: list[str], out: str, pdf: bool, force: bool = False) -> int:
 
 
 def _conditions(name: str, fmt: str, signs: str | None) -> int:
-    from .report import conditions
+    from .report import conditions  # the report brings matplotlib, which only the report commands need
 
     s = scene_or_file(name)
     pattern = None if signs is None else s.check_signs(parse_signs(signs))
@@ -290,7 +290,7 @@ def _bench(quick: bool, json_file: str | None, out: str = "contactsym-bench", fo
     if root not in sys.path:
         sys.path.insert(0, root)
     try:
-        from benchmarks.run import main as run_benchmarks
+        from benchmarks.run import main as run_benchmarks  # only in a source checkout, beside the package
     except ImportError as error:
         raise ContactsymError(
             f"the benchmarks are not installed ({error}); run contactsym bench from a source checkout."
@@ -355,7 +355,7 @@ def _run(args) -> int:
     if args.command == "bench":
         return _bench(args.quick, args.json, args.out, args.force)
     if args.command == "atlas":
-        from .atlas.cli import run_atlas
+        from .atlas.cli import run_atlas  # Dask and xarray, only when the atlas runs
 
         return run_atlas(args)
     print(derivation_chain(getattr(args, "scene", DEFAULT_SCENE)))

@@ -16,15 +16,23 @@ A_S of the closed contacts S, so its Hurwitz conditions are those of charpoly(A_
 from __future__ import annotations
 
 import itertools
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
 
 import sympy as sp
 
 from .algebra import normalize
-from .errors import ContactsymError, SingularJacobianError
+from .fast import solve_piece
+from .hurwitz import Hurwitz
+from .latex import Formula, Numbering, _repr_latex, signs_latex, tex
+from .linear import Linearization, charpoly
+from .stability import Stability
 
 __all__ = ["Branch", "Equilibria", "LiftOff"]
+
+#: The general theory's number of an equilibrium: (3.2) for k = 1, (4.2) beyond.
+NUMBERS = Numbering({"equilibrium": (("3.2",), ("4.2",), ("4.2",))})
 
 
 @dataclass(frozen=True)
@@ -42,52 +50,20 @@ class Branch:
     u_star: tuple
     condition: sp.Basic
 
+    def formulas(self, present: bool = False, own: dict | None = None) -> tuple[Formula, ...]:
+        """u* (3.2)/(4.2) and, on a sign pattern, where it exists; ``own``: the scene's paper numbers."""
+        k = len(self.u_star)
+        rows = []
+        for j, value in enumerate(self.u_star, 1):
+            lhs = "u^{*}" if k == 1 else f"u_{{{j}}}^{{*}}"
+            rows.append(NUMBERS.formula("equilibrium", lhs, value, k=k, own=own))
+        if self.signs:
+            where = r"\text{where } s = " + signs_latex(self.signs) + r":\ "
+            rows.append(Formula("existence", "", where + tex(self.condition), ""))
+        return tuple(rows)
+
     def _repr_latex_(self) -> str:
-        from .latex import _repr_latex
-
         return _repr_latex(self)
-
-
-def _solve_piece(f: sp.Matrix, u: tuple, signs: tuple) -> list[tuple]:
-    """Roots of one smooth piece: a linear solve when f is affine in u."""
-    polys = [fj.as_poly(*u) for fj in f]
-    if all(p is not None and p.total_degree() <= 1 for p in polys):
-        A, b = sp.linear_eq_to_matrix(list(f), list(u))
-        det = normalize(A.det(method="berkowitz"))
-        if det == 0:
-            raise SingularJacobianError(
-                f"det A = 0 on the piece with signs {signs}: the equilibria are not isolated and "
-                "f(u) = 0 cannot be solved for u; choose parameters with det A != 0."
-            )
-        adjugate = A.adjugate(method="berkowitz")
-        return [tuple(sp.factor_terms(sp.cancel(normalize(x) / det)) for x in adjugate * b)]
-    try:
-        solutions = sp.solve(list(f), list(u), dict=True)
-    except NotImplementedError:
-        solutions = []
-    if not solutions and _no_real_root(f, u):
-        return []
-    if not solutions:
-        raise ContactsymError(
-            f"sympy found no closed-form root of the piece {list(f)} with signs {signs}; "
-            "solve f(u) = 0 numerically (contactsym.numerics)."
-        )
-    return [tuple(sol[x] for x in u) for sol in solutions if all(x in sol for x in u)]
-
-
-def _no_real_root(f: sp.Matrix, u: tuple) -> bool:
-    """True when f is polynomial in u, SymPy finds all its complex roots and none is real
-    (u^2 + 1 = 0). An empty real solve alone proves nothing: it is also empty for
-    u^5 + u + a, and for other functions solve may return only some roots."""
-    if any(fj.as_poly(*u) is None for fj in f):
-        return False
-    free = [sp.Dummy() for _ in u]
-    try:
-        roots = sp.solve(list(f.xreplace(dict(zip(u, free)))), free, dict=True)
-    except NotImplementedError:
-        return False
-    complete = roots and all(all(z in root for z in free) for root in roots)
-    return bool(complete) and all(any(sp.im(root[z]).is_nonzero for z in free) for root in roots)
 
 
 @dataclass(frozen=True)
@@ -125,29 +101,25 @@ class LiftOff:
     stable: sp.Basic
 
 
-def _lift_offs(scene, patterns) -> list[LiftOff]:
-    from .hurwitz import Hurwitz
-    from .linear import charpoly
-
-    fast = scene.fast_subsystem()
+def _lift_offs(fast, patterns, stability_of) -> list[LiftOff]:
     u = fast.u
-    unilateral = [j for j, c in enumerate(scene.contacts) if c.unilateral]
+    unilateral = [j for j, pushes_only in enumerate(fast.unilateral) if pushes_only]
     found = []
     for size in range(1, len(unilateral) + 1):
         for opened in itertools.combinations(unilateral, size):
-            closed = [i for i in range(scene.k) if i not in opened]
+            closed = [i for i in range(fast.k) if i not in opened]
             at_zero = {u[j]: 0 for j in opened}
             for pattern in patterns:
                 f = fast.piece(pattern).subs(at_zero)
                 rest = sp.Matrix([f[i] for i in closed])
-                roots = _solve_piece(rest, tuple(u[i] for i in closed), pattern) if closed else [()]
+                roots = solve_piece(rest, tuple(u[i] for i in closed), pattern) if closed else [()]
                 for root in roots:
                     at = {**at_zero, **dict(zip((u[i] for i in closed), root))}
                     inside = [sp.Gt(sp.cancel(s * sw.subs(at)), 0) for s, sw in zip(pattern, fast.switching)]
                     inside = [c for c, sw in zip(inside, fast.switching) if not sw.has(*at_zero)]
                     pushing = [sp.Gt(at[u[i]], 0) for i in closed if i in unilateral]
                     opening = [sp.Gt(normalize(f[j].subs(at)), 0) for j in opened]
-                    lin = scene.linearization(signs=pattern)
+                    lin = stability_of(pattern).linearization
                     A = lin.A.extract(closed, closed)
                     poly = charpoly(A, [lin.Phi[i] for i in closed], [lin.Psi[i] for i in closed])
                     stable = sp.And(*[sp.Gt(c, 0) for c in Hurwitz(poly).conditions]) if closed else sp.true
@@ -166,21 +138,30 @@ class Equilibria:
     >>> eq = cs.scene("painleve-klein-rod").equilibria()
     >>> len(eq.branches)
     4
+
+    ``stability_of(signs)`` gives the Stability of a sign pattern (the scene passes its
+    cached one); by default it is built here from the fast subsystem.
     """
 
-    scene: object
-    signs: tuple | None
+    fast: object
+    signs: tuple | None = None
+    stability_of: Callable | None = None
+
+    def _stability(self, signs) -> Stability:
+        if self.stability_of is not None:
+            return self.stability_of(signs)
+        return Stability(Linearization(self.fast, signs))
 
     @cached_property
     def patterns(self) -> list[tuple]:
-        return [self.signs] if self.signs is not None else self.scene.sign_patterns()
+        return [self.signs] if self.signs is not None else self.fast.sign_patterns()
 
     @cached_property
     def branches(self) -> tuple[Branch, ...]:
-        fast = self.scene.fast_subsystem()
+        fast = self.fast
         branches = []
         for pattern in self.patterns:
-            for root in _solve_piece(fast.piece(pattern), fast.u, pattern):
+            for root in fast.roots(pattern):
                 at = dict(zip(fast.u, root))
                 inside = [sp.Gt(sp.cancel(s * sw.subs(at)), 0) for s, sw in zip(pattern, fast.switching)]
                 branches.append(Branch(pattern, root, sp.And(*inside)))
@@ -189,7 +170,7 @@ class Equilibria:
     @cached_property
     def lift_offs(self) -> tuple[LiftOff, ...]:
         """Equilibria with some unilateral contacts open (see the module docstring)."""
-        return tuple(_lift_offs(self.scene, self.patterns))
+        return tuple(_lift_offs(self.fast, self.patterns, self._stability))
 
     def stable(self, equilibrium) -> sp.Basic:
         """Where an equilibrium (a Branch or a LiftOff) is asymptotically stable for the scene's laws.
@@ -205,7 +186,7 @@ class Equilibria:
         """
         if isinstance(equilibrium, LiftOff):
             return equilibrium.stable
-        return sp.And(*[sp.Gt(h, 0) for h in self.scene.stability(equilibrium.signs).hurwitz])
+        return sp.And(*[sp.Gt(h, 0) for h in self._stability(equilibrium.signs).hurwitz])
 
     def __iter__(self):
         return iter(self.branches)
@@ -213,7 +194,9 @@ class Equilibria:
     def __len__(self) -> int:
         return len(self.branches)
 
-    def _repr_latex_(self) -> str:
-        from .latex import _repr_latex
+    def formulas(self, present: bool = False) -> tuple[Formula, ...]:
+        """Every branch's u* and where it exists: see :func:`contactsym.latex.formulas`."""
+        return tuple(row for branch in self.branches for row in branch.formulas(own=self.fast.paper_equations))
 
+    def _repr_latex_(self) -> str:
         return _repr_latex(self)

@@ -8,17 +8,22 @@ deformations and their rates set to zero, the slow state frozen and N = u.
 
 from __future__ import annotations
 
+import itertools
 import logging
 from dataclasses import dataclass
 from functools import cached_property
 
 import sympy as sp
 
-from .algebra import normalize
-from .errors import SceneError
-from .scene import t
+from .algebra import normalize, present
+from .errors import ContactsymError, SceneError, SingularJacobianError
+from .latex import Formula, Numbering, _repr_latex, prime, tex
+from .mechanics import solve_fraction_free, t
 
-__all__ = ["FastSubsystem", "switching_functions", "on_piece"]
+__all__ = ["FastSubsystem", "switching_functions", "on_piece", "solve_piece"]
+
+#: The general theory's numbers of the fast subsystem: (3.1) for k = 1, (4.1) for k = 2, (2.1) beyond.
+NUMBERS = Numbering({key: (("3.1",), ("4.1",), ("2.1",)) for key in ("fast", "f", "law")})
 
 #: Stage messages for long derivations: ``logging.basicConfig(level=logging.INFO)`` shows them.
 log = logging.getLogger("contactsym")
@@ -85,8 +90,6 @@ def contact_accelerations(scene, u, *, load: bool) -> list[sp.Expr]:
     part of g_j'' without accelerations; see :mod:`contactsym.mechanics`. The linearization
     needs only the reaction part, so a large load is never derived for it.
     """
-    from .mechanics import solve_fraction_free
-
     space = scene.contact_space
     log.info(
         "scene '%s': contact space (%s), adj(M) of the %d x %d mass matrix",
@@ -101,7 +104,7 @@ def contact_accelerations(scene, u, *, load: bool) -> list[sp.Expr]:
     positions = {k: v for k, v in scene.manifold.items() if k not in rate_symbols}
 
     def place(expr):
-        return scene._plain(expr).subs(positions)
+        return scene.plain(expr).subs(positions)
 
     M, W = space.M.applyfunc(place), space.W.applyfunc(place)
     if load:
@@ -115,6 +118,55 @@ def contact_accelerations(scene, u, *, load: bool) -> list[sp.Expr]:
     to_u = dict(zip(scene.reactions, u))
     multipliers = [*u] + [scene.freeze(term[1]).subs(to_u) for term in frozen]
     return [sp.Add(*[c[i] * w for c, w in zip(columns, multipliers)]) for i in range(scene.k)]
+
+
+def solve_piece(f: sp.Matrix, u: tuple, signs: tuple) -> list[tuple]:
+    """Roots of one smooth piece ``f`` of the fast subsystem: a linear solve when f is affine in u.
+
+    Examples
+    --------
+    >>> u, a = sp.symbols("u a", real=True)
+    >>> solve_piece(sp.Matrix([2*u - a]), (u,), (1,))
+    [(a/2,)]
+    """
+    polys = [fj.as_poly(*u) for fj in f]
+    if all(p is not None and p.total_degree() <= 1 for p in polys):
+        A, b = sp.linear_eq_to_matrix(list(f), list(u))
+        det = normalize(A.det(method="berkowitz"))
+        if det == 0:
+            raise SingularJacobianError(
+                f"det A = 0 on the piece with signs {signs}: the equilibria are not isolated and "
+                "f(u) = 0 cannot be solved for u; choose parameters with det A != 0."
+            )
+        adjugate = A.adjugate(method="berkowitz")
+        return [tuple(sp.factor_terms(sp.cancel(normalize(x) / det)) for x in adjugate * b)]
+    try:
+        solutions = sp.solve(list(f), list(u), dict=True)
+    except NotImplementedError:
+        solutions = []
+    if not solutions and _no_real_root(f, u):
+        return []
+    if not solutions:
+        raise ContactsymError(
+            f"sympy found no closed-form root of the piece {list(f)} with signs {signs}; "
+            "solve f(u) = 0 numerically (contactsym.numerics)."
+        )
+    return [tuple(sol[x] for x in u) for sol in solutions if all(x in sol for x in u)]
+
+
+def _no_real_root(f: sp.Matrix, u: tuple) -> bool:
+    """True when f is polynomial in u, SymPy finds all its complex roots and none is real
+    (u^2 + 1 = 0). An empty real solve alone proves nothing: it is also empty for
+    u^5 + u + a, and for other functions solve may return only some roots."""
+    if any(fj.as_poly(*u) is None for fj in f):
+        return False
+    free = [sp.Dummy() for _ in u]
+    try:
+        roots = sp.solve(list(f.xreplace(dict(zip(u, free)))), free, dict=True)
+    except NotImplementedError:
+        return False
+    complete = roots and all(all(z in root for z in free) for root in roots)
+    return bool(complete) and all(any(sp.im(root[z]).is_nonzero for z in free) for root in roots)
 
 
 @dataclass(frozen=True, eq=False)
@@ -140,13 +192,67 @@ class FastSubsystem:
     >>> fs = cs.scene("sliding-point").fast_subsystem()
     >>> fs.rhs.T
     Matrix([[-2*b*(u/m + Y(x, xdot)/m) - v, u/m + Y(x, xdot)/m]])
+
+    Built from the scene (its only input, as ``scene``), it carries what every later stage
+    needs: the sign patterns and fixed signs, the positive expressions, the presentation,
+    the paper's numbers of the scene. A Linearization, Equilibria or Stability never asks
+    the scene.
     """
 
     scene: object
 
-    @property
+    @cached_property
     def k(self) -> int:
         return self.scene.k
+
+    @cached_property
+    def name(self) -> str:
+        return self.scene.name
+
+    @cached_property
+    def paper_equations(self) -> dict:
+        """The paper's own equation numbers of the scene, ``{formula key: (numbers, note)}``."""
+        return self.scene.equations
+
+    @cached_property
+    def positive(self) -> tuple:
+        """Expressions positive throughout the scene's domain (see ``Scene.positive_expressions``)."""
+        return self.scene.positive_expressions
+
+    @cached_property
+    def presentation(self) -> dict:
+        return self.scene.presentation
+
+    def present(self, expr: sp.Expr, signs=None) -> sp.Expr:
+        """``expr`` in the scene's presentation variables (see :func:`contactsym.algebra.present`)."""
+        return present(expr, self.presentation, signs)
+
+    @cached_property
+    def unilateral(self) -> tuple[bool, ...]:
+        """For each contact: True when it only pushes and may open."""
+        return tuple(c.unilateral for c in self.scene.contacts)
+
+    @cached_property
+    def compliances(self) -> tuple:
+        """The compliance law (1.5) of each contact."""
+        return tuple(c.compliance for c in self.scene.contacts)
+
+    @cached_property
+    def fixed_signs(self) -> dict:
+        """Switching functions whose sign the scene fixes (unilateral contacts: u_j > 0)."""
+        return {u: 1 for u, unilateral in zip(self.u, self.unilateral) if unilateral}
+
+    def sign_patterns(self) -> list[tuple[int, ...]]:
+        """All admissible sign patterns of the switching functions (fixed ones kept)."""
+        choices = [(self.fixed_signs[s],) if s in self.fixed_signs else (1, -1) for s in self.switching]
+        return list(itertools.product(*choices))
+
+    @cached_property
+    def parameters(self) -> tuple[sp.Symbol, ...]:
+        """The symbols other than u, v: loads, geometry, frozen state."""
+        exprs = list(self.f) + list(self.Phi) + list(self.Psi)
+        free = set().union(*(e.free_symbols for e in exprs)) - set(self.u) - set(self.v)
+        return tuple(sorted(free, key=str))
 
     def _names(self, letter: str) -> tuple[sp.Symbol, ...]:
         if self.k == 1:
@@ -186,7 +292,7 @@ class FastSubsystem:
     @cached_property
     def _laws(self) -> tuple[tuple[sp.Expr, sp.Expr], ...]:
         index = (lambda j: None) if self.k == 1 else (lambda j: j + 1)
-        return tuple(c.compliance.phi_psi(self.u[j], self.v[j], index(j)) for j, c in enumerate(self.scene.contacts))
+        return tuple(law.phi_psi(self.u[j], self.v[j], index(j)) for j, law in enumerate(self.compliances))
 
     @cached_property
     def Phi(self) -> tuple[sp.Expr, ...]:
@@ -220,7 +326,7 @@ class FastSubsystem:
     @cached_property
     def constant_laws(self) -> bool:
         """True when every Phi_j, Psi_j is constant (Proposition 5 applies for k = 1)."""
-        return all(c.compliance.constant for c in self.scene.contacts)
+        return all(law.constant for law in self.compliances)
 
     def piece(self, signs) -> sp.Matrix:
         """f on the piece of a sign pattern (numbers or symbols)."""
@@ -231,12 +337,30 @@ class FastSubsystem:
         piece = self._depends_on_u.applyfunc(lambda e: on_piece(e, self.switching, signs, self.u))
         return piece.jacobian(self.u)
 
+    def roots(self, signs) -> list[tuple]:
+        """The roots u* of f on the piece of a sign pattern (see :func:`solve_piece`)."""
+        return solve_piece(self.piece(signs), self.u, signs)
+
     @cached_property
     def equations(self) -> list[sp.Eq]:
         """The equations (2.1) as ``Eq(Symbol("u_j'"), ...)``, for display."""
         return [sp.Eq(sp.Symbol(f"{x}'"), r) for x, r in zip(self.state, self.rhs)]
 
-    def _repr_latex_(self) -> str:
-        from .latex import _repr_latex
+    def formulas(self, present: bool = False) -> tuple[Formula, ...]:
+        """(2.1) in the form (3.1)/(4.1), and each f_j(u): see :func:`contactsym.latex.formulas`."""
+        u = self.u
+        names = ["f"] if self.k == 1 else [f"f_{j}" for j in range(1, self.k + 1)]
+        f_of_u = [sp.Function(name)(*u) for name in names]
 
+        def row(key, lhs, rhs):
+            return NUMBERS.formula(key, lhs, rhs, k=self.k, own=self.paper_equations)
+
+        rows = []
+        for j in range(self.k):
+            rows.append(row("fast", prime(u[j]), self.Phi[j] * self.v[j] + self.Psi[j] * f_of_u[j]))
+            rows.append(row("fast", prime(self.v[j]), f_of_u[j]))
+        rows += [row("f", tex(f_of_u[j]), self.f[j]) for j in range(self.k)]
+        return tuple(rows)
+
+    def _repr_latex_(self) -> str:
         return _repr_latex(self)

@@ -17,6 +17,8 @@ from functools import cache, cached_property
 
 import sympy as sp
 
+from .latex import Formula
+
 __all__ = ["hurwitz_matrix", "hurwitz_minors", "lienard_chipart", "hopf_omega_squared", "Hurwitz"]
 
 _z = sp.Symbol("z")
@@ -202,3 +204,7 @@ class Hurwitz:
     @cached_property
     def omega_squared(self) -> sp.Expr | None:
         return hopf_omega_squared(self.poly)
+
+    def formulas(self, present: bool = False) -> tuple[Formula, ...]:
+        """The conditions h_i > 0 of (4.7): see :func:`contactsym.latex.formulas`."""
+        return tuple(Formula("hurwitz", f"h_{{{i}}}", c, "", ("4.7",)) for i, c in enumerate(self.conditions, 1))

@@ -20,8 +20,18 @@ import sympy as sp
 from .algebra import normalize, sign_symbols
 from .canonical import to_fraction
 from .errors import ContactsymError
+from .latex import Formula, Numbering, _repr_latex
 
 __all__ = ["lam", "charpoly", "principal_minors", "Linearization"]
+
+#: The general theory's numbers: A is (3.2) for k = 1 and (4.3) beyond; (4.5) and (4.6) for k >= 2.
+NUMBERS = Numbering(
+    {
+        "A": (("3.2",), ("4.3",), ("4.3",)),
+        "matrix": ((), ("4.5",), ("4.5",)),
+        "charpoly": ((), ("4.6",), ("4.6",)),
+    }
+)
 
 
 log = logging.getLogger("contactsym")
@@ -96,12 +106,13 @@ class Linearization:
     mu**2*sin(alpha)**2/m**2 + sin(alpha)**2/m**2
     """
 
-    scene: object
-    signs: tuple | None
+    fast: object
+    signs: tuple | None = None
 
-    @cached_property
-    def fast(self):
-        return self.scene.fast_subsystem()
+    @property
+    def scene(self):
+        """The scene of the fast subsystem, for callers that need its mechanics (no stage does)."""
+        return self.fast.scene
 
     @cached_property
     def sign_values(self) -> tuple:
@@ -110,7 +121,7 @@ class Linearization:
             return self.signs
         switching = self.fast.switching
         symbols = sign_symbols(len(switching))
-        return tuple(self.scene.fixed_signs.get(sw, s) for sw, s in zip(switching, symbols))
+        return tuple(self.fast.fixed_signs.get(sw, s) for sw, s in zip(switching, symbols))
 
     @cached_property
     def f(self) -> sp.Matrix:
@@ -128,15 +139,13 @@ class Linearization:
     @cached_property
     def u_star(self) -> dict:
         """{u_j: u_j*} when this piece has exactly one equilibrium, else {} (Phi, Psi stay in u)."""
-        from .equilibria import Equilibria
-
         if self.fast.constant_laws:
             return {}
         try:
-            branches = Equilibria(self.scene, tuple(self.sign_values)).branches
+            roots = self.fast.roots(tuple(self.sign_values))
         except ContactsymError:
             return {}
-        return dict(zip(self.fast.u, branches[0].u_star)) if len(branches) == 1 else {}
+        return dict(zip(self.fast.u, roots[0])) if len(roots) == 1 else {}
 
     def _at_equilibrium(self, values) -> tuple:
         """The law's values at the equilibrium: v = 0 and, for a law that depends on u, u = u*."""
@@ -158,12 +167,22 @@ class Linearization:
 
     @cached_property
     def charpoly(self) -> sp.Poly:
-        log.info(
-            "scene '%s': characteristic polynomial (4.6) from %d principal minors", self.scene.name, 2**self.A.rows
+        log.info("scene '%s': characteristic polynomial (4.6) from %d principal minors", self.fast.name, 2**self.A.rows)
+        return charpoly(self.A, self.Phi, self.Psi, self.fast.positive)
+
+    def formulas(self, present: bool = False) -> tuple[Formula, ...]:
+        """A (4.3), det A, the matrix (4.5) and p(lambda) (4.6); ``present``: in the presentation variables."""
+        show = self.fast.present if present else (lambda expr: expr)
+
+        def row(key, lhs, rhs):
+            return NUMBERS.formula(key, lhs, show(rhs), k=self.A.rows, own=self.fast.paper_equations)
+
+        return (
+            row("A", "A", self.A),
+            row("det A", r"\det A", self.det_A),
+            row("matrix", "J", self.matrix),
+            row("charpoly", r"p(\lambda)", self.charpoly.as_expr()),
         )
-        return charpoly(self.A, self.Phi, self.Psi, self.scene.positive_expressions)
 
     def _repr_latex_(self) -> str:
-        from .latex import _repr_latex
-
         return _repr_latex(self)

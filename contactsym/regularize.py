@@ -19,9 +19,13 @@ import sympy as sp
 from .algebra import normalize
 from .errors import ContactsymError
 from .fast import on_piece
-from .scene import t
+from .latex import Formula, Numbering, _repr_latex, prime, tex
+from .mechanics import t
 
 __all__ = ["Regularized", "ReducedSystem"]
+
+#: The system (1.9) and the comparison system (2.2), for any number of contacts.
+NUMBERS = Numbering({"regularized": (("1.9",),) * 3, "reduced": (("2.2",),) * 3})
 
 
 @dataclass(frozen=True, eq=False)
@@ -88,13 +92,13 @@ class Regularized:
 
     @cached_property
     def x(self) -> sp.Matrix:
-        plain = [self.scene._plain(q) for q in self.slow_coordinates]
-        rates = [self.scene._plain(sp.diff(q, t)) for q in self.slow_coordinates]
+        plain = [self.scene.plain(q) for q in self.slow_coordinates]
+        rates = [self.scene.plain(sp.diff(q, t)) for q in self.slow_coordinates]
         return sp.Matrix([sp.Symbol("t", real=True), *plain, *rates])
 
     @cached_property
     def X(self) -> sp.Matrix:
-        rates = [self.scene._plain(sp.diff(q, t)) for q in self.slow_coordinates]
+        rates = [self.scene.plain(sp.diff(q, t)) for q in self.slow_coordinates]
         accelerations = [self._on_fast(self.scene.accelerations[q]) for q in self.slow_coordinates]
         return sp.Matrix([1, *rates, *accelerations])
 
@@ -109,9 +113,16 @@ class Regularized:
         du = [fast.Phi[j] * fast.v[j] + fast.Psi[j] * G[j] for j in range(self.scene.k)]
         return sp.Matrix(du + G)
 
-    def _repr_latex_(self) -> str:
-        from .latex import _repr_latex
+    def formulas(self, present: bool = False) -> tuple[Formula, ...]:
+        """x' = eps X and y' = Y, row by row (1.9): see :func:`contactsym.latex.formulas`."""
 
+        def row(lhs, rhs):
+            return NUMBERS.formula("regularized", lhs, rhs, k=self.scene.k, own=self.scene.equations)
+
+        rows = [row(prime(x), self.eps * X) for x, X in zip(self.x, self.X)]
+        return tuple(rows + [row(prime(y), Y) for y, Y in zip(self.y, self.Y)])
+
+    def _repr_latex_(self) -> str:
         return _repr_latex(self)
 
 
@@ -160,7 +171,7 @@ class ReducedSystem:
     @cached_property
     def coordinates(self) -> tuple:
         """Plain symbols of the coordinates that the contacts leave free to move."""
-        return tuple(self.scene._plain(q) for q in self.scene.free_coordinates)
+        return tuple(self.scene.plain(q) for q in self.scene.free_coordinates)
 
     @cached_property
     def accelerations(self) -> dict:
@@ -170,12 +181,22 @@ class ReducedSystem:
         u_star = dict(zip(fast.u, self.branch.u_star))
         accelerations = {}
         for q, g in scene.accelerations.items():
-            if scene._plain(q) in self.coordinates:
+            if scene.plain(q) in self.coordinates:
                 on_piece_g = on_piece(scene.freeze(g).subs(to_u), fast.switching, self.branch.signs, fast.u)
-                accelerations[scene._plain(q)] = sp.cancel(normalize(on_piece_g.subs(u_star)))
+                accelerations[scene.plain(q)] = sp.cancel(normalize(on_piece_g.subs(u_star)))
         return accelerations
 
-    def _repr_latex_(self) -> str:
-        from .latex import _repr_latex
+    def formulas(self, present: bool = False) -> tuple[Formula, ...]:
+        """N = u* and the accelerations (2.2), and where the branch exists."""
 
+        def row(lhs, rhs):
+            return NUMBERS.formula("reduced", lhs, rhs, k=self.scene.k, own=self.scene.equations)
+
+        rows = [row(tex(n), value) for n, value in self.reactions.items()]
+        rows += [row(r"\ddot{" + tex(q) + "}", value) for q, value in self.accelerations.items()]
+        if self.branch.signs:
+            rows.append(Formula("existence", "", r"\text{where } " + tex(self.condition), ""))
+        return tuple(rows)
+
+    def _repr_latex_(self) -> str:
         return _repr_latex(self)

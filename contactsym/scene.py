@@ -1,130 +1,67 @@
 """Scenes: a mechanical system with compliant frictional contacts, written once.
 
 A scene holds the accelerations (1.4) ``q'' = G(t, q, q', N)`` of its coordinates and
-its contacts. Each contact has a gap: a coordinate that must vanish (1.1), or a gap
-function ``g_j(q)`` for Lagrangian scenes. Every later stage of the pipeline is computed
-lazily from the scene and cached on it.
+its contacts (:mod:`contactsym.contact`). Each contact has a gap: a coordinate that must
+vanish (1.1), or a gap function ``g_j(q)`` for Lagrangian scenes. The scene is this
+mechanical input plus a thin cache: the fast subsystem is derived from it, and every
+later stage from the stage before (``Linearization(fast, signs)``, ``Stability(lin)``,
+``Equilibria(fast)``), computed on first request and cached here.
 """
 
 from __future__ import annotations
 
-import itertools
-from dataclasses import dataclass
 from functools import cached_property
 
 import sympy as sp
-from sympy.physics.mechanics import dynamicsymbols
 
-from .algebra import known_sign
-from .errors import SceneError, SignPatternError
-from .laws import Compliance, Coulomb, Generic, Viscous
+from . import equilibria as _equilibria
+from . import fast as _fast
+from . import linear as _linear
+from . import regularize as _regularize
+from . import stability as _stability
+from .algebra import known_sign, present
+from .canonical import present_factor
+from .contact import Contact, contact_manifold, plain_symbol
+from .counts import count_regions
+from .equilibria import Equilibria
+from .errors import SignPatternError
+from .fast import FastSubsystem
+from .latex import Formula, Numbering, _repr_latex, tex
+from .linear import Linearization
+from .mechanics import contact_space, mass_determinant, t
 from .parse import sympy_only
-from .validate import (
-    contact_fields,
-    finite_expression,
-    lagrangian_parts,
-    positive_parameter,
-    reactions_act,
-    scene_options,
-    scene_parts,
-    shorten,
-    sign_pattern,
+from .regions import scene_regions
+from .regularize import ReducedSystem, Regularized
+from .sceneinput import check_eps, check_equations, check_scene, with_friction
+from .stability import Stability
+from .validate import lagrangian_parts, scene_options, scene_parts, shorten, sign_pattern
+
+__all__ = ["Contact", "Scene", "paper_equations", "plain_symbol", "t"]
+
+#: The scene's own formulas: the accelerations (1.4), for any number of contacts.
+NUMBERS = Numbering({"accelerations": (("1.4",),) * 3, "contact accelerations": (("1.4",),) * 3})
+
+#: The general theory's numbers of every stage's formulas.
+GENERAL_NUMBERS = (
+    NUMBERS | _regularize.NUMBERS | _fast.NUMBERS | _equilibria.NUMBERS | _linear.NUMBERS | _stability.NUMBERS
 )
 
-__all__ = ["Contact", "Scene", "t"]
 
-t = dynamicsymbols._t
+def paper_equations(scene, key: str, detail: str | None = None) -> tuple[tuple, str]:
+    """The paper's equation numbers and a note for a formula of ``scene`` (any object with ``k``).
 
-
-@dataclass(frozen=True)
-class Contact:
-    """One compliant contact.
-
-    Parameters
-    ----------
-    coordinate : sympy expression
-        The coordinate q_j of (1.1) that vanishes for rigid contact (a dynamicsymbol
-        among the scene's coordinates), or, for ``Scene.from_lagrangian``, a gap
-        function g_j(q) whose zero set is the contact.
-    reaction : sympy.Symbol
-        The normal reaction N_j, as it appears in the accelerations.
-    compliance : Compliance, optional
-        The law (1.5). Default: ``Generic()``, any admissible law.
-    friction : Coulomb or Viscous, optional
-        A friction law attached to this contact; its force is added to the equations.
-    unilateral : bool
-        True when the contact can only push (N >= 0) and may open; then only
-        equilibria with u_j > 0 are admissible. False (default): bilateral.
+    The general theory's numbers (by the number of contacts k) come first, then the numbers
+    of the paper's example that the scene reproduces (its ``equations``).
 
     Examples
     --------
-    >>> import sympy as sp
-    >>> from sympy.physics.mechanics import dynamicsymbols
-    >>> Contact(coordinate=dynamicsymbols("y"), reaction=sp.Symbol("N"))
-    Contact(y(t), N, Generic())
+    >>> import contactsym as cs
+    >>> paper_equations(cs.scene("painleve-klein-guides"), "A")
+    (('4.3', '5.4'), '')
+    >>> paper_equations(cs.scene("brake"), "stable for every law")
+    (('4.4', '6.3'), 'Proposition 6; with equality allowed: erratum 12')
     """
-
-    coordinate: sp.Expr
-    reaction: sp.Symbol
-    compliance: Compliance | None = None
-    friction: Coulomb | Viscous | None = None
-    unilateral: bool = False
-
-    def __post_init__(self):
-        contact_fields(self.coordinate, self.compliance, self.friction, self.unilateral)
-        if self.compliance is None:
-            object.__setattr__(self, "compliance", Generic())
-        object.__setattr__(self, "coordinate", sympy_only(self.coordinate, "the gap of a contact"))
-        if not isinstance(self.reaction, sp.Symbol):
-            raise SceneError(f"the reaction of a contact must be a sympy Symbol, not {shorten(self.reaction)}.")
-
-    def __repr__(self) -> str:
-        side = ", unilateral" if self.unilateral else ""
-        return f"Contact({self.coordinate}, {self.reaction}, {self.compliance!r}{side})"
-
-
-def _plain(symbol: sp.Expr, suffix: str = "") -> sp.Symbol:
-    """A plain real symbol for a frozen coordinate q(t) or its rate ('qdot', 'xdot_1': printed with a dot)."""
-    name = symbol.func.__name__ if isinstance(symbol, sp.core.function.AppliedUndef) else str(symbol)
-    base, underscore, index = name.partition("_")
-    return sp.Symbol(base + suffix + underscore + index, real=True)
-
-
-def _solve_linear(equations: list[sp.Expr], candidates: list[sp.Symbol]) -> dict:
-    """Solve equations, linear in some of the candidates, uniquely for the fewest of them."""
-    equations = [e for e in (sp.expand(e) for e in equations) if e != 0]
-    for size in range(1, len(equations) + 1):
-        for chosen in itertools.combinations(candidates, size):
-            polys = [e.as_poly(*chosen) for e in equations]
-            if any(p is None or p.total_degree() > 1 for p in polys):
-                continue
-            if any(c.free_symbols & set(chosen) for p in polys for c in p.coeffs()):
-                continue
-            solutions = sp.linsolve(equations, list(chosen))
-            if not isinstance(solutions, sp.FiniteSet) or len(solutions) != 1:
-                continue
-            solution = dict(zip(chosen, next(iter(solutions))))
-            if any(v.has(*chosen) for v in solution.values()):
-                continue
-            if all(sp.expand(e.subs(solution)) == 0 for e in equations):
-                return {c: sp.cancel(v) for c, v in solution.items()}
-    return {}
-
-
-def _check_eps(eps) -> sp.Expr:
-    """eps is the small positive parameter of (1.6): a positive symbol or number."""
-    if eps is None:
-        return sp.Symbol("epsilon", positive=True)
-    why = "it is the small time scale of the deformations (1.6)"
-    eps = sympy_only(eps, "eps")
-    positive_parameter(eps, "eps", why)
-    if eps.is_positive:
-        return eps
-    if eps.is_positive is False:
-        raise SceneError(f"eps = {shorten(eps)} must be > 0: {why}.")
-    raise SceneError(
-        f"cannot show eps = {shorten(eps)} > 0; use sympy.Symbol('epsilon', positive=True) or a positive number."
-    )
+    return GENERAL_NUMBERS(key, getattr(scene, "k", 2), getattr(scene, "equations", None), detail)
 
 
 class Scene:
@@ -158,6 +95,9 @@ class Scene:
         The parameter that closed-form regions are solved for where possible.
     eps : Symbol or number, optional
         The small parameter of (1.6); a positive symbol ``epsilon`` by default.
+    equations : dict, optional
+        The paper's equation numbers of the example the scene reproduces,
+        ``{formula key: (numbers, note)}`` (a built-in scene passes its module's ``EQUATIONS``).
 
     Examples
     --------
@@ -187,6 +127,7 @@ class Scene:
         description: str = "",
         eps: sp.Symbol | None = None,
         contact_space=None,
+        equations: dict | None = None,
     ):
         derived = contact_space is not None
         coordinates, accelerations, contacts = scene_parts(coordinates, accelerations, contacts, derived=derived)
@@ -199,17 +140,19 @@ class Scene:
         self.contact_space = contact_space
         if accelerations is not None:
             self.accelerations = dict(zip(self.coordinates, (sympy_only(g, "an acceleration") for g in accelerations)))
-        self.eps = _check_eps(eps)
+        self.eps = check_eps(eps)
         self.at = {sympy_only(k, "a key of at"): sympy_only(v, "a value of at") for k, v in (at or {}).items()}
         self.presentation = {
             sympy_only(k, "a presentation key"): sympy_only(v, "a presentation value")
             for k, v in (presentation or {}).items()
         }
-        self._declared_positive = tuple(self._plain(e) for e in positive)
+        self._declared_positive = tuple(self.plain(e) for e in positive)
+        #: The paper's own equation numbers of this scene, {formula key: (numbers, note)}.
+        self.equations = check_equations(equations)
         #: The parameter that closed-form regions are solved for, where possible.
         self.solve_for = solve_for
         self._stage_cache: dict = {}
-        self._check(accelerations, parameters)
+        check_scene(self, parameters)
 
     # --- construction ------------------------------------------------------------
 
@@ -232,27 +175,7 @@ class Scene:
         -mu*Abs(N)
         """
         coordinates, accelerations, contacts = scene_parts(coordinates, accelerations, contacts)
-        accelerations = [sympy_only(g, "an acceleration") for g in accelerations]
-        for contact in contacts:
-            if contact.coordinate not in coordinates:
-                raise SceneError(
-                    f"contact coordinate {contact.coordinate} is not among the coordinates "
-                    f"{list(coordinates)}; add it, or use Scene.from_lagrangian for a gap function."
-                )
-            law = contact.friction
-            if law is None:
-                continue
-            if not isinstance(law.direction, dict):
-                raise SceneError("with from_accelerations, give a friction direction as {coordinate: coefficient}.")
-            for coordinate, coefficient in law.direction.items():
-                if coordinate not in coordinates:
-                    raise SceneError(
-                        f"the friction direction names {coordinate}, which is not among the coordinates "
-                        f"{list(coordinates)}; use one of them."
-                    )
-                index = list(coordinates).index(coordinate)
-                slip = sp.diff(coordinate, t)
-                accelerations[index] -= law.magnitude(contact.reaction, slip) * coefficient
+        accelerations = with_friction(coordinates, accelerations, contacts)
         return cls(coordinates, accelerations, contacts, **options)
 
     @classmethod
@@ -261,8 +184,6 @@ class Scene:
 
         See :func:`contactsym.mechanics.lagrangian_accelerations`.
         """
-        from .mechanics import contact_space
-
         coordinates, _, contacts = scene_parts(coordinates, None, contacts, derived=True)
         lagrangian = sympy_only(lagrangian, "the Lagrangian")
         lagrangian_parts(lagrangian, loads, frame)
@@ -276,9 +197,6 @@ class Scene:
         on the contact manifold that is not a monomial (when it is irreducible)."""
         if self.contact_space is None:
             return self._declared_positive
-        from .canonical import present_factor
-        from .mechanics import mass_determinant
-
         inverse = mass_determinant(self.contact_space.M.applyfunc(self.freeze))
         monomial, rest = inverse.denominator_split()
         sign = known_sign(monomial / inverse.numerator_expr(), self._declared_positive)
@@ -291,46 +209,6 @@ class Scene:
     def accelerations(self) -> dict:
         """q'' for each coordinate (1.4); for a Lagrangian scene built on first request."""
         return dict(zip(self.coordinates, self.contact_space.accelerations))
-
-    def _check(self, accelerations, parameters) -> None:
-        if not self.contacts:
-            raise SceneError("a scene needs at least one Contact.")
-        for contact in self.contacts:
-            q = contact.coordinate
-            if isinstance(q, sp.core.function.AppliedUndef) and q not in self.coordinates:
-                raise SceneError(
-                    f"contact coordinate {q} is not among the coordinates {list(self.coordinates)}; add it."
-                )
-        reactions = {c.reaction for c in self.contacts}
-        if len(reactions) != len(self.contacts):
-            raise SceneError("two contacts share one reaction symbol; give each contact its own.")
-        if self.contact_space is not None:  # Lagrangian: the gap gradients carry the reactions
-            space = self.contact_space
-            stated = [*space.M, *space.F, *space.W] + [
-                x for term in space.friction if term for x in (*term[0], term[1])
-            ]
-            for g in stated:
-                finite_expression(sp.sympify(g), "a term of the equations of motion")
-        else:
-            for q, g in self.accelerations.items():
-                finite_expression(g, f"the acceleration of {q}")
-            if len(self.accelerations) != len(self.coordinates):
-                raise SceneError("give each coordinate exactly one acceleration.")
-            if not any(g.has(*reactions) for g in self.accelerations.values()):
-                raise SceneError(
-                    f"no acceleration depends on the reactions {sorted(map(str, reactions))}; "
-                    "the contacts must act on the system (check the reaction symbols)."
-                )
-            reactions_act(self.accelerations, self.contacts)
-            stated = list(self.accelerations.values())
-        if parameters is not None:
-            declared = set(parameters) | reactions | {self.eps}
-            unknown = {s for g in stated for s in sp.sympify(g).free_symbols} - declared - {t}
-            if unknown:
-                raise SceneError(
-                    f"symbols {sorted(map(str, unknown))} are not among the declared parameters; "
-                    "declare them or fix the spelling."
-                )
 
     # --- the contact manifold (1.1) ----------------------------------------------
 
@@ -356,13 +234,16 @@ class Scene:
     @cached_property
     def frozen_symbols(self) -> dict:
         """Plain symbols for the slow state frozen in the fast subsystem: q(t) -> q, q' -> qdot."""
-        symbols = {sp.diff(q, t): _plain(q, "dot") for q in self.coordinates}
-        symbols.update({q: _plain(q) for q in self.coordinates})
+        symbols = {sp.diff(q, t): plain_symbol(q, "dot") for q in self.coordinates}
+        symbols.update({q: plain_symbol(q) for q in self.coordinates})
         return symbols
 
-    def _plain(self, expr: sp.Expr) -> sp.Expr:
+    def plain(self, expr: sp.Expr) -> sp.Expr:
+        """``expr`` with the slow state in plain symbols: q(t) -> q, q'(t) -> qdot (see ``frozen_symbols``)."""
         rates = {d: s for d, s in self.frozen_symbols.items() if isinstance(d, sp.Derivative)}
         return sympy_only(expr, "the expression").subs(rates).subs(self.frozen_symbols)
+
+    _plain = plain  # the former private name, still used by contactsym.numerics
 
     @cached_property
     def manifold(self) -> dict:
@@ -371,54 +252,30 @@ class Scene:
         Coordinates and rates are eliminated where the gaps are linear in them; the
         scene's ``at`` mapping (coordinates or parameters at contact) fixes the rest.
         """
-        at = {self._plain(key): self._plain(value) for key, value in self.at.items()}
-        gaps = [self._plain(g).subs(at) for g in self.gaps]
-        positions = [self.frozen_symbols[q] for q in reversed(self.coordinates)]
-        at.update(_solve_linear(gaps, [p for p in positions if p not in at]))
-        residual = [g for g in (sp.expand(g.subs(at)) for g in gaps) if g != 0]
-        if residual:
-            raise SceneError(
-                f"cannot place the state on the contact manifold: gaps {residual} do not vanish; "
-                "pass at={...} giving coordinates or parameters at contact."
-            )
-        rates = [self._plain(sp.diff(g, t)).subs(at) for g in self.gaps]
-        # eliminate first the rates of the coordinates whose positions the gaps fixed
-        order = sorted(reversed(self.coordinates), key=lambda q: self.frozen_symbols[q] not in at)
-        velocities = [self.frozen_symbols[sp.diff(q, t)] for q in order]
-        at.update(_solve_linear(rates, velocities))
-        if any(sp.expand(r.subs(at)) != 0 for r in rates):
-            raise SceneError("the contact rates g_j' cannot all vanish: the contacts are redundant or inconsistent.")
-        return at
+        return contact_manifold(self.plain, self.frozen_symbols, self.coordinates, self.gaps, self.at)
 
     @cached_property
     def free_coordinates(self) -> tuple:
         """The coordinates (dynamicsymbols) that rigid contact leaves free to move."""
         fixed = set(self.manifold)
         return tuple(
-            q for q in self.coordinates if self._plain(q) not in fixed and self._plain(sp.diff(q, t)) not in fixed
+            q for q in self.coordinates if self.plain(q) not in fixed and self.plain(sp.diff(q, t)) not in fixed
         )
 
     def freeze(self, expr: sp.Expr) -> sp.Expr:
         """Evaluate on the contact manifold with the slow state frozen (plain symbols)."""
-        return self._plain(expr).subs(self.manifold)
+        return self.plain(expr).subs(self.manifold)
 
     # --- sign patterns ------------------------------------------------------------
 
-    @cached_property
+    @property
     def fixed_signs(self) -> dict:
         """Switching functions whose sign the scene fixes (unilateral contacts: u_j > 0)."""
-        fast = self.fast_subsystem()
-        fixed = {}
-        for u, contact in zip(fast.u, self.contacts):
-            if contact.unilateral:
-                fixed[u] = 1
-        return fixed
+        return self.fast_subsystem().fixed_signs
 
     def sign_patterns(self) -> list[tuple[int, ...]]:
         """All admissible sign patterns of the switching functions (fixed ones kept)."""
-        switching = self.fast_subsystem().switching
-        choices = [(self.fixed_signs[s],) if s in self.fixed_signs else (1, -1) for s in switching]
-        return list(itertools.product(*choices))
+        return self.fast_subsystem().sign_patterns()
 
     def check_signs(self, signs) -> tuple:
         """Validate a sign pattern against the switching functions of the fast subsystem."""
@@ -443,96 +300,80 @@ class Scene:
             self._stage_cache[key] = build()
         return self._stage_cache[key]
 
-    def regularized(self):
+    def regularized(self) -> Regularized:
         """The system (1.7)/(1.9) in slow and fast variables (see :mod:`contactsym.regularize`)."""
-        from .regularize import Regularized
-
         return self._stage("regularized", lambda: Regularized(self))
 
-    def fast_subsystem(self):
+    def fast_subsystem(self) -> FastSubsystem:
         """The associated system (2.1): ``u' = Phi v + Psi f(u)``, ``v' = f(u)``."""
-        from .fast import FastSubsystem
-
         return self._stage("fast", lambda: FastSubsystem(self))
 
-    def equilibria(self, signs=None):
+    def equilibria(self, signs=None) -> Equilibria:
         """Equilibria of the fast subsystem, one branch per sign pattern (4.2)."""
-        from .equilibria import Equilibria
-
         key = None if signs is None else self.check_signs(signs)
-        return self._stage(("equilibria", key), lambda: Equilibria(self, key))
+        return self._stage(("equilibria", key), lambda: Equilibria(self.fast_subsystem(), key, self.stability))
 
-    def linearization(self, signs=None):
+    def linearization(self, signs=None) -> Linearization:
         """Jacobian A (4.3), the matrix (4.5) and the characteristic polynomial (4.6)."""
-        from .linear import Linearization
-
         key = None if signs is None else self.check_signs(signs)
-        return self._stage(("linear", key), lambda: Linearization(self, key))
+        return self._stage(("linear", key), lambda: Linearization(self.fast_subsystem(), key))
 
-    def stability(self, signs=None):
+    def stability(self, signs=None) -> Stability:
         """Hurwitz conditions (4.7) and the robustness classification (Props. 3-8)."""
-        from .stability import Stability
-
         key = None if signs is None else self.check_signs(signs)
         return self._stage(("stability", key), lambda: Stability(self.linearization(key)))
 
     def regions(self, signs=None) -> dict:
         """Named closed-form regions: stable / unstable for every law, law-dependent, Hopf line."""
-        from .regions import scene_regions
-
         key = None if signs is None else self.check_signs(signs)
         return self._stage(("regions", key), lambda: scene_regions(self, key))
 
     def equilibrium_counts(self) -> dict:
         """Named closed-form regions by the number of equilibria (see :mod:`contactsym.counts`)."""
-        from .counts import count_regions
-
         return self._stage("counts", lambda: count_regions(self))
 
-    def reduced_system(self, signs=None):
+    def reduced_system(self, signs=None) -> ReducedSystem:
         """The comparison system (2.2): slow motion with reactions from f(u*) = 0."""
-        from .regularize import ReducedSystem
-
         key = None if signs is None else self.check_signs(signs)
         return self._stage(("reduced", key), lambda: ReducedSystem(self, key))
 
     # --- presentation -------------------------------------------------------------
 
-    @cached_property
+    @property
     def parameters(self) -> tuple[sp.Symbol, ...]:
         """The symbols of the fast subsystem other than u, v: loads, geometry, frozen state."""
-        fast = self.fast_subsystem()
-        exprs = list(fast.f) + list(fast.Phi) + list(fast.Psi)
-        free = set().union(*(e.free_symbols for e in exprs)) - set(fast.u) - set(fast.v)
-        return tuple(sorted(free, key=str))
+        return self.fast_subsystem().parameters
 
     def present(self, expr: sp.Expr, signs=None, presentation: dict | None = None) -> sp.Expr:
         """Rewrite in the scene's presentation variables (e.g. kappa, v_j, mu_pm).
 
-        ``signs`` gives the sign pattern of ``expr`` when it belongs to one piece, so
-        that the presentation's sign symbols (v_j = kappa s_j mu_j) take its values;
-        ``presentation`` replaces the scene's own substitutions.
+        ``signs`` gives the sign pattern of ``expr`` when it belongs to one piece, so that the
+        presentation's sign symbols (v_j = kappa s_j mu_j) take its values; ``presentation``
+        replaces the scene's own substitutions (see :func:`contactsym.algebra.present`).
         """
-        from .algebra import reduce_signs, sign_symbols
+        return present(expr, self.presentation if presentation is None else presentation, signs)
 
-        expr = sympy_only(expr, "the expression")
-        presentation = self.presentation if presentation is None else presentation
-        if not presentation or expr in (sp.true, sp.false):
-            return expr
-        if isinstance(expr, (sp.core.relational.Relational, sp.logic.boolalg.BooleanFunction)):
-            return expr.func(*[self.present(arg, signs, presentation) for arg in expr.args])
-        if signs is not None:
-            values = dict(zip(sign_symbols(len(signs)), signs))
-            presentation = {k: sp.sympify(v).subs(values) for k, v in presentation.items()}
-        replaced = expr.subs(presentation)
-        if isinstance(replaced, sp.MatrixBase):
-            return replaced.applyfunc(lambda e: reduce_signs(sp.cancel(sp.expand(e))))
-        return reduce_signs(sp.cancel(sp.expand(replaced)))
+    def formulas(self, present: bool = False) -> tuple[Formula, ...]:
+        """The accelerations (1.4) and, for gap functions, the contact accelerations g_j''."""
+
+        def row(key, lhs, rhs, detail):
+            return NUMBERS.formula(key, lhs, rhs, k=self.k, own=self.equations, detail=detail)
+
+        rows = []
+        for q in self.coordinates:
+            plain = self.plain(q)
+            rows.append(
+                row("accelerations", r"\ddot{" + tex(plain) + "}", self.plain(self.accelerations[q]), str(plain))
+            )
+        if all(gap in self.coordinates for gap in self.gaps):
+            return tuple(rows)  # the contact accelerations are among the accelerations above
+        for j, g in enumerate(self.gap_accelerations, 1):
+            lhs = r"\ddot{q}" + (f"_{{{j}}}" if self.k > 1 else "")
+            rows.append(row("contact accelerations", lhs, sp.expand(self.freeze(g)), str(j)))
+        return tuple(rows)
 
     def __repr__(self) -> str:
         return f"<Scene '{self.name}': {len(self.coordinates)} coordinates, k = {self.k} contacts>"
 
     def _repr_latex_(self) -> str:
-        from .latex import _repr_latex
-
         return _repr_latex(self)

@@ -51,11 +51,14 @@ import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
 from .algebra import SignSymbol
+from .contact import plain_symbol
 from .errors import ContactsymError
+from .filecontacts import ContactsMixin
 from .filemechanics import COMPLIANCE_LAWS, PlaneMixin
-from .laws import Coulomb, Viscous
+from .mechanics import t
 from .parse import CONSTANTS, FUNCTIONS, ParseError, parse_expression
-from .scene import Contact, Scene, _plain, t
+from .scene import Scene
+from .scenes import scene, scene_names
 from .tomlsource import SceneFileError, TomlSource, shown
 
 __all__ = ["COMPLIANCE_LAWS", "FigurePlan", "SceneFileError", "load_scene", "read_scene", "scene_or_file"]
@@ -82,7 +85,7 @@ class FigurePlan:
     values: dict = field(default_factory=dict)
 
 
-class _Reader(PlaneMixin):
+class _Reader(PlaneMixin, ContactsMixin):
     """Reads one document; ``names`` grows as declarations are read, so use follows declaration."""
 
     def __init__(self, doc: TomlSource, default_name: str):
@@ -194,75 +197,7 @@ class _Reader(PlaneMixin):
             arguments = [self.formula(a, "functions", name) for a in self.name_list(arguments, "functions", name)]
             self.declare(name, sp.Function(name)(*arguments), "functions", name)
 
-    def compliance(self, spec, where: str):
-        spec = {"name": spec} if isinstance(spec, str) else spec
-        if not isinstance(spec, dict) or spec.get("name") not in COMPLIANCE_LAWS:
-            self.doc.fail(
-                where,
-                "law",
-                f"unknown law {shown(spec.get('name') if isinstance(spec, dict) else spec)}; use one of {', '.join(COMPLIANCE_LAWS)} "
-                "(a table {name = ..., ...} for laws with parameters)",
-            )
-        return COMPLIANCE_LAWS[spec["name"]](self, spec, where)
-
-    # --- contacts and motion ------------------------------------------------------
-
-    def check_gap(self, gap, coordinates, lagrangian: bool, where: str) -> None:
-        listed = ", ".join(q.func.__name__ for q in coordinates)
-        if lagrangian and not gap.has(*coordinates):
-            self.doc.fail(where, "gap", f"the gap {gap} does not depend on the coordinates {listed}; write it in them")
-        if not lagrangian and gap not in coordinates:
-            self.doc.fail(
-                where,
-                "gap",
-                f"with [accelerations] the gap must be one of the coordinates {listed}, not {gap}; "
-                "for a gap function give the motion by a Lagrangian ([energy], [[masses]], [[bodies]])",
-            )
-
-    def contacts(self, coordinates, lagrangian: bool) -> list:
-        contacts = []
-        for index, spec in enumerate(self.doc.table(self.data, "contacts", "", required=True, kind=list)):
-            where = f"contacts.{index}"
-            self.doc.keys(spec, where, ("gap", "reaction", "unilateral", "law", "friction"), ("gap", "reaction"))
-            gap = self.formula(spec["gap"], where, "gap")
-            self.check_gap(gap, coordinates, lagrangian, where)
-            reaction = sp.Symbol(str(spec["reaction"]), real=True)
-            self.declare(spec["reaction"], reaction, where, "reaction")
-            unilateral = spec.get("unilateral", False)
-            if not isinstance(unilateral, bool):
-                self.doc.fail(where, "unilateral", "unilateral must be true or false")
-            friction = self.friction(spec["friction"], where, lagrangian) if "friction" in spec else None
-            try:
-                law = self.compliance(spec.get("law", "generic"), where)
-                contacts.append(Contact(gap, reaction, law, friction, unilateral))
-            except (SceneFileError, ParseError):
-                raise
-            except ContactsymError as error:  # the API's own message, placed at the contact's law
-                self.doc.fail(where, "law", str(error).rstrip("."))
-        if not contacts:
-            self.doc.fail("", None, "no [[contacts]]; add one with gap = ... and reaction = ...")
-        return contacts
-
-    def friction(self, spec, where: str, lagrangian: bool):
-        if not isinstance(spec, dict):
-            self.doc.fail(where, "friction", "friction must be a table {mu = ..., direction = ...}")
-        self.doc.keys(spec, where, ("mu", "viscous", "point", "direction"), ("direction",))
-        if ("mu" in spec) == ("viscous" in spec):
-            self.doc.fail(where, "friction", "give friction either mu = ... (Coulomb) or viscous = ... (viscous)")
-        law, key = (Coulomb, "mu") if "mu" in spec else (Viscous, "viscous")
-        coefficient = self.formula(spec[key], where, "friction")
-        direction = spec["direction"]
-        if not lagrangian:
-            if not isinstance(direction, dict):
-                self.doc.fail(where, "friction", "with [accelerations], give direction = {coordinate = coefficient}")
-            coordinates = {n: self.names.get(n) for n in direction}
-            if not all(isinstance(q, sp.core.function.AppliedUndef) for q in coordinates.values()):
-                self.doc.fail(where, "friction", f"direction names {list(direction)} must be coordinates")
-            return law(coefficient, {coordinates[n]: self.formula(v, where, "friction") for n, v in direction.items()})
-        if spec.get("point") not in self.points:
-            self.doc.fail(where, "friction", f"friction needs point = one of the [points] {sorted(self.points)}")
-        dx, dy = self.pair(direction, where, "friction")
-        return law(coefficient, dx * self.frame.x + dy * self.frame.y, self.points[spec["point"]])
+    # --- motion -------------------------------------------------------------------
 
     def accelerations(self, coordinates) -> list:
         table = self.doc.table(self.data, "accelerations", "")
@@ -314,7 +249,7 @@ class _Reader(PlaneMixin):
         """The name of a declared symbol as the pipeline prints it (mu_p -> mu_+; a function by its name)."""
         value = self.names.get(name)
         if isinstance(value, sp.Derivative):  # a rate x' is frozen as xdot
-            return _plain(value.expr, "dot").name
+            return plain_symbol(value.expr, "dot").name
         if isinstance(value, sp.core.function.AppliedUndef):
             return value.func.__name__
         return str(value) if isinstance(value, sp.Symbol) else name
@@ -426,8 +361,6 @@ def scene_or_file(argument: str) -> Scene:
     >>> scene_or_file("brake")
     <Scene 'brake': 3 coordinates, k = 2 contacts>
     """
-    from .scenes import scene, scene_names
-
     if argument.endswith(".toml") or (argument not in scene_names() and Path(argument).is_file()):
         return load_scene(argument)
     return scene(argument)

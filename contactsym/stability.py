@@ -28,18 +28,48 @@ import sympy as sp
 
 from .algebra import normalize
 from .errors import SingularJacobianError
-from .hurwitz import Hurwitz
+from .hurwitz import Hurwitz, hurwitz_minors
+from .latex import Formula, Numbering, _repr_latex, tex
+from .linear import lam
+from .lyapunov import fast_first_lyapunov
 
 if TYPE_CHECKING:
     from .robustness import Robustness
 
-__all__ = ["Stability"]
+__all__ = ["Stability", "generic_minors", "hurwitz_names", "robustness_formulas"]
+
+#: The general theory's numbers and propositions, for k = 1, k = 2 and k >= 3 contacts.
+NUMBERS = Numbering(
+    {
+        "coefficient": ((), ("4.6",), ("4.6",)),
+        "hurwitz": (("3.2",), ("4.7",), ("4.7",)),
+        "stable for every law": (("3.2",), ("4.4",), ("4.4",)),
+        "unstable for every law": (("3.2",), (), ()),
+        "Hopf line": ((), ("4.7",), ("4.7",)),
+        "unique for every load": (("3.3",),) * 3,
+    },
+    {
+        "stable for every law": ("Proposition 3", "Proposition 6", "Proposition 7"),
+        "unstable for every law": ("Proposition 3", "Proposition 6", "Proposition 8"),
+        "law-dependent": ("", "Remarks 1-2: Hopf bifurcation possible", ""),
+        "Hopf line": ("", "Delta_3 = 0: Remarks 1-2", ""),
+        "unique for every load": ("Proposition 4", "", ""),
+    },
+)
+
+#: The robustness statements that :meth:`Stability.formulas` prints, with their attributes.
+_STATEMENTS = (
+    ("stable for every law", "robustly_stable"),
+    ("unstable for every law", "robustly_unstable"),
+    ("law-dependent", "law_dependent"),
+    ("Hopf line", "hopf"),
+)
 
 
 def robustness_regions(A: sp.Matrix) -> dict:
     """:func:`contactsym.robustness.regions`, imported when first needed (k >= 3): it brings
     scipy.optimize, a second of import time that scenes with k <= 2 never pay."""
-    from .robustness import regions
+    from .robustness import regions  # scipy.optimize: imported for k >= 3 only
 
     return regions(A)
 
@@ -174,8 +204,6 @@ class Stability:
         (u*, 0) as symbols (``Phi_1_u`` = dPhi_1/du_1, ...). None where there is no Hopf set.
         See :mod:`contactsym.lyapunov`.
         """
-        from .lyapunov import fast_first_lyapunov
-
         return fast_first_lyapunov(self)
 
     # --- k = 1: Propositions 3, 4, 5 ------------------------------------------------
@@ -208,10 +236,9 @@ class Stability:
     @cached_property
     def unique_for_every_load(self) -> sp.Basic:
         """Proposition 4: f' > 0 on every piece of f (k = 1 only)."""
-        scene = self.linearization.scene
-        fast = scene.fast_subsystem()
+        fast = self.linearization.fast
         slopes = []
-        for pattern in scene.sign_patterns():
+        for pattern in fast.sign_patterns():
             slope = fast.piece(pattern).jacobian(fast.u)[0]
             slopes.append(_gt(normalize(slope)))
         return sp.And(*slopes)
@@ -221,7 +248,73 @@ class Stability:
         """Proposition 5: constant Phi and Psi exclude periodic solutions (k = 1)."""
         return self.k == 1 and self.linearization.fast.constant_laws
 
-    def _repr_latex_(self) -> str:
-        from .latex import _repr_latex
+    # --- formulas -------------------------------------------------------------------
 
+    def formulas(self, present: bool = False) -> tuple[Formula, ...]:
+        """The conditions (4.7) by name, the robustness statements, omega and the point decision."""
+        fast = self.linearization.fast
+        show = fast.present if present else (lambda expr: expr)
+
+        def row(key, lhs, rhs, relation="="):
+            return NUMBERS.formula(key, lhs, rhs, k=self.k, own=fast.paper_equations, relation=relation)
+
+        names = hurwitz_names(self)
+        generic = generic_minors(self.linearization.charpoly.degree())
+        rows = []
+        for name, (kind, index), condition in zip(names, self.poly.labels, self.hurwitz):
+            if kind == "Delta":
+                rows += [row("hurwitz", name, generic[index]), row("hurwitz", "", show(condition))]
+            else:
+                rows.append(row("coefficient", name, show(condition)))
+        rows.append(row("hurwitz", ", ".join(names), sp.S.Zero, ">"))
+        for key, attribute in _STATEMENTS:
+            value = getattr(self, attribute)
+            if value is not None:
+                rows.append(row(key, r"\text{" + key + "}", show(value), ":"))
+        if self.hopf_frequency is not None:
+            rows.append(row("hopf frequency", r"\omega", show(self.hopf_frequency)))
+        return tuple(rows) + robustness_formulas(self.robustness)
+
+    def _repr_latex_(self) -> str:
         return _repr_latex(self)
+
+
+def hurwitz_names(stability) -> list[str]:
+    r"""LaTeX names of ``stability.hurwitz``: coefficients ``p_s`` of (4.6), minors ``Delta_m`` of (4.7).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> hurwitz_names(cs.scene("brake").stability())
+    ['p_{3}', 'p_{2}', 'p_{1}', 'p_{0}', '\\Delta_{3}']
+    """
+    letters = {"p": "p", "Delta": r"\Delta"}
+    return [f"{letters[kind]}_{{{index}}}" for kind, index in stability.poly.labels]
+
+
+def generic_minors(n: int) -> dict[int, sp.Expr]:
+    """Delta_m in the coefficients p_n, ..., p_0 (symbols) of a degree-n polynomial, for m = 1..n.
+
+    Examples
+    --------
+    >>> generic_minors(2)[2]
+    p_0*p_1
+    """
+    p = [sp.Symbol(f"p_{s}") for s in range(n + 1)]
+    minors = hurwitz_minors(sp.Poly(sum(p[s] * lam**s for s in range(n + 1)), lam))
+    return {m: sp.expand(minor) for m, minor in enumerate(minors, 1)}
+
+
+def robustness_formulas(robustness) -> tuple[Formula, ...]:
+    """The point decision of :func:`contactsym.robustness.decide`: verdict, certificate, witness laws."""
+    if robustness is None:
+        return ()
+    rows = [Formula("robustness", r"\text{robustness}", r"\text{" + robustness.verdict + "}", ":")]
+    if robustness.certificate is not None:
+        statement = robustness.certificate.statement.replace("_", r"\_")
+        rows.append(Formula("certificate", r"\text{certificate}", r"\text{" + statement + "}", ":"))
+    for name, law in (("stable", robustness.stable_law), ("unstable", robustness.unstable_law)):
+        if law is not None:
+            values = r",\ ".join([tex(sp.Tuple(*law.Phi)), tex(sp.Tuple(*law.Psi))])
+            rows.append(Formula("witness", r"(\Phi, \Psi)_{\text{" + name + "}}", values))
+    return tuple(rows)

@@ -7,7 +7,9 @@ import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
 import contactsym as cs
-from contactsym.latex import Formula, formulas, hurwitz_names, latex, paper_equations
+from contactsym.latex import Formula, formulas, latex
+from contactsym.scene import paper_equations
+from contactsym.stability import hurwitz_names
 
 
 @pytest.fixture(scope="module")

@@ -27,9 +27,11 @@ import sympy as sp
 
 from ..errata import AGREE, latex_table, text_to_latex
 from ..errors import ContactsymError
-from ..latex import Formula, _generic_minors, formulas, hurwitz_names, paper_equations, robustness_formulas, tex
+from ..latex import Formula, formulas, tex
 from ..one_sided import one_sided_cases
+from ..scene import paper_equations
 from ..scenes import paper_name
+from ..stability import generic_minors, hurwitz_names, robustness_formulas
 from .scene_parts import _count_tag, _special_cases
 from .summary import _counts
 from .typesetting import WIDTH, _describe, _display, _escape, _Named, width
@@ -190,7 +192,7 @@ def _hurwitz_section(scene, named: _Named) -> str:
     st = scene.stability()
     names = hurwitz_names(st)
     n = st.linearization.charpoly.degree()
-    generic = _generic_minors(n)
+    generic = generic_minors(n)
     text = [
         _section(
             "6. Routh--Hurwitz conditions (4.7)",

@@ -23,6 +23,15 @@ from ..scene import Contact, Scene
 from . import SpecialCase
 from ._planar import planar_body
 
+#: The paper's numbers of this example, by formula key (see :func:`contactsym.scenes.paper_knowledge`).
+EQUATIONS = {
+    "contact accelerations": (("6.1",), ""),
+    "A": (("6.2",), ""),
+    "stable for every law": (("6.3",), "with equality allowed: erratum 12"),
+    "Hopf line": ((), "for Phi_j = Phi, Psi_j = Psi, alpha = 90 deg it is (6.4), with the mass: erratum 13"),
+    "hopf frequency": ((), "the frequency after (6.4), with the mass: erratum 14"),
+}
+
 
 def build() -> Scene:
     x, y, theta = dynamicsymbols("x y theta")
@@ -48,6 +57,7 @@ def build() -> Scene:
         loads=[(centre, Fx * O.x + Fy * O.y)],
         frame=O,
         name="brake",
+        equations=EQUATIONS,
         presentation=presentation,
         positive=(sp.sin(alpha),),  # 0 < alpha < pi
         solve_for=mu,

@@ -21,6 +21,17 @@ from ..plotting import Fig1Data, fig1_data, fig1_plot, save_figure
 from ..scene import Contact, Scene
 from ._planar import planar_body
 
+#: The paper's numbers of this example, by formula key (see :func:`contactsym.scenes.paper_knowledge`).
+EQUATIONS = {
+    "accelerations": (("5.1",), "with the moment M, erratum 10"),
+    "contact accelerations": (("5.2",), ""),
+    "equilibrium": (("5.3",), ""),
+    "A": (("5.4",), ""),
+    "det A": (("5.5",), ""),
+    "stable for every law": (("5.6",), "corrected: erratum 11"),
+    "unstable for every law": (("5.7",), ""),
+}
+
 
 def build() -> Scene:
     x, y, phi = dynamicsymbols("x y phi")
@@ -58,6 +69,7 @@ def build() -> Scene:
         frame=O,
         at={h: l * sp.sin(phi)},
         name="painleve-klein-guides",
+        equations=EQUATIONS,
         presentation=presentation,
         positive=(sp.sin(phi), sp.cos(phi)),  # 0 < phi < pi/2
         description="(5.1)-(5.10): Painleve-Klein system, rigid rod, deformable guides",

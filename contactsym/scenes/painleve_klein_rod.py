@@ -25,6 +25,13 @@ from ..plotting import (
 )
 from ..scene import Contact, Scene
 
+#: The paper's numbers of this example, by formula key (``"key:detail"`` for one row).
+EQUATIONS = {
+    "accelerations:x_1": (("3.5",), ""),
+    "accelerations:delta": (("3.6",), "corrected: Y*_j = Y_j / sin(phi), erratum 1"),
+    "f": (("3.6", "3.7"), "erratum 1"),
+}
+
 
 def build() -> Scene:
     x1, delta = dynamicsymbols("x_1 delta")
@@ -56,6 +63,7 @@ def build() -> Scene:
         [a1, sp.expand(delta_dd)],
         [Contact(coordinate=delta, reaction=R)],
         name="painleve-klein-rod",
+        equations=EQUATIONS,
         presentation=presentation,
         positive=(sp.sin(phi), sp.cos(phi)),  # 0 < phi < pi/2
         description="(3.5)-(3.9): Painleve-Klein system, deformable rod, rigid guides",

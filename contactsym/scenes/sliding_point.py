@@ -17,6 +17,14 @@ from ..laws import Coulomb, KelvinVoigt
 from ..plotting import phase_portrait_caption, phase_portrait_data, phase_portrait_plot, save_figure
 from ..scene import Contact, Scene, t
 
+#: The paper's numbers of this example, by formula key (see :func:`contactsym.scenes.paper_knowledge`).
+EQUATIONS = {
+    "accelerations": (("1.10",), ""),
+    "regularized": (("1.12",), ""),
+    "fast": (("1.12",), "eps = 0 in (1.12)"),
+    "law": (("1.11",), "Kelvin-Voigt law (1.11)"),
+}
+
 
 def build() -> Scene:
     x, y = dynamicsymbols("x y")
@@ -42,6 +50,7 @@ def build() -> Scene:
         loads=[(point, X * frame.x + Y * frame.y)],
         frame=frame,
         name="sliding-point",
+        equations=EQUATIONS,
         description="(1.10)-(1.12): a point sliding on a rough line, Kelvin-Voigt contact",
     )
 
