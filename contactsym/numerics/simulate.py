@@ -52,13 +52,13 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from . import validate
-from .errors import ContactsymError
-from .intervals import interval_sign
-from .laws import Compliance, Generic, ImplicitDeformation, KelvinVoigt, Law
-from .parse import sympy_only
-from .progress import Budget, Progress
-from .scene import t as _time
+from .. import validate
+from ..errors import NumericsError
+from ..intervals import interval_sign
+from ..laws import Compliance, Generic, ImplicitDeformation, KelvinVoigt, Law
+from ..parse import sympy_only
+from ..progress import Budget, Progress
+from ..scene import t as _time
 
 __all__ = [
     "NumericsError",
@@ -90,10 +90,6 @@ __all__ = [
 
 _UNIT = 2.0**-53  # unit roundoff of IEEE double precision
 _IMPLICIT = ("Radau", "BDF", "LSODA")
-
-
-class NumericsError(ContactsymError):
-    """Bad numeric input (non-finite parameter, eps <= 0, missing value) or a failed solve."""
 
 
 # --- parameter values ----------------------------------------------------------------
@@ -335,10 +331,10 @@ class NumericFunction:
 
 def _stage_exprs(stage) -> tuple[object, sp.Matrix, tuple]:
     """(scene, expressions, default arguments) of a stage object."""
-    from .fast import FastSubsystem
-    from .linear import Linearization
-    from .regularize import ReducedSystem, Regularized
-    from .stability import Stability
+    from ..fast import FastSubsystem
+    from ..linear import Linearization
+    from ..regularize import ReducedSystem, Regularized
+    from ..stability import Stability
 
     if isinstance(stage, FastSubsystem):
         return stage.scene, stage.rhs, tuple(stage.state)
@@ -1878,7 +1874,7 @@ def classify(scene_or_stability, values: Mapping, *, signs=None, band: float = 1
     >>> classify(st, values)          # on the Hopf line -m mu^2 Phi = (1 + mu^2) Psi^2
     Classification(stable=0, signs=(1, 1, 1, 1, 0), exact=(False, False, False, False, True), region='law-dependent')
     """
-    from .stability import Stability
+    from ..stability import Stability
 
     if isinstance(scene_or_stability, Stability):
         st = scene_or_stability
@@ -2652,13 +2648,13 @@ def fast_trajectories_data(
 
 def first_lyapunov(scene, values: Mapping, **options):
     """l1 of the fast subsystem at a point on its Hopf set; see :func:`contactsym.hopf.first_lyapunov`."""
-    from .hopf import first_lyapunov as compute
+    from ..hopf import first_lyapunov as compute
 
     return compute(scene, values, **options)
 
 
 def hopf_point(scene, values: Mapping, parameter, **options):
     """The Hopf crossing along ``parameter`` and l1 there; see :func:`contactsym.hopf.hopf_point`."""
-    from .hopf import hopf_point as compute
+    from ..hopf import hopf_point as compute
 
     return compute(scene, values, parameter, **options)
