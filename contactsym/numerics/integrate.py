@@ -10,7 +10,7 @@ result's ``status``.
 from __future__ import annotations
 
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -174,6 +174,60 @@ def integrate(
     start, end = _check_span(span, "span")
     method = validate.solver_method(method)
     t_eval = validate.output_times(t_eval, (start, end))
+    z0 = _initial_state(system, z0)
+    rtol = _positive(rtol, "rtol", "it is the relative tolerance")
+    atol = _default_atol(z0, rtol) if atol is None else atol
+    counter = {"n": 0, "t": start}  # t: the furthest time evaluated, for progress and for a spent budget
+    budget = Budget(progress, max_seconds)
+    solver_events = list(events) + ([] if reaction_bound is None else [_impact_event(system, reaction_bound)])
+    analytic = bool(jacobian) and method in _IMPLICIT
+    options = {"jac": system.jac} if analytic else {}
+    started, cpu = time.perf_counter(), time.process_time()
+    status, message, result = "ok", "integrated to the end", None
+    try:
+        result = solve_ivp(
+            _counted(system, counter, budget, max_rhs, (start, end)),
+            (start, end),
+            z0,
+            method=method,
+            t_eval=t_eval,
+            dense_output=dense_output,
+            events=solver_events or None,
+            rtol=rtol,
+            atol=atol,
+            **options,
+        )
+        status, message = _outcome(system, result, method, reaction_bound)
+    except _Budget:
+        status = "failed"
+        message = _budget_message(method, analytic, counter, max_rhs, budget, (start, end), system.time)
+    except _NotFinite as stop:
+        status = "failed"
+        message = f"the right-hand side is not finite at {system.time} = {stop.args[0]:.6g}; check the parameters."
+    wall, cpu = time.perf_counter() - started, time.process_time() - cpu
+    if status == "ok":
+        budget.report(1.0, f"{system.time} = {end:.4g}")
+    run = Simulation(
+        np.empty(0),
+        np.empty((len(system.names), 0)),
+        system.names,
+        np.empty((len(system.reaction_names), 0)),
+        system.reaction_names,
+        status,
+        message,
+        method,
+        analytic,
+        counter["n"],
+        0,
+        0,
+        cpu,
+        wall,
+        system.time,
+    )
+    return run if result is None else _with_solution(run, system, result, keep_event=t_eval is not None)
+
+
+def _initial_state(system: OdeSystem, z0) -> np.ndarray:
     z0 = validate.real_array(z0, "the initial state").ravel()
     if z0.shape != (len(system.names),):
         raise NumericsError(
@@ -181,14 +235,20 @@ def integrate(
         )
     if not np.all(np.isfinite(z0)):
         raise NumericsError(f"the initial state {z0.tolist()} is not finite.")
-    rtol = _positive(rtol, "rtol", "it is the relative tolerance")
-    if atol is None:
-        magnitude = np.abs(z0)
-        atol = rtol * np.maximum(magnitude, max(1e-12 * float(magnitude.max(initial=0.0)), 1e-300))
-        if not magnitude.any():
-            atol = np.full_like(z0, rtol)
-    counter = {"n": 0, "t": start}  # t: the furthest time evaluated, for progress and for a spent budget
-    budget = Budget(progress, max_seconds)
+    return z0
+
+
+def _default_atol(z0: np.ndarray, rtol: float) -> np.ndarray:
+    """``rtol`` times the magnitude of each component, at least 1e-12 of the largest (``rtol`` at rest)."""
+    magnitude = np.abs(z0)
+    if not magnitude.any():
+        return np.full_like(z0, rtol)
+    return rtol * np.maximum(magnitude, max(1e-12 * float(magnitude.max(initial=0.0)), 1e-300))
+
+
+def _counted(system: OdeSystem, counter: dict, budget: Budget, max_rhs: int, span) -> Callable:
+    """The right-hand side, counting its calls, reporting progress and stopping when the budget is spent."""
+    start, end = span
 
     def fun(t, y):
         counter["n"] += 1
@@ -202,72 +262,36 @@ def integrate(
             raise _NotFinite(t)
         return out
 
-    solver_events = list(events)
-    if reaction_bound is not None:
+    return fun
 
-        def impact(t, y):
-            return reaction_bound - float(np.max(np.abs(system.reactions(t, y))))
 
-        impact.terminal = True
-        impact.direction = -1
-        solver_events.append(impact)
-    options = {}
-    analytic = bool(jacobian) and method in _IMPLICIT
-    if analytic:
-        options["jac"] = system.jac
-    started, cpu = time.perf_counter(), time.process_time()
-    status, message, result = "ok", "integrated to the end", None
-    try:
-        result = solve_ivp(
-            fun,
-            (start, end),
-            z0,
-            method=method,
-            t_eval=t_eval,
-            dense_output=dense_output,
-            events=solver_events or None,
-            rtol=rtol,
-            atol=atol,
-            **options,
+def _impact_event(system: OdeSystem, reaction_bound: float) -> Callable:
+    """A terminal event where some |N_j| reaches ``reaction_bound``."""
+
+    def impact(t, y):
+        return reaction_bound - float(np.max(np.abs(system.reactions(t, y))))
+
+    impact.terminal = True
+    impact.direction = -1
+    return impact
+
+
+def _outcome(system: OdeSystem, result, method: str, reaction_bound: float | None) -> tuple[str, str]:
+    """(status, message) of a finished ``solve_ivp`` run."""
+    if result.status == -1:
+        return "failed", f"{method} failed: {result.message}"
+    if reaction_bound is not None and result.t_events[-1].size:
+        return "impact", (
+            f"impact-type catastrophe: |N| passed {reaction_bound:.3g} at {system.time} = "
+            f"{result.t_events[-1][0]:.6g}; the fast subsystem has no stable equilibrium to settle on "
+            "and the reaction grows without bound on the fast time scale."
         )
-        if result.status == -1:
-            status, message = "failed", f"{method} failed: {result.message}"
-        elif reaction_bound is not None and result.t_events[-1].size:
-            status = "impact"
-            message = (
-                f"impact-type catastrophe: |N| passed {reaction_bound:.3g} at {system.time} = "
-                f"{result.t_events[-1][0]:.6g}; the fast subsystem has no stable equilibrium to settle on "
-                "and the reaction grows without bound on the fast time scale."
-            )
-    except _Budget:
-        status = "failed"
-        message = _budget_message(method, analytic, counter, max_rhs, budget, (start, end), system.time)
-    except _NotFinite as stop:
-        status = "failed"
-        message = f"the right-hand side is not finite at {system.time} = {stop.args[0]:.6g}; check the parameters."
-    wall, cpu = time.perf_counter() - started, time.process_time() - cpu
-    if status == "ok":
-        budget.report(1.0, f"{system.time} = {end:.4g}")
-    if result is None:
-        empty = np.empty((len(system.names), 0))
-        return Simulation(
-            np.empty(0),
-            empty,
-            system.names,
-            np.empty((len(system.reaction_names), 0)),
-            system.reaction_names,
-            status,
-            message,
-            method,
-            analytic,
-            counter["n"],
-            0,
-            0,
-            cpu,
-            wall,
-            system.time,
-        )
-    if status == "impact" and (t_eval is not None):
+    return "ok", "integrated to the end"
+
+
+def _with_solution(run: Simulation, system: OdeSystem, result, *, keep_event: bool) -> Simulation:
+    """``run`` with the solver's states, the reactions along them and its counts."""
+    if run.status == "impact" and keep_event:
         # keep the state where the catastrophe was detected
         times = np.append(result.t, result.t_events[-1][0])
         states = np.column_stack([result.y, result.y_events[-1][0]])
@@ -278,26 +302,20 @@ def integrate(
         if times.size
         else (np.empty((len(system.reaction_names), 0)))
     )
+    status, message = run.status, run.message
     if status == "ok" and not (np.all(np.isfinite(states)) and np.all(np.isfinite(reactions))):
         status, message = "failed", "the solution is not finite; check the parameters."
-    return Simulation(
-        times,
-        states,
-        system.names,
-        reactions,
-        system.reaction_names,
-        status,
-        message,
-        method,
-        analytic,
-        counter["n"],
-        int(result.njev),
-        int(result.nlu),
-        cpu,
-        wall,
-        system.time,
-        result.sol,
-        {"t_events": result.t_events, "y_events": result.y_events},
+    return replace(
+        run,
+        t=times,
+        y=states,
+        reactions=reactions,
+        status=status,
+        message=message,
+        njev=int(result.njev),
+        nlu=int(result.nlu),
+        sol=result.sol,
+        extra={"t_events": result.t_events, "y_events": result.y_events},
     )
 
 

@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
@@ -20,6 +21,7 @@ from .values import (
     _plain_expr,
     _positive,
     _state_values,
+    _Values,
     _with,
     numeric_values,
     substitute,
@@ -93,94 +95,32 @@ def simulate_full(
     span = _check_span(span, "span")
     if start not in ("rigid", "slow"):
         raise NumericsError(f"start = {start!r}; use 'rigid' (on the contact manifold) or 'slow' (N = u*).")
-    vals = numeric_values(scene, values)
+    vals, z0 = _rigid_start(scene, numeric_values(scene, values), initial)
     positions, rates = _coordinates(scene)
-    state = positions + rates
-    names = [str(s) for s in state]
-    given = _state_values(names, state, initial, f"full system of '{scene.name}'")
-    for symbol in vals.numbers:
-        if symbol in state:
-            raise NumericsError(f"{symbol} is a state variable of the full system; give it in initial, not in values.")
-    with_state = _with(vals, given)
-    # parameters fixed by the contact manifold (h = l sin(phi) for the guides), from the initial state
-    fixed = {}
-    for parameter, expr in _manifold_parameters(scene).items():
-        if parameter not in vals.numbers:
-            fixed[parameter] = _evaluate(expr, with_state, f"the parameter {parameter} (fixed by the contacts)")
-    vals = _with(vals, fixed)
-    with_state = _with(with_state, fixed)
-    z0 = []
-    for symbol in state:
-        if symbol in given:
-            z0.append(given[symbol])
-        elif symbol in scene.manifold:
-            z0.append(_evaluate(scene.manifold[symbol], with_state, f"the initial value of {symbol}"))
-        else:
-            raise NumericsError(f"give the initial value of {symbol} in initial.")
-    z0 = np.array(z0, dtype=float)
     system = full_system(scene, vals, eps, laws=laws, unilateral=unilateral)
-    frozen = _with(vals, dict(zip(state, z0)))
+    frozen = _with(vals, dict(zip(positions + rates, z0)))
     branch = _try_branch(scene, frozen, signs)
     if start == "slow" and branch is None:
         raise NumericsError("start='slow' needs a consistent equilibrium u* at the initial state; none was found.")
     N_scale = _reaction_scale(scene, frozen, branch)
-    determined = [i for i, (q, r) in enumerate(zip(positions, rates)) if q in scene.manifold or r in scene.manifold]
-    gap_exprs = [substitute(_plain_expr(scene, c.coordinate), vals) for c in scene.contacts]
-    gap_function = lambdify_cse(positions, gap_exprs)
-    gap_jacobian = lambdify_cse(positions, sp.Matrix(gap_exprs).jacobian(positions))
-    n, k = len(positions), scene.k
-    law_jac = system.extra["law_jac"]
-    stiffness = np.abs(np.asarray(law_jac(span[0], *z0), dtype=float).reshape(k, 2 * n)[:, :n])
-    Dg = np.asarray(gap_jacobian(*z0[:n]), dtype=float).reshape(k, n)
-    S = np.array([max(float(np.max(np.abs(stiffness[j]) / np.maximum(np.abs(Dg[j]), 1e-300))), 0.0) for j in range(k)])
-    S = np.where(S > 0, S, 1.0 / eps**2)
+    u_star = None if branch is None else [float(substitute(u, frozen)) for u in branch.u_star]
+    gaps = _contact_gaps(scene, system, vals, z0, eps, span[0])
     if start == "slow":
-        u_star = [float(substitute(u, frozen)) for u in branch.u_star]
-        Qv = sp.Symbol("Q", real=True)
-        targets = []
-        for j in range(k):
-            law = _contact_law(scene, j, laws)
-            N_of_Q = lambdify_cse([Qv], _law_scaled(scene, j, law, vals, Qv, sp.S.Zero))
-            targets.append(
-                eps**2 * _invert_law(lambda Q, f=N_of_Q: float(f(Q)), u_star[j], abs(u_star[j]) / (S[j] * eps**2))
-            )
-        z0 = _place_gaps(z0, n, determined, gap_function, gap_jacobian, np.array(targets))
-    acc_jac = system.extra["acc_jac"]
-    _, dGdN = acc_jac(span[0], *z0, *system.reactions(span[0], z0))
-    a = np.abs(np.diag(Dg @ np.asarray(dGdN, dtype=float).reshape(n, k)))
-    gap_scale = N_scale / S
-    rate_scale = gap_scale * np.sqrt(S * np.where(a > 0, a, 1.0))
-    scale = np.abs(z0).copy()
-    if determined:
-        inverse = np.abs(np.linalg.pinv(Dg[:, determined]))
-        for row, i in enumerate(determined):
-            scale[i] = max(scale[i], float(inverse[row] @ gap_scale))
-            scale[n + i] = max(scale[n + i], float(inverse[row] @ rate_scale))
-    duration = span[1] - span[0]
-    acceleration = (
-        np.abs(system.fun(span[0], z0)[n:])
-        if branch is None
-        else np.abs(
-            np.asarray(system.extra["acc_value"](span[0], *z0, *[float(substitute(u, frozen)) for u in branch.u_star]))
-        )
-    )
-    for i in range(n):
-        if i not in determined:
-            scale[i] = max(scale[i], abs(z0[n + i]) * duration, acceleration[i] * duration**2 / 2)
-            scale[n + i] = max(scale[n + i], acceleration[i] * duration)
-    top = float(scale.max(initial=0.0))
-    scale = np.maximum(scale, 1e-12 * top if top > 0 else 1.0)
-    gap_noise = _gap_noise(gap_exprs, positions, z0)
+        z0 = _slow_start(scene, gaps, vals, laws, u_star, z0, eps)
+    scale, gap_scale, fast_squared = _full_scales(system, gaps, z0, N_scale, u_star, span)
+    gap_noise = _gap_noise(gaps.exprs, positions, z0)
     if np.any(gap_noise > gap_scale):
         j = int(np.argmax(gap_noise / gap_scale))
         raise NumericsError(
             f"at eps = {eps:g} the deformation of contact {j + 1} (about {gap_scale[j]:.1e}) is lost in the "
-            f"rounding of its gap {gap_exprs[j]} (about {gap_noise[j]:.1e} with a safety margin) in these "
+            f"rounding of its gap {gaps.exprs[j]} (about {gap_noise[j]:.1e} with a safety margin) in these "
             "coordinates; use a larger eps (the reduced system is then the answer to this accuracy) or "
             "write the scene with the gap as a coordinate."
         )
     if atol is None:
-        atol = np.maximum(rtol * scale, _roundoff_floor(gap_noise, n, determined, Dg, S * a))
+        atol = np.maximum(
+            rtol * scale, _roundoff_floor(gap_noise, len(positions), gaps.determined, gaps.Dg, fast_squared)
+        )
     bound = reaction_bound if reaction_bound is not None else bound_factor * N_scale
     run = integrate(
         system,
@@ -207,6 +147,104 @@ def simulate_full(
     if branch is None and run.status == "impact":
         extra["no_equilibrium"] = True
     return _replace(run, extra={**run.extra, **extra})
+
+
+def _rigid_start(scene, vals: _Values, initial) -> tuple[_Values, np.ndarray]:
+    """The values with the parameters the contact manifold fixes, and the initial state on the manifold."""
+    positions, rates = _coordinates(scene)
+    state = positions + rates
+    given = _state_values([str(s) for s in state], state, initial, f"full system of '{scene.name}'")
+    for symbol in vals.numbers:
+        if symbol in state:
+            raise NumericsError(f"{symbol} is a state variable of the full system; give it in initial, not in values.")
+    with_state = _with(vals, given)
+    # parameters fixed by the contact manifold (h = l sin(phi) for the guides), from the initial state
+    fixed = {}
+    for parameter, expr in _manifold_parameters(scene).items():
+        if parameter not in vals.numbers:
+            fixed[parameter] = _evaluate(expr, with_state, f"the parameter {parameter} (fixed by the contacts)")
+    vals = _with(vals, fixed)
+    with_state = _with(with_state, fixed)
+    z0 = []
+    for symbol in state:
+        if symbol in given:
+            z0.append(given[symbol])
+        elif symbol in scene.manifold:
+            z0.append(_evaluate(scene.manifold[symbol], with_state, f"the initial value of {symbol}"))
+        else:
+            raise NumericsError(f"give the initial value of {symbol} in initial.")
+    return vals, np.array(z0, dtype=float)
+
+
+@dataclass(frozen=True, eq=False)
+class _Gaps:
+    """The contacts' gaps g_j(positions): expressions, generated code, and at the start their Jacobian
+    ``Dg`` and the stiffness ``S_j = |dN_j/dg_j|``; ``determined`` lists the coordinates they fix."""
+
+    exprs: list
+    function: Callable
+    jacobian: Callable
+    Dg: np.ndarray
+    S: np.ndarray
+    determined: list
+
+
+def _contact_gaps(scene, system, vals: _Values, z0: np.ndarray, eps: float, t0: float) -> _Gaps:
+    positions, rates = _coordinates(scene)
+    determined = [i for i, (q, r) in enumerate(zip(positions, rates)) if q in scene.manifold or r in scene.manifold]
+    exprs = [substitute(_plain_expr(scene, c.coordinate), vals) for c in scene.contacts]
+    function = lambdify_cse(positions, exprs)
+    jacobian = lambdify_cse(positions, sp.Matrix(exprs).jacobian(positions))
+    n, k = len(positions), scene.k
+    stiffness = np.abs(np.asarray(system.extra["law_jac"](t0, *z0), dtype=float).reshape(k, 2 * n)[:, :n])
+    Dg = np.asarray(jacobian(*z0[:n]), dtype=float).reshape(k, n)
+    S = np.array([max(float(np.max(np.abs(stiffness[j]) / np.maximum(np.abs(Dg[j]), 1e-300))), 0.0) for j in range(k)])
+    return _Gaps(exprs, function, jacobian, Dg, np.where(S > 0, S, 1.0 / eps**2), determined)
+
+
+def _slow_start(scene, gaps: _Gaps, vals: _Values, laws, u_star, z0: np.ndarray, eps: float) -> np.ndarray:
+    """The initial state with the contacts deformed so that the reactions start at u*."""
+    Qv = sp.Symbol("Q", real=True)
+    targets = []
+    for j in range(scene.k):
+        law = _contact_law(scene, j, laws)
+        N_of_Q = lambdify_cse([Qv], _law_scaled(scene, j, law, vals, Qv, sp.S.Zero))
+        targets.append(
+            eps**2 * _invert_law(lambda Q, f=N_of_Q: float(f(Q)), u_star[j], abs(u_star[j]) / (gaps.S[j] * eps**2))
+        )
+    n = gaps.Dg.shape[1]
+    return _place_gaps(z0, n, gaps.determined, gaps.function, gaps.jacobian, np.array(targets))
+
+
+def _full_scales(system, gaps: _Gaps, z0: np.ndarray, N_scale: float, u_star, span) -> tuple:
+    """(typical magnitude of each state component, of each gap, squared fast frequency of each contact).
+
+    The deformations are N/S, their rates N/S times the contact's fast frequency; the free
+    coordinates move by their rates and accelerations over the span.
+    """
+    k, n = gaps.Dg.shape
+    determined = gaps.determined
+    _, dGdN = system.extra["acc_jac"](span[0], *z0, *system.reactions(span[0], z0))
+    a = np.abs(np.diag(gaps.Dg @ np.asarray(dGdN, dtype=float).reshape(n, k)))
+    gap_scale = N_scale / gaps.S
+    rate_scale = gap_scale * np.sqrt(gaps.S * np.where(a > 0, a, 1.0))
+    scale = np.abs(z0).copy()
+    if determined:
+        inverse = np.abs(np.linalg.pinv(gaps.Dg[:, determined]))
+        for row, i in enumerate(determined):
+            scale[i] = max(scale[i], float(inverse[row] @ gap_scale))
+            scale[n + i] = max(scale[n + i], float(inverse[row] @ rate_scale))
+    duration = span[1] - span[0]
+    if u_star is None:
+        acceleration = np.abs(system.fun(span[0], z0)[n:])
+    else:
+        acceleration = np.abs(np.asarray(system.extra["acc_value"](span[0], *z0, *u_star)))
+    for i in range(n):
+        if i not in determined:
+            scale[i] = max(scale[i], abs(z0[n + i]) * duration, acceleration[i] * duration**2 / 2)
+            scale[n + i] = max(scale[n + i], acceleration[i] * duration)
+    top = float(scale.max(initial=0.0))
+    return np.maximum(scale, 1e-12 * top if top > 0 else 1.0), gap_scale, gaps.S * a
 
 
 def _gap_noise(gap_exprs, positions, z0) -> np.ndarray:
