@@ -80,28 +80,38 @@ def _bounded_node(expr, env, memo) -> tuple[float, float, float]:
             magnitude *= size
         return v, (widened - exact) * (1 + 4 * _UNIT * len(parts)) + _gamma(len(parts)) * abs(v), magnitude
     if expr.is_Pow:
-        base, exponent = expr.args
-        b, eb, mb = _bounded(base, env, memo)
-        if exponent.is_Integer:
-            n = int(exponent)
-            v = b**n
-            if n >= 0:
-                spread = (abs(b) + eb) ** n - abs(b) ** n
-                magnitude = mb**n
-            else:
-                if abs(b) <= eb:
-                    raise _Unbounded
-                spread = (abs(b) - eb) ** n - abs(b) ** n
-                magnitude = abs(v)
-            return v, spread * (1 + 8 * _UNIT * abs(n)) + 2 * _gamma(abs(n) + 1) * abs(v), magnitude
-        if exponent.is_Rational:
-            r = float(exponent)
-            if b - eb <= 0:
+        return _bounded_pow(expr, env, memo)
+    return _bounded_function(expr, env, memo)
+
+
+def _bounded_pow(expr, env, memo) -> tuple[float, float, float]:
+    """Integer and rational powers: the error of the base widens through the power."""
+    base, exponent = expr.args
+    b, eb, mb = _bounded(base, env, memo)
+    if exponent.is_Integer:
+        n = int(exponent)
+        v = b**n
+        if n >= 0:
+            spread = (abs(b) + eb) ** n - abs(b) ** n
+            magnitude = mb**n
+        else:
+            if abs(b) <= eb:
                 raise _Unbounded
-            v = b**r
-            spread = max(abs((b + eb) ** r - v), abs((b - eb) ** r - v))
-            return v, spread * (1 + 8 * _UNIT) + 4 * _UNIT * abs(v), abs(v)
-        raise _Unbounded
+            spread = (abs(b) - eb) ** n - abs(b) ** n
+            magnitude = abs(v)
+        return v, spread * (1 + 8 * _UNIT * abs(n)) + 2 * _gamma(abs(n) + 1) * abs(v), magnitude
+    if exponent.is_Rational:
+        r = float(exponent)
+        if b - eb <= 0:
+            raise _Unbounded
+        v = b**r
+        spread = max(abs((b + eb) ** r - v), abs((b - eb) ** r - v))
+        return v, spread * (1 + 8 * _UNIT) + 4 * _UNIT * abs(v), abs(v)
+    raise _Unbounded
+
+
+def _bounded_function(expr, env, memo) -> tuple[float, float, float]:
+    """Elementary functions of one argument, with the error of the argument carried through."""
     if isinstance(expr, (sp.sin, sp.cos)):
         x, ex, _ = _bounded(expr.args[0], env, memo)
         v = math.sin(x) if isinstance(expr, sp.sin) else math.cos(x)

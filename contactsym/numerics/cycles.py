@@ -15,7 +15,7 @@ from .fastsystem import _equilibrium_state, _fast_form, _fast_scales, fast_syste
 from .integrate import Simulation, _replace, integrate
 from .reduced import _reaction_scale, _try_branch
 from .systems import OdeSystem, _coordinates, _free_coordinates, _manifold_parameters
-from .values import _check_free, _check_span, _evaluate, _state_values, _with, numeric_values, substitute
+from .values import _check_free, _check_span, _evaluate, _state_values, _Values, _with, numeric_values, substitute
 
 
 @dataclass(frozen=True, eq=False)
@@ -124,30 +124,41 @@ def fast_cycle(
     else:
         z = np.asarray(initial, dtype=float)
 
+    section = _section(k)
+    solve = {"method": method, "rtol": rtol, "atol": rtol * scale}
+    found = _returns(system, z, z_eq, scale, T0, periods, tol, N_scale, section, solve)
+    if isinstance(found, str):
+        return _no_cycle(system, found)
+    return _sampled_cycle(system, found, samples, N_scale, section, solve)
+
+
+def _section(k: int):
+    """The Poincaré section: upward crossings of v_1 = 0 (V_1 = 0)."""
+
     def section(t, y):
         return y[k]
 
     section.direction = 1
-    atol = rtol * scale
+    return section
+
+
+def _returns(
+    system: OdeSystem, z, z_eq, scale, T0: float, periods: int, tol: float, N_scale, section, solve
+) -> tuple | str:
+    """(last return to the section, period) once successive returns agree to ``tol``, else why not.
+
+    The system is integrated in blocks of 50 linear periods ``T0``, at most ``periods`` of them.
+    """
     hits: list[np.ndarray] = []
     times: list[float] = []
     elapsed = 0.0
     while elapsed < periods * T0:
         block = 50 * T0
-        run = integrate(
-            system,
-            (elapsed, elapsed + block),
-            z,
-            method=method,
-            rtol=rtol,
-            atol=atol,
-            reaction_bound=1e6 * N_scale,
-            events=[section],
-        )
+        run = integrate(system, (elapsed, elapsed + block), z, reaction_bound=1e6 * N_scale, events=[section], **solve)
         if run.status == "impact":
-            return _no_cycle(system, "the fast motion escapes: " + run.message)
+            return "the fast motion escapes: " + run.message
         if run.status != "ok":
-            return _no_cycle(system, run.message)
+            return run.message
         for t_hit, y_hit in zip(run.extra["t_events"][0], run.extra["y_events"][0]):
             times.append(float(t_hit))
             hits.append(np.asarray(y_hit))
@@ -156,15 +167,16 @@ def fast_cycle(
         if len(hits) >= 3:
             change = np.max(np.abs(hits[-1] - hits[-2]) / scale)
             if np.max(np.abs(hits[-1] - z_eq) / scale) < tol:
-                return _no_cycle(system, "the fast motion settles on the equilibrium: it is stable, no cycle.")
+                return "the fast motion settles on the equilibrium: it is stable, no cycle."
             if change < tol and abs((times[-1] - times[-2]) - (times[-2] - times[-3])) < 1e2 * tol * T0:
-                break
-    else:
-        return _no_cycle(system, f"no convergence to a cycle within {periods} linear periods.")
-    period = times[-1] - times[-2]
-    final = integrate(
-        system, (0.0, 1.25 * period), hits[-1], method=method, rtol=rtol, atol=atol, dense_output=True, events=[section]
-    )
+                return hits[-1], times[-1] - times[-2]
+    return f"no convergence to a cycle within {periods} linear periods."
+
+
+def _sampled_cycle(system: OdeSystem, found: tuple, samples: int, N_scale: float, section, solve) -> Cycle:
+    """One period from the last return, sampled uniformly, with its reactions and their means."""
+    start, period = found
+    final = integrate(system, (0.0, 1.25 * period), start, dense_output=True, events=[section], **solve)
     crossings = [t for t in final.extra["t_events"][0] if t > 0.5 * period]
     if crossings:
         period = float(crossings[0])
@@ -221,26 +233,7 @@ def simulate_averaged(
     (('theta', 'thetadot'), 'ok')
     """
     span = _check_span(span, "span")
-    vals = numeric_values(scene, values)
-    free = _free_coordinates(scene)
-    positions, rates = [q for q, _ in free], [r for _, r in free]
-    free_state = positions + rates
-    positions_all, rates_all = _coordinates(scene)
-    state_all = positions_all + rates_all
-    given = _state_values([str(s) for s in state_all], state_all, initial, f"averaged system of '{scene.name}'")
-    missing = [str(s) for s in free_state if s not in given]
-    if missing:
-        raise NumericsError(f"give the initial values of {missing} for the averaged system.")
-    fixed_state = {s: v for s, v in given.items() if s not in free_state}
-    base = _with(vals, fixed_state)
-    for parameter, expr in _manifold_parameters(scene).items():
-        if parameter not in base.numbers:
-            base = _with(base, {parameter: _evaluate(expr, base, f"the parameter {parameter}")})
-    by_plain = {scene._plain(q): q for q in scene.coordinates}
-    G = [substitute(scene.freeze(scene.accelerations[by_plain[q]]), base) for q in positions]
-    reactions = list(scene.reactions)
-    _check_free(G, set(free_state) | set(reactions) | {_time}, "the averaged system")
-    G_function = lambdify_cse([_time, *free_state, *reactions], G)
+    free_state, z0, base = _averaged_start(scene, numeric_values(scene, values), initial)
     fast_f = [substitute(f, base) for f in scene.fast_subsystem().f]
     depends = any(f.free_symbols & set(free_state) for f in fast_f)
     options = dict(cycle_options or {})
@@ -258,7 +251,39 @@ def simulate_averaged(
             cache[key] = found
         return cache[key]
 
-    m = len(positions)
+    system = _averaged_system(scene, base, free_state, cycle_at)
+    run = integrate(
+        system, span, z0, method=method, jacobian=False, rtol=rtol, atol=atol, t_eval=t_eval, dense_output=True
+    )
+    return _replace(run, extra={**run.extra, "cycle": cache.get(()) if not depends else None})
+
+
+def _averaged_start(scene, vals: _Values, initial) -> tuple[list, np.ndarray, _Values]:
+    """(the free coordinates and rates, their initial values, the values with the fixed state and parameters)."""
+    free = _free_coordinates(scene)
+    free_state = [q for q, _ in free] + [r for _, r in free]
+    positions_all, rates_all = _coordinates(scene)
+    state_all = positions_all + rates_all
+    given = _state_values([str(s) for s in state_all], state_all, initial, f"averaged system of '{scene.name}'")
+    missing = [str(s) for s in free_state if s not in given]
+    if missing:
+        raise NumericsError(f"give the initial values of {missing} for the averaged system.")
+    fixed_state = {s: v for s, v in given.items() if s not in free_state}
+    base = _with(vals, fixed_state)
+    for parameter, expr in _manifold_parameters(scene).items():
+        if parameter not in base.numbers:
+            base = _with(base, {parameter: _evaluate(expr, base, f"the parameter {parameter}")})
+    return free_state, np.array([given[s] for s in free_state], dtype=float), base
+
+
+def _averaged_system(scene, base: _Values, free_state: list, cycle_at) -> OdeSystem:
+    """The slow coordinates driven by their accelerations averaged over the cycle ``cycle_at(state)``."""
+    m = len(free_state) // 2
+    by_plain = {scene._plain(q): q for q in scene.coordinates}
+    G = [substitute(scene.freeze(scene.accelerations[by_plain[q]]), base) for q in free_state[:m]]
+    reactions = list(scene.reactions)
+    _check_free(G, set(free_state) | set(reactions) | {_time}, "the averaged system")
+    G_function = lambdify_cse([_time, *free_state, *reactions], G)
 
     def averaged(t, y):
         cycle = cycle_at(y)
@@ -269,8 +294,7 @@ def simulate_averaged(
     def reactions_out(t, y):
         return cycle_at(y).mean_reactions
 
-    z0 = np.array([given[s] for s in free_state], dtype=float)
-    system = OdeSystem(
+    return OdeSystem(
         tuple(str(s) for s in free_state),
         averaged,
         lambda t, y: None,
@@ -279,7 +303,3 @@ def simulate_averaged(
         "t",
         f"averaged system (2.7) of '{scene.name}'",
     )
-    run = integrate(
-        system, span, z0, method=method, jacobian=False, rtol=rtol, atol=atol, t_eval=t_eval, dense_output=True
-    )
-    return _replace(run, extra={**run.extra, "cycle": cache.get(()) if not depends else None})

@@ -195,6 +195,7 @@ def simulate_fast(
     >>> simulate_fast(cs.scene("painleve-klein-rod"), values, (0, 1000)).status
     'impact'
     """
+    # long by its keyword options and docstring
     span = _check_span(span, "span")
     vals = numeric_values(scene, values)
     chosen = _fast_form(scene, unilateral, form)

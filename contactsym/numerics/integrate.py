@@ -171,6 +171,7 @@ def integrate(
     >>> run.status, round(float(run.reactions[0, -1]), 5)
     ('ok', -0.68247)
     """
+    # long only by its keyword options (those of solve_ivp, and the budget); the steps are helpers below
     start, end = _check_span(span, "span")
     method = validate.solver_method(method)
     t_eval = validate.output_times(t_eval, (start, end))

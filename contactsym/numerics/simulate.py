@@ -91,6 +91,7 @@ def simulate_full(
     >>> bool(run.t[-1] < 0.1)
     True
     """
+    # long by its keyword options and docstring; each step is a helper below
     eps = _positive(eps, "eps", "it is the time scale of the contact deformations (1.6)")
     span = _check_span(span, "span")
     if start not in ("rigid", "slow"):

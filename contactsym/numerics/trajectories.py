@@ -51,13 +51,7 @@ def fast_trajectories_data(
     centre = equilibria[0] if equilibria else np.zeros(2 * k)
     scale = _fast_scales(scene, system, centre, N_scale, chosen)
     if starts is None:
-        angles = np.linspace(0, 2 * np.pi, 6, endpoint=False)
-        starts = []
-        for a in angles:
-            z = centre.copy()
-            z[0] += 1.5 * scale[0] * np.cos(a)
-            z[k] += 1.5 * scale[k] * np.sin(a)
-            starts.append(z)
+        starts = _ring(centre, scale, k)
     trajectories, impacts = [], []
     samples = np.linspace(span[0], span[1], 600)
     for z0 in starts:
@@ -80,14 +74,7 @@ def fast_trajectories_data(
         impacts.append(run.status == "impact")
     field_data = None
     if k == 1:
-        xs = np.linspace(centre[0] - 2 * scale[0], centre[0] + 2 * scale[0], grid)
-        ys = np.linspace(centre[1] - 2 * scale[1], centre[1] + 2 * scale[1], grid)
-        X, Y = np.meshgrid(xs, ys)
-        U, V = np.empty_like(X), np.empty_like(X)
-        for index in np.ndindex(X.shape):
-            d = system.fun(0.0, np.array([X[index], Y[index]]))
-            U[index], V[index] = d
-        field_data = (X, Y, U, V)
+        field_data = _vector_field(system, centre, scale, grid)
         labels = (system.names[0], system.names[1])
         points = [(e[0], e[1]) for e in equilibria]
     else:
@@ -101,3 +88,25 @@ def fast_trajectories_data(
         "equilibria": points,
         "title": system.description,
     }
+
+
+def _ring(centre: np.ndarray, scale: np.ndarray, k: int) -> list[np.ndarray]:
+    """Six starts on an ellipse around ``centre`` in the plane of the first contact's (u, v)."""
+    starts = []
+    for a in np.linspace(0, 2 * np.pi, 6, endpoint=False):
+        z = centre.copy()
+        z[0] += 1.5 * scale[0] * np.cos(a)
+        z[k] += 1.5 * scale[k] * np.sin(a)
+        starts.append(z)
+    return starts
+
+
+def _vector_field(system, centre: np.ndarray, scale: np.ndarray, grid: int) -> tuple:
+    """(X, Y, U, V): the field of a one-contact fast subsystem on a ``grid x grid`` mesh around ``centre``."""
+    xs = np.linspace(centre[0] - 2 * scale[0], centre[0] + 2 * scale[0], grid)
+    ys = np.linspace(centre[1] - 2 * scale[1], centre[1] + 2 * scale[1], grid)
+    X, Y = np.meshgrid(xs, ys)
+    U, V = np.empty_like(X), np.empty_like(X)
+    for index in np.ndindex(X.shape):
+        U[index], V[index] = system.fun(0.0, np.array([X[index], Y[index]]))
+    return X, Y, U, V
