@@ -1,4 +1,4 @@
-"""Compliance laws (1.5) and friction laws (1.3).
+"""Compliance laws (1.5); the friction laws (1.3) are in :mod:`contactsym.friction`.
 
 A compliance law gives the normal reaction ``N(q, q', eps)`` of a deformed contact.
 After the scaling (1.8), ``q = eps**2 Q`` and ``q' = eps V``, the fast subsystem only
@@ -17,8 +17,9 @@ from dataclasses import dataclass
 import sympy as sp
 
 from .errors import ComplianceError
+from .friction import Coulomb, Viscous
 from .parse import sympy_only
-from .validate import friction_coefficient, positive_parameter, shorten
+from .validate import positive_parameter, shorten
 
 __all__ = ["Compliance", "Generic", "ImplicitDeformation", "KelvinVoigt", "Law", "Coulomb", "Viscous"]
 
@@ -412,64 +413,3 @@ def _in_domain(N: sp.Expr, conditions) -> sp.Expr:
     # NumPy evaluates both branches: keep fractional powers real where the law is not used
     real = {p: sp.Pow(sp.Max(p.base, 0), p.exp) for p in N.atoms(sp.Pow) if not p.exp.is_integer}
     return sp.Piecewise((N.xreplace(real), sp.And(*[sp.Gt(w, 0) for w in conditions])), (0, True))
-
-
-# --- friction laws (1.3) -----------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class Coulomb:
-    """Coulomb friction of magnitude ``mu |N|`` opposing a known sliding direction.
-
-    Parameters
-    ----------
-    mu : sympy expression
-        The friction coefficient.
-    direction : sympy.physics.vector.Vector or dict
-        The unit direction of sliding. With ``Scene.from_lagrangian`` give a Vector and
-        the ``point`` that slides; with ``Scene.from_accelerations`` give a dict
-        ``{coordinate: coefficient}``: the friction adds ``-mu |N| * coefficient`` to
-        that coordinate's acceleration.
-    point : sympy.physics.vector.Point, optional
-        The material point that slides (Lagrangian scenes only).
-
-    Examples
-    --------
-    >>> import sympy as sp
-    >>> Coulomb(sp.Symbol("mu"), {}).magnitude(sp.Symbol("N"), None)
-    mu*Abs(N)
-    """
-
-    mu: sp.Expr
-    direction: object
-    point: object = None
-
-    def __post_init__(self):
-        object.__setattr__(self, "mu", friction_coefficient(self.mu))
-
-    def magnitude(self, reaction: sp.Expr, slip_speed: sp.Expr | None) -> sp.Expr:
-        return self.mu * sp.Abs(reaction)
-
-
-@dataclass(frozen=True)
-class Viscous:
-    """Viscous friction ``c * (slip speed)`` opposing sliding; independent of N.
-
-    With viscous friction (3.3) holds and Proposition 4 gives a unique stable reaction.
-
-    Examples
-    --------
-    >>> import sympy as sp
-    >>> Viscous(sp.Symbol("c"), {}).magnitude(sp.Symbol("N"), sp.Symbol("w"))
-    c*w
-    """
-
-    c: sp.Expr
-    direction: object
-    point: object = None
-
-    def __post_init__(self):
-        object.__setattr__(self, "c", friction_coefficient(self.c, "the viscous coefficient c"))
-
-    def magnitude(self, reaction: sp.Expr, slip_speed: sp.Expr | None) -> sp.Expr:
-        return self.c * slip_speed

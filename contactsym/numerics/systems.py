@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import sympy as sp
+from scipy.optimize import brentq  # already loaded by scipy.integrate
 
 from ..errors import NumericsError
 from ..laws import Compliance
@@ -266,7 +267,6 @@ def _free_coordinates(scene) -> list[tuple[sp.Symbol, sp.Symbol]]:
 
 def _invert_law(N_of_Q: Callable[[float], float], target: float, scale: float) -> float:
     """Q with N(Q, 0) = target (N decreasing in Q, (1.5)), by bracketing and brentq."""
-    from scipy.optimize import brentq  # scipy.optimize is heavy to import and only needed for start='slow'
 
     def residual(Q):
         return N_of_Q(Q) - target
