@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -12,7 +12,7 @@ from ..errors import NumericsError
 from ..scene import t as _time
 from .codegen import lambdify_cse
 from .fastsystem import _equilibrium_state, _fast_form, _fast_scales, fast_system
-from .integrate import Simulation, _replace, integrate
+from .integrate import Simulation, integrate
 from .reduced import _reaction_scale, _try_branch
 from .systems import OdeSystem, _coordinates, _free_coordinates, _manifold_parameters
 from .values import _check_free, _check_span, _evaluate, _state_values, _Values, _with, numeric_values, substitute
@@ -255,7 +255,7 @@ def simulate_averaged(
     run = integrate(
         system, span, z0, method=method, jacobian=False, rtol=rtol, atol=atol, t_eval=t_eval, dense_output=True
     )
-    return _replace(run, extra={**run.extra, "cycle": cache.get(()) if not depends else None})
+    return replace(run, extra={**run.extra, "cycle": cache.get(()) if not depends else None})
 
 
 def _averaged_start(scene, vals: _Values, initial) -> tuple[list, np.ndarray, _Values]:

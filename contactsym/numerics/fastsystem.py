@@ -12,7 +12,7 @@ import sympy as sp
 from ..errors import NumericsError
 from ..laws import ImplicitDeformation
 from .codegen import _cached, lambdify_cse
-from .integrate import Simulation, _replace, integrate
+from .integrate import Simulation, integrate
 from .reduced import _reaction_scale, _try_branch
 from .systems import (
     OdeSystem,
@@ -230,7 +230,7 @@ def simulate_fast(
         max_rhs=max_rhs,
         reaction_bound=bound,
     )
-    return _replace(
+    return replace(
         run,
         extra={
             **run.extra,

@@ -318,7 +318,3 @@ def _with_solution(run: Simulation, system: OdeSystem, result, *, keep_event: bo
         sol=result.sol,
         extra={"t_events": result.t_events, "y_events": result.y_events},
     )
-
-
-def _replace(run: Simulation, **changes) -> Simulation:
-    return replace(run, **changes)

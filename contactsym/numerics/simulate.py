@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import sympy as sp
@@ -11,7 +11,7 @@ import sympy as sp
 from ..errors import NumericsError
 from ..progress import Progress
 from .codegen import lambdify_cse
-from .integrate import Simulation, _replace, integrate
+from .integrate import Simulation, integrate
 from .reduced import _reaction_scale, _try_branch
 from .systems import _contact_law, _coordinates, _invert_law, _law_scaled, _manifold_parameters, full_system
 from .values import (
@@ -147,7 +147,7 @@ def simulate_full(
     }
     if branch is None and run.status == "impact":
         extra["no_equilibrium"] = True
-    return _replace(run, extra={**run.extra, **extra})
+    return replace(run, extra={**run.extra, **extra})
 
 
 def _rigid_start(scene, vals: _Values, initial) -> tuple[_Values, np.ndarray]:
