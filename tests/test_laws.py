@@ -1,4 +1,4 @@
-"""Compliance laws (1.5), (1.8) and friction laws (1.3); the small parameter eps (1.6)."""
+"""Compliance laws (1.5), (1.8); the small parameter eps (1.6). Friction laws: tests/test_friction.py."""
 
 from __future__ import annotations
 
@@ -251,31 +251,6 @@ def test_hertz_law_with_check_false_gives_phi_of_u():
     for c_value, u_value in [(1, 8), (2, 3), (sp.Rational(1, 2), 5)]:
         expected = -sp.Rational(3, 2) * c_value ** sp.Rational(2, 3) * u_value ** sp.Rational(1, 3)
         assert abs(complex(Phi.subs({c: c_value, u: u_value})) - complex(expected)) < 1e-12
-
-
-# --- friction laws --------------------------------------------------------------------
-
-
-def test_coulomb_magnitude_is_mu_abs_n():
-    mu, N, w = sp.symbols("mu N w", real=True)
-    law = cs.Coulomb(mu, {})
-    assert law.magnitude(N, w) == mu * sp.Abs(N)
-    assert law.magnitude(-N, None) == mu * sp.Abs(N)
-    assert law.magnitude(sp.Integer(-3), w) == 3 * mu
-    assert law.point is None
-
-
-def test_viscous_magnitude_is_c_times_slip_speed():
-    N, w = sp.symbols("N w", real=True)
-    law = cs.Viscous(c, {})
-    assert law.magnitude(N, w) == c * w
-    assert not law.magnitude(N, w).has(N)
-
-
-def test_friction_laws_are_frozen():
-    law = cs.Coulomb(sp.Symbol("mu"), {})
-    with pytest.raises(AttributeError):
-        law.mu = 1
 
 
 # --- eps (1.6) ------------------------------------------------------------------------
