@@ -22,9 +22,13 @@ The sign conditions (1.5) are checked on each law's domain.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import sympy as sp
 
+from .errors import ComplianceError
 from .laws import KelvinVoigt, Law, _require_positive
+from .scene import Scene
 
 __all__ = ["CubicStiffening", "Hertz", "HuntCrossley", "KelvinVoigt", "with_laws"]
 
@@ -45,9 +49,7 @@ def _exponent(n) -> sp.Expr:
     return n
 
 
-def _error(message: str):
-    from .errors import ComplianceError
-
+def _error(message: str) -> ComplianceError:
     return ComplianceError(message)
 
 
@@ -144,10 +146,6 @@ def with_laws(scene, laws):
     >>> brake.fast_subsystem().Phi[0]
     -3*2**(2/3)*(u_1 + v_1)**(1/3)/2
     """
-    from dataclasses import replace
-
-    from .scene import Scene
-
     laws = list(laws) if isinstance(laws, (list, tuple)) else [laws] * scene.k
     if len(laws) != scene.k:
         raise _error(f"got {len(laws)} laws for the {scene.k} contacts of '{scene.name}'; give one per contact.")

@@ -25,3 +25,11 @@ class SignPatternError(ContactsymError):
 
 class HopfError(ContactsymError):
     """A Hopf question asked where it has no answer: off the Hopf set, or no oscillatory pair."""
+
+
+class NumericsError(ContactsymError):
+    """Bad numeric input (non-finite parameter, eps <= 0, missing value) or a failed solve."""
+
+    # defined here, at the bottom of the import graph, so that the input checks (validate, progress) can raise it
+    # without importing the numerics they serve; users meet it, and import it, as contactsym.numerics.NumericsError
+    __module__ = "contactsym.numerics"

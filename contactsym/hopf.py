@@ -22,21 +22,13 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from .errors import ComplianceError, HopfError
-from .laws import Generic, KelvinVoigt, Law
+from .errors import ComplianceError, HopfError, NumericsError
+from .laws import Generic, KelvinVoigt, Law, _in_domain
 from .lyapunov import HopfVectors, lyapunov_numeric
-from .numerics import (
-    NumericsError,
-    _branch_at,
-    _cached,
-    _contact_law,
-    _in_domain,
-    _laws_key,
-    _Values,
-    lambdify_cse,
-    numeric_values,
-    substitute,
-)
+from .numerics.codegen import _cached, lambdify_cse
+from .numerics.reduced import _branch_at
+from .numerics.systems import _contact_law, _laws_key
+from .numerics.values import _Values, numeric_values, substitute
 
 __all__ = ["HopfCoefficient", "first_lyapunov", "hopf_point"]
 

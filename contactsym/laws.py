@@ -1,4 +1,4 @@
-"""Compliance laws (1.5) and friction laws (1.3).
+"""Compliance laws (1.5); the friction laws (1.3) are in :mod:`contactsym.friction`.
 
 A compliance law gives the normal reaction ``N(q, q', eps)`` of a deformed contact.
 After the scaling (1.8), ``q = eps**2 Q`` and ``q' = eps V``, the fast subsystem only
@@ -17,8 +17,9 @@ from dataclasses import dataclass
 import sympy as sp
 
 from .errors import ComplianceError
+from .friction import Coulomb, Viscous
 from .parse import sympy_only
-from .validate import friction_coefficient, positive_parameter, shorten
+from .validate import positive_parameter, shorten
 
 __all__ = ["Compliance", "Generic", "ImplicitDeformation", "KelvinVoigt", "Law", "Coulomb", "Viscous"]
 
@@ -45,6 +46,26 @@ class Compliance:
         """The contact deformation q as a function of the fast variables (1.6)."""
         raise NotImplementedError
 
+    def reaction(self, q: sp.Expr, qdot: sp.Expr, eps: sp.Expr, index: int | None) -> sp.Expr:
+        """The reaction N(q, q', eps) at the deformation ``q``, its rate ``qdot`` and ``eps`` (1.5).
+
+        ``index`` numbers the contact (None for a scene's only contact); it names the
+        symbols of a law that leaves Phi, Psi free (:meth:`coefficients`).
+        """
+        raise NotImplementedError
+
+    def reaction_scaled(self, Q: sp.Expr, V: sp.Expr, index: int | None) -> sp.Expr:
+        """The reaction in the scaled deformation Q = q/eps**2 and rate V = q'/eps, as eps -> 0 (1.8)."""
+        raise NotImplementedError
+
+    def parameters(self) -> set:
+        """The symbols the law brings into a scene (its stiffness, damping, ...)."""
+        return set()
+
+    def coefficients(self, index: int | None) -> tuple:
+        """The symbols that need numbers before the law gives a numeric reaction (a generic law's Phi, Psi)."""
+        return ()
+
 
 @dataclass(frozen=True)
 class Generic(Compliance):
@@ -66,6 +87,26 @@ class Generic(Compliance):
     def deformation(self, u, v, eps, index):
         suffix = "" if index is None else f"_{index}"
         return eps**2 * sp.Function(f"Q{suffix}")(u, v)
+
+    def reaction(self, q, qdot, eps, index):
+        """``N = Phi q/eps**2 + Psi q'/eps``: the linear law with the contact's Phi, Psi.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> q, qdot, eps = sp.symbols("q qdot epsilon")
+        >>> Generic().reaction(q, qdot, eps, 2)
+        Phi_2*q/epsilon**2 + Psi_2*qdot/epsilon
+        """
+        Phi, Psi = self.coefficients(index)
+        return Phi * q / eps**2 + Psi * qdot / eps
+
+    def reaction_scaled(self, Q, V, index):
+        Phi, Psi = self.coefficients(index)
+        return Phi * Q + Psi * V
+
+    def coefficients(self, index):
+        return self.phi_psi(None, None, index)
 
 
 def _require_positive(value: sp.Expr, what: str) -> sp.Expr:
@@ -114,6 +155,23 @@ class KelvinVoigt(Compliance):
 
     def deformation(self, u, v, eps, index):
         return -(eps**2) * (u + self.damping * v) / self.stiffness
+
+    def reaction(self, q, qdot, eps, index):
+        """``N = -stiffness q/eps**2 - damping q'/eps``.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> KelvinVoigt(2, 3).reaction(sp.Symbol("q"), sp.Symbol("qdot"), sp.Float(0.5), None)
+        -8.0*q - 6.0*qdot
+        """
+        return -self.stiffness * q / eps**2 - self.damping * qdot / eps
+
+    def reaction_scaled(self, Q, V, index):
+        return -self.stiffness * Q - self.damping * V
+
+    def parameters(self):
+        return self.stiffness.free_symbols | self.damping.free_symbols
 
 
 class ImplicitDeformation(sp.Function):
@@ -325,63 +383,33 @@ class Law(Compliance):
     def deformation(self, u, v, eps, index):
         return eps**2 * self._Q_of(u, v, "Q" if index is None else f"Q_{index}")
 
+    def reaction(self, q, qdot, eps, index):
+        """The law as written, and N = 0 outside its domain ``where`` (see :func:`_in_domain`).
 
-# --- friction laws (1.3) -----------------------------------------------------------
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> q, qd = sp.symbols("q qdot", real=True)
+        >>> eps = sp.Symbol("epsilon", positive=True)
+        >>> hertz = Law((-q) ** sp.Rational(3, 2) / eps**3 - qd / eps, q, qd, eps, where=[-q])
+        >>> hertz.reaction(sp.Symbol("g"), sp.Symbol("gdot"), sp.Integer(1), None)
+        Piecewise((-gdot + Max(0, -g)**(3/2), g < 0), (0, True))
+        """
+        at = {self.q: q, self.qdot: qdot, self.eps: eps}
+        return _in_domain(self.expr.xreplace(at), [w.xreplace(at) for w in self.where])
 
+    def reaction_scaled(self, Q, V, index):
+        at = {self.Q: Q, self.V: V}
+        return _in_domain(self.scaled.xreplace(at), [w.xreplace(at) for w in self.domain])
 
-@dataclass(frozen=True)
-class Coulomb:
-    """Coulomb friction of magnitude ``mu |N|`` opposing a known sliding direction.
-
-    Parameters
-    ----------
-    mu : sympy expression
-        The friction coefficient.
-    direction : sympy.physics.vector.Vector or dict
-        The unit direction of sliding. With ``Scene.from_lagrangian`` give a Vector and
-        the ``point`` that slides; with ``Scene.from_accelerations`` give a dict
-        ``{coordinate: coefficient}``: the friction adds ``-mu |N| * coefficient`` to
-        that coordinate's acceleration.
-    point : sympy.physics.vector.Point, optional
-        The material point that slides (Lagrangian scenes only).
-
-    Examples
-    --------
-    >>> import sympy as sp
-    >>> Coulomb(sp.Symbol("mu"), {}).magnitude(sp.Symbol("N"), None)
-    mu*Abs(N)
-    """
-
-    mu: sp.Expr
-    direction: object
-    point: object = None
-
-    def __post_init__(self):
-        object.__setattr__(self, "mu", friction_coefficient(self.mu))
-
-    def magnitude(self, reaction: sp.Expr, slip_speed: sp.Expr | None) -> sp.Expr:
-        return self.mu * sp.Abs(reaction)
+    def parameters(self):
+        return self.expr.free_symbols - {self.q, self.qdot, self.eps}
 
 
-@dataclass(frozen=True)
-class Viscous:
-    """Viscous friction ``c * (slip speed)`` opposing sliding; independent of N.
-
-    With viscous friction (3.3) holds and Proposition 4 gives a unique stable reaction.
-
-    Examples
-    --------
-    >>> import sympy as sp
-    >>> Viscous(sp.Symbol("c"), {}).magnitude(sp.Symbol("N"), sp.Symbol("w"))
-    c*w
-    """
-
-    c: sp.Expr
-    direction: object
-    point: object = None
-
-    def __post_init__(self):
-        object.__setattr__(self, "c", friction_coefficient(self.c, "the viscous coefficient c"))
-
-    def magnitude(self, reaction: sp.Expr, slip_speed: sp.Expr | None) -> sp.Expr:
-        return self.c * slip_speed
+def _in_domain(N: sp.Expr, conditions) -> sp.Expr:
+    """A law defined only where its conditions are positive (Hertz: in compression) gives N = 0 elsewhere."""
+    if not conditions:
+        return N
+    # NumPy evaluates both branches: keep fractional powers real where the law is not used
+    real = {p: sp.Pow(sp.Max(p.base, 0), p.exp) for p in N.atoms(sp.Pow) if not p.exp.is_integer}
+    return sp.Piecewise((N.xreplace(real), sp.And(*[sp.Gt(w, 0) for w in conditions])), (0, True))

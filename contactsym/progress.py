@@ -26,6 +26,9 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 
+from .errors import NumericsError
+from .validate import finite_number
+
 __all__ = ["Budget", "Progress"]
 
 #: A progress callback: ``progress(fraction_done, message)``.
@@ -45,13 +48,9 @@ class Budget:
     """
 
     def __init__(self, progress: Progress | None = None, max_seconds: float | None = None, every: float = 0.25):
-        from .validate import finite_number
-
         self.progress = progress
         self.max_seconds = None if max_seconds is None else finite_number(max_seconds, "max_seconds")
         if self.max_seconds is not None and self.max_seconds < 0:
-            from .numerics import NumericsError
-
             raise NumericsError(f"max_seconds = {max_seconds} must be >= 0.")
         self.every = every
         self.started = time.perf_counter()

@@ -28,8 +28,9 @@ from fractions import Fraction
 
 import numpy as np
 import sympy as sp
+from sympy.physics.vector import Point, ReferenceFrame, Vector
 
-from .errors import ComplianceError, SceneError, SignPatternError
+from .errors import ComplianceError, NumericsError, SceneError, SignPatternError
 
 __all__ = [
     "SHOWN",
@@ -176,8 +177,6 @@ def scene_parts(coordinates, accelerations, contacts, *, derived: bool = False) 
     ...
     contactsym.errors.SceneError: got 2 accelerations for 1 coordinates; give one per coordinate.
     """
-    from .scene import Contact
-
     coordinates = _sequence(coordinates, "coordinates", "e.g. dynamicsymbols('x y')")
     coordinates = tuple(_coordinate(q) for q in coordinates)
     if not coordinates:
@@ -188,7 +187,7 @@ def scene_parts(coordinates, accelerations, contacts, *, derived: bool = False) 
         accelerations = _check_accelerations(coordinates, accelerations)
     contacts = _sequence(contacts, "contacts", "give a list of Contact(coordinate=..., reaction=...)")
     for index, contact in enumerate(contacts):
-        if not isinstance(contact, Contact):
+        if not _is_contact(contact):
             raise SceneError(
                 f"contact {index} is a {type(contact).__name__} {shorten(contact)}; "
                 "write Contact(coordinate=y, reaction=N) for each contact."
@@ -196,6 +195,11 @@ def scene_parts(coordinates, accelerations, contacts, *, derived: bool = False) 
     if not contacts:
         raise SceneError("a scene needs at least one Contact.")
     return coordinates, accelerations, contacts
+
+
+def _is_contact(value) -> bool:
+    """A scene.Contact, recognised by its fields: scene.py imports this module, so it cannot be imported here."""
+    return all(hasattr(value, name) for name in ("coordinate", "reaction", "compliance", "friction", "unilateral"))
 
 
 def scene_options(name, description, at, presentation, parameters, positive, solve_for) -> None:
@@ -223,8 +227,6 @@ def scene_options(name, description, at, presentation, parameters, positive, sol
 
 def lagrangian_parts(lagrangian, loads, frame) -> None:
     """A finite Lagrangian, loads as (Point or ReferenceFrame, Vector) pairs, and an optional frame."""
-    from sympy.physics.vector import Point, ReferenceFrame, Vector
-
     finite_expression(lagrangian, "the Lagrangian")
     for load in _sequence(loads, "loads", "give a list of (Point or ReferenceFrame, Vector) pairs"):
         if not (isinstance(load, (tuple, list)) and len(load) == 2 and isinstance(load[0], (Point, ReferenceFrame))):
@@ -249,8 +251,6 @@ def _check_accelerations(coordinates: tuple, accelerations) -> tuple:
 
 def contact_fields(coordinate, compliance, friction, unilateral) -> None:
     """The fields of a Contact other than its reaction (checked by the Contact itself)."""
-    from .laws import Compliance, Coulomb, Viscous
-
     if not isinstance(coordinate, (str, bytes)):  # text is refused by parse.sympy_only, with its own message
         if not isinstance(coordinate, sp.Basic):
             raise SceneError(
@@ -258,14 +258,20 @@ def contact_fields(coordinate, compliance, friction, unilateral) -> None:
                 f"not {type(coordinate).__name__} {shorten(coordinate)}."
             )
         finite_expression(coordinate, "the gap of a contact")
-    if compliance is not None and not isinstance(compliance, Compliance):
+    if compliance is not None and not _has_methods(compliance, "phi_psi", "deformation", "reaction"):
         raise SceneError(
             f"compliance = {shorten(compliance)} is not a law; use Generic(), KelvinVoigt(...) or Law(...)."
         )
-    if friction is not None and not isinstance(friction, (Coulomb, Viscous)):
+    if friction is not None and not _has_methods(friction, "magnitude"):
         raise SceneError(f"friction = {shorten(friction)} is not a friction law; use Coulomb(...) or Viscous(...).")
     if not isinstance(unilateral, (bool, np.bool_)):
         raise SceneError(f"unilateral = {shorten(unilateral)} must be True or False.")
+
+
+def _has_methods(value, *names: str) -> bool:
+    """A law recognised by what it does (laws.py imports this module, so it cannot be imported here):
+    a compliance law gives Phi, Psi, the deformation and the reaction; a friction law its magnitude."""
+    return not isinstance(value, type) and all(callable(getattr(value, name, None)) for name in names)
 
 
 def reactions_act(accelerations: dict, contacts: Sequence) -> None:
@@ -299,8 +305,6 @@ def sign_pattern(signs) -> tuple[int, ...]:
 
 def solver_method(method, allowed: Sequence[str] = ("Radau", "BDF", "LSODA", "RK45", "RK23", "DOP853")) -> str:
     """The name of a ``solve_ivp`` method."""
-    from .numerics import NumericsError
-
     if method not in allowed:
         raise NumericsError(f"method = {shorten(method)} is not a solver; use one of {', '.join(allowed)}.")
     return method
@@ -308,8 +312,6 @@ def solver_method(method, allowed: Sequence[str] = ("Radau", "BDF", "LSODA", "RK
 
 def real_array(values, what: str) -> np.ndarray:
     """Real floats from numbers or arrays; complex values are an error, not cut to their real part."""
-    from .numerics import NumericsError
-
     if isinstance(values, (str, bytes)):
         raise NumericsError(f"{what} = {shorten(values)} is text; pass numbers.")
     try:
@@ -325,8 +327,6 @@ def real_array(values, what: str) -> np.ndarray:
 
 def output_times(t_eval, span: tuple[float, float]) -> np.ndarray | None:
     """Output times: finite, inside the span and in its direction."""
-    from .numerics import NumericsError
-
     if t_eval is None:
         return None
     times = real_array(t_eval, "t_eval").ravel()
@@ -345,8 +345,6 @@ def output_times(t_eval, span: tuple[float, float]) -> np.ndarray | None:
 
 def chunk_size(chunk) -> int:
     """A positive whole number of points per chunk."""
-    from .numerics import NumericsError
-
     if isinstance(chunk, (bool, np.bool_)) or not isinstance(chunk, (int, np.integer)) or chunk < 1:
         raise NumericsError(f"chunk = {shorten(chunk)} must be a whole number >= 1 (points per chunk).")
     return int(chunk)
@@ -354,8 +352,6 @@ def chunk_size(chunk) -> int:
 
 def finite_number(value, what: str) -> float:
     """A finite float from a real number."""
-    from .numerics import NumericsError
-
     if isinstance(value, _NUMBER_TYPES) and not isinstance(value, (bool, np.bool_)):
         if math.isfinite(float(value)):
             return float(value)

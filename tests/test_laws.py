@@ -1,4 +1,4 @@
-"""Compliance laws (1.5), (1.8) and friction laws (1.3); the small parameter eps (1.6)."""
+"""Compliance laws (1.5), (1.8); the small parameter eps (1.6). Friction laws: tests/test_friction.py."""
 
 from __future__ import annotations
 
@@ -253,31 +253,6 @@ def test_hertz_law_with_check_false_gives_phi_of_u():
         assert abs(complex(Phi.subs({c: c_value, u: u_value})) - complex(expected)) < 1e-12
 
 
-# --- friction laws --------------------------------------------------------------------
-
-
-def test_coulomb_magnitude_is_mu_abs_n():
-    mu, N, w = sp.symbols("mu N w", real=True)
-    law = cs.Coulomb(mu, {})
-    assert law.magnitude(N, w) == mu * sp.Abs(N)
-    assert law.magnitude(-N, None) == mu * sp.Abs(N)
-    assert law.magnitude(sp.Integer(-3), w) == 3 * mu
-    assert law.point is None
-
-
-def test_viscous_magnitude_is_c_times_slip_speed():
-    N, w = sp.symbols("N w", real=True)
-    law = cs.Viscous(c, {})
-    assert law.magnitude(N, w) == c * w
-    assert not law.magnitude(N, w).has(N)
-
-
-def test_friction_laws_are_frozen():
-    law = cs.Coulomb(sp.Symbol("mu"), {})
-    with pytest.raises(AttributeError):
-        law.mu = 1
-
-
 # --- eps (1.6) ------------------------------------------------------------------------
 
 x, y = dynamicsymbols("x y")
@@ -315,3 +290,42 @@ def test_eps_of_unknown_sign_asks_for_positive_true(value):
     message = str(info.value)
     assert "cannot show eps = e > 0" in message
     assert "positive=True" in message
+
+
+# --- the reaction each law writes for the numerics (Compliance.reaction, reaction_scaled) ----------
+
+
+LAWS = [
+    cs.Generic(),
+    cs.KelvinVoigt(k, d),
+    cs.Law(-k * q / eps**2 - d * qd / eps - c * (qd / eps) ** 3, q, qd, eps),
+    cs.Law(-k * q / eps**2 - c * (q / eps**2) ** 3 - d * qd / eps, q, qd, eps),
+]
+
+
+@pytest.mark.parametrize("index", [None, 2])
+@pytest.mark.parametrize("law", LAWS, ids=lambda law: type(law).__name__)
+def test_scaled_reaction_is_the_limit_of_the_reaction_and_its_slopes_are_phi_psi(law, index):
+    # (1.8): N(eps^2 Q, eps V, eps) -> reaction_scaled(Q, V) as eps -> 0, and (3.1): its slopes in Q and V
+    # are Phi and Psi, the law's own phi_psi, at u = N (checked where Q(u, v) is not implicit)
+    N = law.reaction(eps**2 * Q, eps * V, eps, index)
+    scaled = law.reaction_scaled(Q, V, index)
+    assert same(sp.limit(N, eps, 0, "+"), scaled)
+    Phi, Psi = law.phi_psi(u, v, index)
+    if isinstance(law, cs.Law) and not law.constant:
+        Phi, Psi = (e.xreplace({s: Q for s in e.atoms(cs.laws.ImplicitDeformation)}) for e in (Phi, Psi))
+    at = {u: scaled, v: V}
+    assert same(sp.diff(scaled, Q), Phi.subs(at)) and same(sp.diff(scaled, V), Psi.subs(at))
+
+
+def test_only_a_generic_law_needs_numbers_for_phi_psi_and_laws_name_their_parameters():
+    assert cs.Generic().coefficients(1) == cs.Generic().phi_psi(u, v, 1)
+    assert all(law.coefficients(1) == () for law in LAWS[1:])
+    assert cs.KelvinVoigt(k, 2 * d).parameters() == {k, d}
+    assert LAWS[2].parameters() == {k, d, c}
+
+
+def test_a_law_defined_in_compression_gives_no_reaction_where_the_contact_opens():
+    hertz = cs.Law((-q) ** sp.Rational(3, 2) / eps**3 - qd / eps, q, qd, eps, where=[-q])
+    f = sp.lambdify([Q, V], hertz.reaction_scaled(Q, V, None))
+    assert f(-4.0, 0.0) == pytest.approx(8.0) and f(1.0, -5.0) == 0.0  # open: N = 0, never a complex power

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from .grid import AtlasError
+from .run import sweep
 
 __all__ = ["add_atlas_command", "parse_axis", "run_atlas"]
 
@@ -105,8 +106,6 @@ def _write(ds, out: Path) -> None:
 
 def run_atlas(args) -> int:
     """Run ``contactsym atlas``; returns the exit code."""
-    from .run import sweep
-
     try:
         grid = dict(parse_axis(text) for text in args.grid)
         values = dict(_parse_set(text) for text in args.set)

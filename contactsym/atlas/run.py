@@ -9,6 +9,7 @@ written as the chunks finish (memory or a Zarr checkpoint), on the calling machi
 from __future__ import annotations
 
 import contextlib
+import importlib
 import json
 import os
 import threading
@@ -16,6 +17,7 @@ import uuid
 
 import numpy as np
 
+from ..scenes import scene as scene_by_name
 from .grid import AtlasError, Grid, as_grid
 from .kernel import Kernel
 from .quantities import as_quantity
@@ -29,8 +31,6 @@ VECTOR_CHUNK, POINT_CHUNK = 4096, 16
 
 def _require(module: str):
     """Import an optional dependency of the atlas (contactsym[atlas]), or say how to get it."""
-    import importlib
-
     try:
         return importlib.import_module(module)
     except ImportError:
@@ -66,7 +66,7 @@ def _run_here(kernel, grid, chunk, todo, results, progress) -> None:
 def _run_local(kernel, grid, chunk, todo, results, scheduler, workers, progress) -> None:
     """Dask's local scheduler; each finished chunk is written by a callback in this process."""
     dask = _require("dask")
-    from dask.callbacks import Callback
+    from dask.callbacks import Callback  # dask is optional (contactsym[atlas]): imported only for a sweep
     from dask.diagnostics import ProgressBar
 
     class Writer(Callback):
@@ -182,7 +182,6 @@ def sweep(
     contactsym.atlas.grid.AtlasError: the grid axis 'mu' is empty; give at least one value.
     """
     xr = _require("xarray")  # checked first: nothing starts without the container of the results
-    from ..scenes import scene as scene_by_name
 
     chosen = as_quantity(quantity)
     grid = as_grid(grid, max_points=max_points)

@@ -1,0 +1,394 @@
+"""Certified, vectorised classification of many parameter points (:class:`PointClassifier`)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from fractions import Fraction
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from .. import validate
+from ..errors import NumericsError
+from ..parse import sympy_only
+from ..progress import Budget, Progress
+from .certified import _exact_float, _gamma, certified_sign
+from .codegen import lambdify_cse
+
+
+class PointClassifier:
+    """Certified, vectorised classification of many parameter points.
+
+    Each condition (stable iff all > 0) is factored, and factors of known sign (masses,
+    Phi < 0, Psi < 0) are dropped; equal factors of different conditions are evaluated
+    once. Each remaining factor is split into its terms of known sign, F = P - M + U with
+    P, M sums of nonnegative terms and U the terms of unknown sign. P and M are
+    factored again where every sum of the factored form has terms of one sign: such a
+    form is cheaper and keeps a relative error bound, |P^ - P| <= gamma_r P with r the
+    roundings along its longest path. Hence |F^ - F| <= gamma (P + M + |U|), and the sign
+    is certain where |F^| > 2 gamma (P + M + |U|). A factor without negative part is
+    certain wherever P^ > 0. The bounds assume no overflow, underflow or invalid
+    operation: the float stage runs with these trapped, in chunks that stay in the
+    cache, and a chunk that traps is halved until the points that cause it are found.
+    Those points and the points inside ``max(band, 2 gamma)`` relative are decided
+    exactly: the binary inputs are exact rationals, F is evaluated in 256-bit
+    arithmetic, and where even that leaves |F| < 2^-200 (P + M + |U|) the point is
+    recomputed in SymPy rationals.
+
+    Parameters
+    ----------
+    conditions : sequence of sympy expressions
+        Stable exactly when all are > 0 (e.g. ``Stability.hurwitz``); SymPy objects, not text.
+    parameters : sequence of Symbol
+        The order of the parameter arrays passed to :meth:`__call__`. Functions such as
+        ``sin`` must act on expressions that are exact in floating point (a parameter,
+        or twice a parameter); otherwise introduce a parameter for the argument.
+    band : float
+        Relative half-width of the band decided exactly.
+
+    Examples
+    --------
+    >>> import numpy as np, sympy as sp
+    >>> import contactsym as cs
+    >>> st = cs.scene("brake").stability()
+    >>> Phi, Psi = sp.symbols("Phi Psi", negative=True)
+    >>> m, mu, alpha = sp.symbols("m mu alpha", positive=True)
+    >>> (P1, P2), (S1, S2) = st.linearization.Phi, st.linearization.Psi
+    >>> slice_6_4 = {alpha: sp.pi/2, P1: Phi, P2: Phi, S1: Psi, S2: Psi}
+    >>> pc = PointClassifier([c.subs(slice_6_4) for c in st.hurwitz], [m, mu, Phi, Psi])
+    >>> pc.kept
+    [Phi*m*mu**2 + Psi**2*mu**2 + Psi**2]
+    >>> pc.parts[0]  # P and M of the kept factor
+    (Psi**2*(mu**2 + 1), -Phi*m*mu**2)
+    >>> out = pc(np.array([1.0, 1.0]), np.array([1.0, 1.0]), np.array([-2.0, -1.0]), np.array([-1.0, -1.0]))
+    >>> out.stable.tolist(), out.exact_points
+    ([0, 1], 1)
+    """
+
+    def __init__(self, conditions: Sequence, parameters: Sequence[sp.Symbol], *, band: float = 1e-12):
+        self.parameters = tuple(parameters)
+        self.band = float(band)
+        self.conditions = [sympy_only(c, "a condition") for c in conditions]
+        self.kept: list[sp.Expr] = []  # distinct factors of unknown sign
+        self.uses: list[tuple[int, int, int]] = []  # (condition index, sign, position in kept)
+        self.always_false: list[int] = []
+        for index, condition in enumerate(self.conditions):
+            sign, factors = self._reduce(condition)
+            if sign == 0:
+                self.always_false.append(index)
+            for number, factor in enumerate(factors):
+                if factor not in self.kept:
+                    self.kept.append(factor)
+                self.uses.append((index, sign if number == 0 else 1, self.kept.index(factor)))
+        free = set().union(*[f.free_symbols for f in self.kept]) if self.kept else set()
+        if free - set(self.parameters):
+            raise NumericsError(f"the conditions also need values for {sorted(map(str, free - set(self.parameters)))}.")
+        self.parts = [self._split(factor) for factor in self.kept]
+        code = [tuple(_through_tan(g) for g in p) for p in self.parts]
+        self.gammas = [_gamma(max(_roundings(g) for g in p) + 3) for p in code]
+        self._function = lambdify_cse(self.parameters, [g for p in code for g in p])
+        self._mp_function = self._mp_functions()
+
+    def _mp_functions(self) -> list:
+        return [sp.lambdify(self.parameters, list(p), modules="mpmath") for p in self.parts]
+
+    def __getstate__(self) -> dict:
+        # code generated for mpmath holds mpmath's context, which does not pickle (a Dask
+        # worker receives the classifier by value): it is generated again when first needed
+        return {k: v for k, v in self.__dict__.items() if k != "_mp_function"}
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self._mp_function = None
+
+    @staticmethod
+    def _reduce(condition: sp.Expr) -> tuple[int, list]:
+        """(sign of the dropped factors, factors of unknown sign)."""
+        if condition.is_positive:
+            return 1, []
+        if condition.is_nonpositive:
+            return 0, []
+        factored = sp.factor(condition) if sp.count_ops(condition) < 400 else sp.factor_terms(condition)
+        sign, kept = 1, []
+        for factor in sp.Mul.make_args(factored):
+            if factor.is_positive:
+                continue
+            if factor.is_negative:
+                sign = -sign
+                continue
+            kept.append(factor)
+        return sign, kept or [sp.S.One]
+
+    @staticmethod
+    def _split(factor: sp.Expr) -> tuple:
+        """(P, M) or (P, M, U, |U|): the factor is P - M + U."""
+        plus, minus, unknown = [], [], []
+        for term in sp.Add.make_args(sp.expand(factor)):
+            if term.is_nonnegative:
+                plus.append(term)
+            elif term.is_nonpositive:
+                minus.append(-term)
+            else:
+                unknown.append(term)
+        P, M = (_one_signed_form(sp.Add(*terms)) for terms in (plus, minus))
+        if not unknown:
+            return P, M
+        return P, M, sp.Add(*unknown), sp.Add(*[sp.Abs(t) for t in unknown])
+
+    def _check(self, arrays) -> list[np.ndarray]:
+        if len(arrays) != len(self.parameters):
+            raise NumericsError(
+                f"give {len(self.parameters)} arrays, one per parameter {list(map(str, self.parameters))}."
+            )
+        return [validate.real_array(array, f"the values of {symbol}") for symbol, array in zip(self.parameters, arrays)]
+
+    def _check_values(self, arrays) -> None:
+        for symbol, a in zip(self.parameters, arrays):
+            if a.size == 0:
+                continue
+            low, high = a.min(), a.max()  # NaN propagates; +-inf shows in the extremes
+            if not (math.isfinite(low) and math.isfinite(high)):
+                raise NumericsError(f"the values of {symbol} are not all finite.")
+            if symbol.is_positive and not low > 0:
+                raise NumericsError(f"{symbol} is declared positive; some values are <= 0.")
+            if symbol.is_negative and not high < 0:
+                raise NumericsError(f"{symbol} is declared negative; some values are >= 0.")
+
+    def _float_stage(self, arrays, size: int) -> np.ndarray:
+        """Per kept factor: its sign where certain (+1/-1) and 0 where not (int8).
+
+        An overflow, underflow or invalid operation would void the relative error bounds:
+        a chunk where one occurs is halved until the points that cause it are found, and
+        those are left to the exact path.
+        """
+        try:
+            with np.errstate(all="raise"):
+                return self._signs(arrays, size)
+        except FloatingPointError:
+            if size == 1:
+                return np.zeros((len(self.kept), 1), dtype=np.int8)
+            half = size // 2
+            return np.concatenate(
+                [
+                    self._float_stage([a[:half] for a in arrays], half),
+                    self._float_stage([a[half:] for a in arrays], size - half),
+                ],
+                axis=1,
+            )
+
+    def _signs(self, arrays, size: int) -> np.ndarray:
+        values = iter(self._function(*arrays))
+        out = np.empty((len(self.kept), size), dtype=np.int8)
+        for position, part in enumerate(self.parts):
+            groups = [_as_array(next(values), size) for _ in part]
+            out[position] = _certain_sign(groups, max(self.band, 2 * self.gammas[position]), part)
+        return out
+
+    def _high_precision_sign(self, position: int, point: list[float]) -> int | None:
+        """Sign of a kept factor in 256-bit arithmetic from the exact binary inputs, or None."""
+        if self._mp_function is None:  # unpickled: see __getstate__
+            self._mp_function = self._mp_functions()
+        with mpmath.workprec(256):
+            P, M, *rest = self._mp_function[position](*[mpmath.mpf(x) for x in point])
+            U, Ua = rest or (0, 0)
+            value = P - M + U
+            if abs(value) > mpmath.mpf(2) ** -200 * (P + M + Ua):
+                return 1 if value > 0 else -1
+        return None
+
+    def __call__(
+        self, *arrays, chunk: int = 1 << 15, progress: Progress | None = None, max_seconds: float | None = None
+    ) -> _PointsResult:
+        """Classify the points; ``progress(fraction, message)`` follows the exact path, which
+        ``max_seconds`` bounds (a NumericsError then says how many points were decided)."""
+        chunk = validate.chunk_size(chunk)
+        budget = Budget(progress, max_seconds)
+        arrays = self._check(arrays)
+        shape = np.broadcast(*arrays).shape if arrays else ()
+        arrays = [np.ascontiguousarray(np.broadcast_to(a, shape)).ravel() for a in arrays]
+        size = int(np.prod(shape))
+        factor_signs = np.empty((len(self.kept), size), dtype=np.int8)
+        signs = np.empty((len(self.conditions), size), dtype=np.int8)
+        stable = np.empty(size, dtype=np.int8)
+        for start in range(0, size, chunk):  # chunks that stay in the cache
+            stop = min(start + chunk, size)
+            part = factor_signs[:, start:stop]
+            self._check_values([a[start:stop] for a in arrays])
+            part[...] = self._float_stage([a[start:stop] for a in arrays], stop - start)
+            self._combine(part, signs[:, start:stop], stable[start:stop])
+        in_band = np.zeros(size, dtype=bool)
+        for position in range(len(self.kept)):
+            in_band |= factor_signs[position] == 0
+        points = np.nonzero(in_band)[0]
+        for done, i in enumerate(points):
+            if budget.report(done / len(points), f"{done} of {len(points)} points decided exactly"):
+                raise NumericsError(
+                    f"the exact path decided {done} of {len(points)} points near a boundary within max_seconds = "
+                    f"{max_seconds:g} (the float stage decided the other {size - len(points)}); raise max_seconds, "
+                    "or classify fewer points at a time."
+                )
+            point = [float(a[i]) for a in arrays]
+            for position in np.nonzero(factor_signs[:, i] == 0)[0]:
+                factor_signs[position, i] = self._exact_factor_sign(position, point)
+            self._combine(factor_signs[:, i : i + 1], signs[:, i : i + 1], stable[i : i + 1])
+        budget.report(1.0, f"{size} points, {len(points)} decided exactly")
+        bands = [max(self.band, 2 * g) for g in self.gammas]
+        return _PointsResult(
+            stable.reshape(shape),
+            signs.reshape((len(self.conditions), *shape)),
+            in_band.reshape(shape),
+            len(points),
+            max(bands, default=self.band),
+        )
+
+    def _combine(self, factor_signs, signs, stable) -> None:
+        """Signs of the conditions from those of their factors; stable = the least of them."""
+        signs[...] = 1
+        for index, sign, position in self.uses:
+            signs[index] *= factor_signs[position]
+            if sign < 0:
+                np.negative(signs[index], out=signs[index])
+        signs[self.always_false] = 0
+        if len(signs):
+            np.min(signs, axis=0, out=stable)
+        else:
+            stable[...] = 1
+
+    def _exact_factor_sign(self, position: int, point: list[float]) -> int:
+        """The exact sign of one kept factor at one point: 256-bit first, then rationals."""
+        found = self._high_precision_sign(position, point)
+        if found is not None:
+            return found
+        return certified_sign(self.kept[position], dict(zip(self.parameters, point)), band=0.0)[0]
+
+
+def _as_array(value, size: int) -> np.ndarray:
+    """Generated code returns plain numbers for constant parts (0 for an empty M)."""
+    return value if isinstance(value, np.ndarray) else np.full(size, float(value))
+
+
+def _certain_sign(groups, width: float, part) -> np.ndarray:
+    """+1/-1 where the sign of P - M (+ U) is certain, 0 elsewhere (int8 array); valid for
+    values computed without overflow, underflow or invalid operations."""
+    P, M, *rest = groups
+    if rest:  # terms of unknown sign: |F^ - F| <= gamma (P + M + |U|)
+        value = P - M + rest[0]
+        certain = np.abs(value) > width * (P + M + rest[1])
+        return np.where(certain, np.where(value > 0, 1, -1), 0).astype(np.int8)
+    if part[1] == 0:  # F = P, nonnegative terms: P^ > 0 iff P > 0
+        return (P > 0).view(np.int8)
+    if part[0] == 0:
+        return -(M > 0).view(np.int8)
+    # P - M > width (P + M) iff P (1 - width) > M (1 + width): no cancellation in the test
+    positive = (P * (1 - width) > M * (1 + width)).view(np.int8)
+    negative = (M * (1 - width) > P * (1 + width)).view(np.int8)
+    return positive - negative
+
+
+def _through_tan(expr: sp.Expr) -> sp.Expr:
+    """Even powers of sin and cos written with t = tan: sin^2 = t^2/(1 + t^2), cos^2 = 1/(1 + t^2).
+
+    NumPy vectorises float64 tan (within 4 units in the last place) but not sin and cos,
+    which cost several times more; the new sums have terms of one sign, so the relative
+    error bound holds.
+    """
+
+    def rewrite(node):
+        if node.is_Pow and node.exp.is_Integer and node.exp % 2 == 0 and isinstance(node.base, (sp.sin, sp.cos)):
+            t2 = sp.tan(node.base.args[0]) ** 2
+            square = t2 / (1 + t2) if isinstance(node.base, sp.sin) else 1 / (1 + t2)
+            return square ** (node.exp // 2)
+        return node
+
+    return sp.bottom_up(expr, rewrite)
+
+
+def _one_signed_form(total: sp.Expr) -> sp.Expr:
+    """A cheap form of ``total``, a sum of terms of one sign, in which every sum still has
+    terms of one sign (so floating point keeps a relative error bound): the sum or its
+    factored form, with shared powers pulled out of sums."""
+    if total.is_Number or len(sp.Add.make_args(total)) < 2:
+        return total
+    candidates = [_pulled_out(total), sp.Mul(*[_pulled_out(f) for f in sp.Mul.make_args(sp.factor(total))])]
+    valid = [c for c in candidates if _one_signed_sums(c)]
+    return min(valid, key=sp.count_ops) if valid else total
+
+
+def _pulled_out(expr: sp.Expr) -> sp.Expr:
+    """``expr`` with, recursively, the power shared by most terms pulled out of each sum:
+    a + b x + c x y becomes a + x (b + c y), and a + b + x (a + b) becomes (x + 1)(a + b)."""
+    if expr.is_Pow and expr.exp.is_Integer:
+        return _pulled_out(expr.base) ** expr.exp
+    terms = sp.Add.make_args(expr)
+    if len(terms) < 2:
+        return expr
+    counts: dict = {}
+    for term in terms:
+        for base, exponent in term.as_powers_dict().items():
+            if not base.is_Number and exponent.is_Integer and exponent > 0:
+                counts.setdefault(base, []).append(int(exponent))
+    shared = [(len(e), b) for b, e in counts.items() if len(e) > 1]
+    if not shared:
+        return expr
+    _, base = max(shared, key=lambda item: (item[0], sp.default_sort_key(item[1])))
+    power = base ** min(counts[base])
+    inside = [t for t in terms if base in t.as_powers_dict()]
+    outside = [t for t in terms if base not in t.as_powers_dict()]
+    inner, rest = _pulled_out(sp.Add(*[t / power for t in inside])), _pulled_out(sp.Add(*outside))
+    return (power + 1) * inner if inner == rest else power * inner + rest
+
+
+def _one_signed_sums(expr: sp.Expr) -> bool:
+    for node in sp.preorder_traversal(expr):
+        if node.is_Add and not (all(a.is_nonnegative for a in node.args) or all(a.is_nonpositive for a in node.args)):
+            return False
+    return True
+
+
+def _roundings(expr: sp.Expr) -> int:
+    """Roundings along the longest path of the evaluation of ``expr`` in floating point:
+    its computed value is within gamma_r relative of the exact one when every sum of
+    ``expr`` has terms of one sign."""
+    if expr.is_Symbol:
+        return 0
+    if expr.is_Number or expr.is_NumberSymbol:
+        if expr.is_Rational and _exact_float(float(expr), Fraction(int(expr.p), int(expr.q))):
+            return 0
+        return 1
+    if expr.is_Add:
+        return max(_roundings(a) for a in expr.args) + len(expr.args) - 1
+    if expr.is_Mul:  # a product of k factors: k - 1 roundings, none for a power of two
+        exact = sum(1 for f in expr.args if f.is_Integer and f != 0 and abs(int(f)).bit_count() == 1)
+        return sum(_roundings(f) for f in expr.args) + len(expr.args) - 1 - exact
+    if expr.is_Pow:
+        base, exponent = expr.args
+        if exponent.is_Integer:
+            n = abs(int(exponent))
+            return n * _roundings(base) + n + (1 if exponent < 0 else 0)
+        if exponent.is_Rational:
+            return _roundings(base) + 2
+    if isinstance(expr, sp.Abs):
+        return _roundings(expr.args[0])
+    if isinstance(expr, sp.Function) and len(expr.args) == 1:
+        if _roundings(expr.args[0]) == 0:
+            return 4  # NumPy's elementary functions: at most 4 units in the last place (its SIMD ones)
+        raise NumericsError(
+            f"cannot bound the rounding of {expr}: its argument is rounded; introduce a parameter for the argument."
+        )
+    raise NumericsError(f"cannot bound the rounding of {expr}; rewrite it with +, *, powers and functions.")
+
+
+@dataclass(frozen=True, eq=False)
+class _PointsResult:
+    """Result of :class:`PointClassifier`: ``stable`` (+1, -1, 0 per point), per-condition
+    ``signs``, the mask ``in_band`` of points decided exactly, their number, and the
+    relative band half-width used."""
+
+    stable: np.ndarray
+    signs: np.ndarray
+    in_band: np.ndarray
+    exact_points: int
+    band: float

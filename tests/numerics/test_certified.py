@@ -1,0 +1,97 @@
+"""contactsym.numerics.certified: certified classification, exact near the boundary."""
+
+import math
+from fractions import Fraction
+
+import numpy as np
+import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from contactsym import numerics as nm
+from tests.helpers import max_real_part
+from tests.numerics.brake import (
+    P1,
+    P2,
+    S1,
+    S2,
+    Phi,
+    Psi,
+    alpha,
+    brake,
+    m,
+    mu,
+    right_angle,
+    stab,
+)
+
+# --- certified classification ------------------------------------------------------------
+
+
+def exact_6_4_stable(mass: Fraction, friction: Fraction, phi: Fraction, psi: Fraction) -> int:
+    """The corrected (6.4), in exact fractions: sign of Psi^2 (1 + mu^2) + m mu^2 Phi."""
+    margin = psi**2 * (1 + friction**2) + mass * friction**2 * phi
+    return (margin > 0) - (margin < 0)
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.fractions(Fraction(1, 10), Fraction(10), max_denominator=97),
+    st.fractions(Fraction(1, 20), Fraction(3), max_denominator=97),
+    st.fractions(Fraction(-5), Fraction(-1, 10), max_denominator=97),
+    st.sampled_from([0.0, 1e-15, -1e-15, 1e-13, -1e-13, 1e-12, -1e-12, 3e-16]),
+)
+def test_points_near_the_hopf_line_are_decided_exactly(mass, friction, psi, relative):
+    on_line = -(1 + friction**2) * psi**2 / (mass * friction**2)
+    phi = float(on_line) * (1 + relative)  # a float within 1e-12 (relative) of the boundary
+    point = {
+        "alpha": sp.pi / 2,
+        "m": float(mass),
+        "mu": float(friction),
+        "Psi_1": float(psi),
+        "Psi_2": float(psi),
+        "Phi_1": phi,
+        "Phi_2": phi,
+    }
+    truth = exact_6_4_stable(Fraction(float(mass)), Fraction(float(friction)), Fraction(phi), Fraction(float(psi)))
+    result = nm.classify(brake, point)
+    assert result.stable == truth
+    assert result.exact[-1]  # inside the band: recomputed in rationals
+    classifier = nm.PointClassifier([c.subs(right_angle) for c in stab.hurwitz], [m, mu, Phi, Psi])
+    vectorised = classifier(
+        np.array([float(mass)]), np.array([float(friction)]), np.array([phi]), np.array([float(psi)])
+    )
+    assert vectorised.stable[0] == truth and vectorised.exact_points == 1
+
+
+def test_vectorised_classification_agrees_with_eigenvalues_outside_the_band():
+    rng = np.random.default_rng(4)
+    n = 3000
+    a = rng.uniform(0.05, math.pi - 0.05, n)
+    mass, friction = rng.uniform(0.2, 5, n), rng.uniform(0.05, 3, n)
+    phis, psis = -np.exp(rng.normal(0, 1.5, (2, n))), -np.exp(rng.normal(0, 1.5, (2, n)))
+    parameters = [alpha, m, mu, P1, P2, S1, S2]
+    classifier = nm.PointClassifier(stab.hurwitz, parameters)
+    result = classifier(a, mass, friction, phis[0], phis[1], psis[0], psis[1])
+    assert 0.05 < np.mean(result.stable == 1) < 0.95  # both regions are sampled
+    for i in range(n):
+        if result.in_band[i]:
+            continue
+        A = (
+            np.array(
+                [
+                    [1, friction[i] * math.sin(a[i]) - math.cos(a[i])],
+                    [-friction[i] * math.sin(a[i]) - math.cos(a[i]), 1],
+                ]
+            )
+            / mass[i]
+        )
+        eigen = max_real_part(A, phis[:, i], psis[:, i])
+        if abs(eigen) > 1e-9:
+            assert (eigen < 0) == (result.stable[i] == 1), i
+
+
+def test_classify_reports_the_region_of_every_law():
+    values = {"alpha": 0.5, "m": 1, "mu": 0.5, "Phi_1": -1, "Phi_2": -2, "Psi_1": -1, "Psi_2": -1}
+    assert nm.classify(brake, values).region == "robustly stable"  # mu < cot(alpha), (6.3)
+    assert nm.classify(brake, {**values, "mu": 3}).region == "law-dependent"

@@ -1,0 +1,176 @@
+"""contactsym.numerics.simulate (and the reduced and fast simulators beside it): Proposition 1,
+the impact-type catastrophe, and stress tests."""
+
+import math
+
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import contactsym as cs
+from contactsym import numerics as nm
+
+x, xdot = sp.symbols("x xdot", real=True)
+X, Y = sp.Function("X")(x, xdot), sp.Function("Y")(x, xdot)
+EPS = [1e-1, 1e-2, 1e-3, 1e-4, 1e-5]  # four decades
+
+
+def observed_order(eps_values, errors) -> float:
+    return float(np.polyfit(np.log10(eps_values), np.log10(errors), 1)[0])
+
+
+# --- Proposition 1: the compliant motion is O(eps)-close to the rigid one ---------------
+
+
+def prop1_errors(scene, values, initial, coordinate, start="rigid"):
+    times = np.linspace(0, 2, 201)
+    reduced = nm.simulate_reduced(scene, values, (0, 2), initial, rtol=1e-12, t_eval=times)
+    assert reduced.ok, reduced.message
+    errors = []
+    for eps in EPS:
+        full = nm.simulate_full(scene, values, eps, (0, 2), initial, rtol=1e-11, t_eval=times, start=start)
+        assert full.ok, full.message
+        errors.append(float(np.max(np.abs(full[coordinate] - reduced[coordinate]))))
+    return errors
+
+
+def test_proposition_1_sliding_point(record_property):
+    scene = cs.scene("sliding-point")
+    values = {"m": 1.5, "b": 0.7, "mu": 0.4, X: 2 + sp.sin(x) / 2, Y: -(1 + 3 * sp.cos(x) / 10)}
+    errors = prop1_errors(scene, values, {x: 0, xdot: 1}, "x")
+    order = observed_order(EPS, errors)
+    record_property("observed_order_sliding_point", order)
+    print(f"sliding point: errors {errors}, observed order {order:.3f}")
+    assert all(e < 0.05 for e in errors)
+    assert errors[-1] < 1e-3 * errors[0]
+    assert order >= 1  # observed: 2 (normal momentum is conserved through the initial layer)
+
+
+# the rod with a unique stable reaction for every load: |mu_-| < 2, mu_+ < 2 (Props. 3, 4)
+ROD_UNIQUE = {
+    "phi": 0.7,
+    "mu_1": 0.3,
+    "mu_2": 0.2,
+    "X_1": 0.5,
+    "X_2": 1,
+    "Y_1": 0.3,
+    "Y_2": -0.2,
+    "Phi": -1,
+    "Psi": -1.5,
+}
+
+
+def test_proposition_1_painleve_klein_rod_unique_stable_reaction(record_property):
+    rod = cs.scene("painleve-klein-rod")
+    values = dict(ROD_UNIQUE)
+    # a unique reaction for every load (|mu_-| < 2, mu_+ < 2, Prop. 4), stable (Prop. 3)
+    assert nm.decide(rod.stability().unique_for_every_load, nm.numeric_values(rod, values).numbers)
+    assert len(nm.equilibrium_reactions(rod, values)) == 1
+    errors = prop1_errors(rod, values, {"x_1": 0, "xdot_1": 1}, "x_1")
+    order = observed_order(EPS, errors)
+    record_property("observed_order_rod", order)
+    print(f"rod: errors {errors}, observed order {order:.3f}")
+    assert order >= 1
+
+
+def test_slow_start_on_the_rod_is_exact_for_constant_loads():
+    # constant loads: the slow manifold is u = u*, v = 0 exactly, so no initial layer at all
+    rod = cs.scene("painleve-klein-rod")
+    values = dict(ROD_UNIQUE)
+    ((_, u_star),) = nm.equilibrium_reactions(rod, values)
+    full = nm.simulate_full(rod, values, 1e-3, (0, 1), {"x_1": 0, "xdot_1": 1}, start="slow", rtol=1e-10)
+    assert full.ok
+    assert np.allclose(full["R"], u_star[0], rtol=1e-7)
+
+
+GUIDES_VALUES = {
+    "l": 1,
+    "mu_1": 0.3,
+    "mu_2": 0.3,
+    "X": 2,
+    "Y": 0.1,
+    "M": 0.05,
+    "Phi_1": -1,
+    "Phi_2": -1.5,
+    "Psi_1": -1,
+    "Psi_2": -0.8,
+}
+GUIDES_INITIAL = {"x": 0, "xdot": 1, "phi": math.radians(60)}
+
+
+def test_proposition_1_guides_in_the_square_5_8(record_property):
+    # the gaps h - l sin(phi) -/+ y are differences of O(1) numbers: the tolerances of y and phi
+    # stop at their rounding floor, which leaves four decades of eps in these coordinates
+    guides = cs.scene("painleve-klein-guides")
+    reduced = nm.simulate_reduced(guides, GUIDES_VALUES, (0, 1), GUIDES_INITIAL, rtol=1e-12)
+    eps_values = [1e-2, 1e-3, 1e-4, 1e-5]
+    errors = []
+    for eps in eps_values:
+        start = {**GUIDES_INITIAL, "y": 0, "ydot": 0, "phidot": 0}
+        full = nm.simulate_full(guides, GUIDES_VALUES, eps, (0, 1), start, rtol=1e-9, method="BDF")
+        assert full.ok, full.message
+        errors.append(abs(full.at(1.0, "x") - reduced.at(1.0, "x")))
+    order = observed_order(eps_values, errors)
+    record_property("observed_order_guides", order)
+    assert errors[0] < 1e-3 and order >= 0.9  # observed: 0.99, first order as Proposition 1 says
+
+
+def test_guides_at_an_eps_below_the_rounding_of_their_gaps_get_a_clear_error():
+    guides = cs.scene("painleve-klein-guides")
+    start = {**GUIDES_INITIAL, "y": 0, "ydot": 0, "phidot": 0}
+    with pytest.raises(nm.NumericsError, match="lost in the rounding of its gap"):
+        nm.simulate_full(guides, GUIDES_VALUES, 1e-7, (0, 1), start)
+
+
+# --- the impact-type catastrophe ---------------------------------------------------------
+
+fold = {"phi": math.pi / 4, "mu_1": 3, "mu_2": 0.5, "X_1": 0, "X_2": 1, "Y_1": 0, "Y_2": 0, "Phi": -1, "Psi": -1}
+
+
+def test_fold_without_root_is_an_impact_type_catastrophe():
+    rod = cs.scene("painleve-klein-rod")
+    tan_phi = math.tan(fold["phi"])
+    assert (fold["mu_1"] - fold["mu_2"]) * tan_phi > 2  # mu_- > 2: the fold case (3.8)
+    assert nm.equilibrium_reactions(rod, fold) == []  # and f > 0 everywhere: no root
+    eps = 1e-3
+    run = nm.simulate_full(rod, fold, eps, (0, 10), {"x_1": 0, "xdot_1": 1})
+    assert run.status == "impact" and "catastrophe" in run.message
+    assert run.t[-1] < 100 * eps  # detected on the fast time scale, not after integrating for ever
+    assert abs(run.reactions[0, -1]) >= 0.99 * run.extra["reaction_bound"]
+    assert run.extra["no_equilibrium"]
+    fast = nm.simulate_fast(rod, fold, (0, 1e4))
+    assert fast.status == "impact" and fast.t[-1] < 200
+    with pytest.raises(nm.NumericsError, match="impact-type catastrophe"):
+        nm.simulate_reduced(rod, fold, (0, 1), {"x_1": 0, "xdot_1": 1})
+
+
+def test_unique_case_is_not_flagged():
+    rod = cs.scene("painleve-klein-rod")
+    values = {**fold, "mu_1": 0.3, "mu_2": 0.2}
+    run = nm.simulate_full(rod, values, 1e-3, (0, 1), {"x_1": 0, "xdot_1": 1})
+    assert run.ok and run.status == "ok"
+
+
+# --- stress: extreme parameters, clear errors ----------------------------------------------
+
+log_uniform = st.floats(-8, 8).map(lambda e: 10.0**e)
+
+
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(log_uniform, log_uniform, st.floats(0.01, 3), log_uniform, log_uniform, st.floats(-8, -1).map(lambda e: 10.0**e))
+def test_extreme_parameters_give_finite_results(mass, damping, friction, push, press, eps):
+    scene = cs.scene("sliding-point")
+    values = {"m": mass, "b": damping, "mu": friction, X: push, Y: -press}
+    T = math.sqrt(mass / press)  # the time for the load to move the point by about one unit
+    run = nm.simulate_full(scene, values, eps, (0, T), {x: 0, xdot: 1}, rtol=1e-6, max_rhs=30_000)
+    assert np.all(np.isfinite(run.y)) and np.all(np.isfinite(run.reactions))
+    zeta = damping / math.sqrt(mass)  # damping ratio of the fast subsystem (1.12)
+    if zeta >= 1e-2:  # damped contact: Proposition 1's setting, must integrate
+        assert run.status == "ok", run.message
+    else:  # nearly undamped: thousands of fast periods; a clear stop, never NaN or a hang
+        assert run.status == "ok" or "right-hand-side evaluations" in run.message
+    reduced = nm.simulate_reduced(scene, values, (0, T), {x: 0, xdot: 1}, rtol=1e-8)
+    assert reduced.ok and np.all(np.isfinite(reduced.y))
+    assert math.isclose(reduced.reactions[0, -1], press, rel_tol=1e-12)

@@ -1,0 +1,13 @@
+"""The record format of the benchmarks (benchmarks/__init__.py)."""
+
+
+def test_benchmark_record_format_smoke():
+    # the benchmarks themselves never run in the test suite; only their record format is checked
+    from benchmarks import record
+    from benchmarks.run import markdown
+
+    r = record("demo", 0.5, 2.0, 0, 10, "a | note")
+    assert set(r) == {"name", "ours_s", "baseline_s", "ratio", "error", "n", "notes"}
+    assert r["ratio"] == 4.0
+    table = markdown([r, record("missing", 1.0, None, None, 1, "")], quick=True, seconds=1.0)
+    assert "| demo | 0.5 | 2 | 4 | 0 | 10 | a / note |" in table and "| missing | 1 | - | - | - | 1 |  |" in table
