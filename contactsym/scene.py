@@ -243,8 +243,6 @@ class Scene:
         rates = {d: s for d, s in self.frozen_symbols.items() if isinstance(d, sp.Derivative)}
         return sympy_only(expr, "the expression").subs(rates).subs(self.frozen_symbols)
 
-    _plain = plain  # the former private name, still used by contactsym.numerics
-
     @cached_property
     def manifold(self) -> dict:
         """Substitution that puts the frozen state on the contact manifold g = 0, g' = 0.

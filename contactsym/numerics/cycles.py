@@ -279,7 +279,7 @@ def _averaged_start(scene, vals: _Values, initial) -> tuple[list, np.ndarray, _V
 def _averaged_system(scene, base: _Values, free_state: list, cycle_at) -> OdeSystem:
     """The slow coordinates driven by their accelerations averaged over the cycle ``cycle_at(state)``."""
     m = len(free_state) // 2
-    by_plain = {scene._plain(q): q for q in scene.coordinates}
+    by_plain = {scene.plain(q): q for q in scene.coordinates}
     G = [substitute(scene.freeze(scene.accelerations[by_plain[q]]), base) for q in free_state[:m]]
     reactions = list(scene.reactions)
     _check_free(G, set(free_state) | set(reactions) | {_time}, "the averaged system")

@@ -124,8 +124,8 @@ def _first_order(time_symbol, state, rhs, reaction_exprs, *, names, reaction_nam
 
 def _coordinates(scene) -> tuple[list, list]:
     """Plain symbols of the coordinates and their rates, in the scene's order."""
-    positions = [scene._plain(q) for q in scene.coordinates]
-    rates = [scene._plain(sp.diff(q, _time)) for q in scene.coordinates]
+    positions = [scene.plain(q) for q in scene.coordinates]
+    rates = [scene.plain(sp.diff(q, _time)) for q in scene.coordinates]
     return positions, rates
 
 

@@ -67,7 +67,7 @@ def _positive(value, name: str, why: str) -> float:
 
 
 def _plain_expr(scene, expr) -> sp.Expr:
-    return scene._plain(expr)
+    return scene.plain(expr)
 
 
 @dataclass(frozen=True)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import difflib
 from dataclasses import dataclass
 from importlib import import_module
 
@@ -53,8 +54,6 @@ def scene(name: str):
     """
     name = scene_name(name)
     if name not in _MODULES:
-        import difflib
-
         close = difflib.get_close_matches(name, _MODULES, n=1)
         hint = f"did you mean '{close[0]}'? " if close else ""
         raise SceneError(f"unknown scene {shorten(name)}; {hint}Known scenes: {', '.join(_MODULES)}.")
