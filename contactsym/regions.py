@@ -6,7 +6,8 @@
 2. clear the denominator (its sign must be known) and factor the numerator;
 3. drop constant factors, factors of known sign (masses, squares of nonzero symbols,
    Phi < 0, Psi < 0, sines the scene declares positive) flipping the relation for
-   negative ones; an even power of an unknown factor f becomes the condition f != 0;
+   negative ones; in ``P > 0`` an even power of an unknown factor f becomes the condition
+   f != 0 (in ``P >= 0`` and ``P == 0`` it stays);
 4. write what is left as ``small < big`` with the terms of known positive sign on the
    right (``v1 + v2 < 2 kappa**2``, ``-m mu**2 Phi < Psi**2 (mu**2 + 1)``);
 5. solve for a parameter the scene names when the condition is ``a x**2 + c`` or

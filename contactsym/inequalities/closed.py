@@ -55,7 +55,10 @@ def closed_form(
     (v_1 > 0) & (v_2 > 0)
     """
     limits = (raw_ops, factor_terms)
-    reduced = _reduce(condition, Facts(positive), solve_for_symbol, limits)
+    # a disjunct is dropped on a slack known > 0 only: a slack known >= 0 would drop more, as
+    # correctly, but change the closed forms the scenes have printed so far
+    facts = Facts(positive, nonnegative_slack=False)
+    reduced = _reduce(condition, facts, solve_for_symbol, limits)
     if len(reduced.free_symbols) == 1 and isinstance(reduced, BooleanFunction):
         return univariate(reduced)
     return reduced

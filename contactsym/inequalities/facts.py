@@ -59,6 +59,9 @@ class Facts:
     present : callable, optional
         The same number in the presentation variables. With it, a condition is tried in its
         canonical form and presented; without it, as it is.
+    nonnegative_slack : bool
+        Whether an implication may rest on a slack known only to be >= 0 (sound when a
+        premise is strict or the conclusion is not); otherwise the slack must be known > 0.
 
     Examples
     --------
@@ -72,9 +75,10 @@ class Facts:
     True
     """
 
-    def __init__(self, positive=(), present: Callable | None = None):
+    def __init__(self, positive=(), present: Callable | None = None, nonnegative_slack: bool = True):
         self.positive = tuple(positive)
         self.present = present
+        self.nonnegative_slack = nonnegative_slack
         self._cache: dict = {}
 
     def cached(self, key, compute: Callable, *args):
@@ -107,10 +111,8 @@ class Facts:
 
     def _proves(self, slack, strict_premise: bool, strict_conclusion: bool) -> bool:
         """slack > 0, or slack >= 0 with a strict premise or a non-strict conclusion."""
-        for value in self._views(slack):
-            if value.is_positive or (value.is_nonnegative and (strict_premise or not strict_conclusion)):
-                return True
-        return False
+        weak_enough = self.nonnegative_slack and (strict_premise or not strict_conclusion)
+        return any(value.is_positive or (weak_enough and value.is_nonnegative) for value in self._views(slack))
 
     def _nonpositive(self, total, strict: bool) -> bool:
         """total < 0 is known (total <= 0 when some condition is strict)."""

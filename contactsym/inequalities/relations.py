@@ -89,8 +89,9 @@ def drop_known_factors(expr: sp.Expr, op: type, positive, factor_terms: float) -
     """Factor ``expr`` and drop factors of known sign; returns (rest, op, nonzero conditions).
 
     A numerator with more than ``factor_terms`` terms is kept whole (factoring it costs
-    seconds and finds nothing readable). An even power of a factor of unknown sign becomes
-    the condition that the factor is nonzero.
+    seconds and finds nothing readable). In ``P > 0`` and ``P != 0`` an even power of a factor
+    of unknown sign becomes the condition that the factor is nonzero; in ``P >= 0`` and
+    ``P == 0`` it stays (the factor may vanish there).
 
     Examples
     --------
@@ -100,6 +101,8 @@ def drop_known_factors(expr: sp.Expr, op: type, positive, factor_terms: float) -
     (x - 1, <class 'sympy.core.relational.StrictLessThan'>, [Ne(y, 0)])
     """
     numerator, denominator = sp.fraction(sp.together(expr))
+    if numerator == 0:  # 0 op 0 is decided, and factor_list(0) has the coefficient 0: no sign to take
+        return sp.S.Zero, op, []
     sign = known_sign(denominator, positive)
     if sign is None:
         numerator, sign = sp.expand(numerator * denominator), 1
@@ -113,7 +116,7 @@ def drop_known_factors(expr: sp.Expr, op: type, positive, factor_terms: float) -
         base_sign = known_sign(base, positive)
         if base_sign is None and power % 2 == 0:
             base_sign = 1 if known_sign(base**2, positive) == 1 else None
-            if base_sign is None:
+            if base_sign is None and op in (sp.StrictGreaterThan, sp.Unequality):
                 nonzero.append(sp.Ne(base, 0))
                 continue
         if base_sign is None:
