@@ -185,7 +185,7 @@ class Region:
 
     def plot(self, ax=None, *, x, y, fixed=None, **style):
         """Hatch the region in the (x, y) plane; see :func:`contactsym.plotting.region_plot`."""
-        from .plotting import region_plot  # matplotlib is heavy and optional: loaded only to draw
+        from .plotting import region_plot
 
         return region_plot(self, ax=ax, x=x, y=y, fixed=fixed or {}, **style)
 
