@@ -50,22 +50,21 @@ def old_count_regions(scene) -> dict:
 
     import sympy as sp
 
-    from contactsym import counts as c
+    from contactsym.count_conditions import count_facts
+    from contactsym.inequalities import closed_conjuncts
 
-    presenter = c._Presenter(scene)
-    determinants = []
-    for pattern in scene.sign_patterns():
-        determinants.append(c._Condition(*c._forms(presenter, scene.linearization(signs=pattern).det_A)))
-    known = [c._sign(d, presenter.positive_expressions) for d in determinants]
+    facts = count_facts(scene)
+    determinants = [facts.condition(scene.linearization(signs=p).det_A) for p in scene.sign_patterns()]
+    known = [facts.sign(d) for d in determinants]
     open_ = [i for i, s in enumerate(known) if s is None]
     regions: dict = {}
     for signs in itertools.product((1, -1), repeat=len(open_)):
-        conditions = [c._Condition(*c._forms(presenter, s * determinants[i].raw)) for s, i in zip(signs, open_)]
-        if c._infeasible(conditions, presenter):
+        conditions = [facts.condition(s * determinants[i].raw) for s, i in zip(signs, open_)]
+        if facts.infeasible(conditions):
             continue
         negative = sum(s < 0 for s in signs) + sum(s == -1 for s in known if s is not None)
-        kept = c._drop_implied(conditions, [], presenter)
-        regions.setdefault(negative, []).append(c._closed_conjuncts(kept, [], presenter))
+        kept = facts.drop_implied(conditions)
+        regions.setdefault(negative, []).append(closed_conjuncts(kept, [], facts))
     return {n: sp.Or(*[sp.And(*d) for d in ds]) for n, ds in regions.items()}
 
 

@@ -12,6 +12,7 @@ determinant, a load on a facet image) are reported as undecided, never guessed.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 import sympy as sp
@@ -213,7 +214,7 @@ def count_map_plot(data: CountMapData, ax=None):
     ...                       m=1, l=1, g=9.81, theta=1.1)
     >>> artists = count_map_plot(data)
     """
-    import matplotlib.pyplot as plt
+    import matplotlib.pyplot as plt  # matplotlib is heavy and optional: loaded only to draw
     from matplotlib.colors import BoundaryNorm, ListedColormap
 
     if ax is None:
@@ -235,9 +236,7 @@ def count_map_plot(data: CountMapData, ax=None):
 
 def count_map_figure(scene, path, x: str, y: str, x_range, y_range, **fixed):
     """Draw :func:`count_map_plot` for one plane into a PNG file and return its path (for reports)."""
-    from pathlib import Path
-
-    from matplotlib.figure import Figure
+    from matplotlib.figure import Figure  # matplotlib is heavy and optional: loaded only to draw
 
     data = count_map_data(scene, x, y, x_range, y_range, **fixed)
     figure = Figure(figsize=(6.0, 4.2))

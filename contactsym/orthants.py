@@ -22,10 +22,11 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .algebra import normalize
+from .algebra import known_sign, normalize
+from .count_conditions import count_facts, sign_choices
 from .errors import ContactsymError
+from .inequalities import Condition, Facts, boolean, closed_conjuncts, merge_or
 from .plmap import k2_label, k2_quadrants, orthant_patterns
-from .regions import known_sign
 
 __all__ = ["SceneMap", "scene_map", "orthant_regions"]
 
@@ -142,32 +143,43 @@ def scene_map(scene) -> SceneMap:
 # --- closed-form regions -----------------------------------------------------------------
 
 
-def orthant_regions(scene, helpers) -> dict[str, sp.Basic]:
+#: Sums of at most this many conditions are tried when pruning orthant determinants (display only:
+#: a sign case kept by mistake is empty, never mislabelled).
+QUICK = 2
+
+
+def orthant_regions(scene) -> dict[str, sp.Basic]:
     """Count regions from the orthant determinants (k = 1, 2 exact; k >= 3 unique or undecided).
 
-    ``helpers`` are the condition tools of :mod:`contactsym.counts` (presenter and pruning).
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> regions = orthant_regions(cs.scene("painleve-rod"))  # Painleve's rod, lift-off included
+    >>> regions["unique"], regions["two or none"]
+    (3*(mu*cos(theta) + sin(theta))*sin(theta) < 4, 4 < 3*(mu*cos(theta) + sin(theta))*sin(theta))
     """
     G = scene_map(scene)
+    facts = count_facts(scene)
     if G.k >= 3:
-        return _coherent_regions(G, helpers)
+        return _coherent_regions(G, facts)
     patterns = list(k2_quadrants) if G.k == 2 else [(1,), (-1,)]
-    determinants = [helpers.condition(G.determinant(p)) for p in patterns]
-    known = [helpers.sign(d) for d in determinants]
+    determinants = [facts.condition(G.determinant(p)) for p in patterns]
+    known = [facts.sign(d) for d in determinants]
     open_ = [i for i, s in enumerate(known) if s is None]
     disjuncts: dict[str, list] = {}
-    for signs in helpers.sign_choices(known, open_):
-        conditions = [helpers.condition(signs[i] * determinants[i].raw) for i in open_]
-        if helpers.infeasible(conditions, quick=True):
+    for signs in sign_choices(known, open_):
+        conditions = [facts.condition(signs[i] * determinants[i].raw) for i in open_]
+        if facts.infeasible(conditions, QUICK):
             continue
-        for name, extra in _labels(G, dict(zip(patterns, signs)), helpers):
-            if extra and helpers.infeasible(conditions + extra, quick=True):
+        for name, extra in _labels(G, dict(zip(patterns, signs)), facts):
+            if extra and facts.infeasible(conditions + extra, QUICK):
                 continue
-            kept = helpers.drop_implied(conditions + extra, quick=True)
-            disjuncts.setdefault(name, []).append(helpers.closed(kept))
-    return {name: helpers.boolean(helpers.merge(ds)) for name, ds in disjuncts.items()}
+            kept = facts.drop_implied(conditions + extra, (), QUICK)
+            disjuncts.setdefault(name, []).append(closed_conjuncts(kept, [], facts))
+    return {name: boolean(merge_or(ds, facts.positive)) for name, ds in disjuncts.items()}
 
 
-def _labels(G: SceneMap, signs: dict, helpers) -> list[tuple[str, list]]:
+def _labels(G: SceneMap, signs: dict, facts: Facts) -> list[tuple[str, list[Condition]]]:
     """The label of a determinant sign pattern, split by a cross determinant where it decides."""
     if G.k == 1:
         return [("unique" if signs[(1,)] == signs[(-1,)] else "two or none", [])]
@@ -176,17 +188,15 @@ def _labels(G: SceneMap, signs: dict, helpers) -> list[tuple[str, list]]:
     if len(negative) in (0, 4) or (len(negative) == 2 and (negative[1] - negative[0]) % 2 == 1):
         return [(k2_label(signs, None), [])]
     if len(negative) == 2:  # alternating: two occurs unless V_0 || V_2 and V_1 || V_3
-        cross = helpers.condition(G.cross(0))
-        return [("none, two or four", [helpers.condition(s * cross.raw)]) for s in _open_signs(cross, helpers)]
+        cross = facts.condition(G.cross(0))
+        return [("none, two or four", [facts.condition(s * cross.raw)]) for s in _open_signs(cross, facts)]
     odd = negative[0] if len(negative) == 1 else next(i for i, s in enumerate(turns) if s > 0)
-    cross = helpers.condition(G.cross(odd + 1))
-    return [
-        (k2_label(signs, lambda i, s=s: s), [helpers.condition(s * cross.raw)]) for s in _open_signs(cross, helpers)
-    ]
+    cross = facts.condition(G.cross(odd + 1))
+    return [(k2_label(signs, lambda i, s=s: s), [facts.condition(s * cross.raw)]) for s in _open_signs(cross, facts)]
 
 
-def _open_signs(condition, helpers) -> list[int]:
-    sign = helpers.sign(condition)
+def _open_signs(condition: Condition, facts: Facts) -> list[int]:
+    sign = facts.sign(condition)
     return [sign] if sign is not None else [1, -1]
 
 
@@ -195,11 +205,11 @@ def _open_signs(condition, helpers) -> list[int]:
 LARGE = 120
 
 
-def _coherent_regions(G: SceneMap, helpers) -> dict[str, sp.Basic]:
+def _coherent_regions(G: SceneMap, facts: Facts) -> dict[str, sp.Basic]:
     """k >= 3: unique iff all 2^k determinants share a sign; mixed signs leave the count to the degree."""
-    determinants = [helpers.condition(G.determinant(p)) for p in orthant_patterns(G.k)]
-    known = {helpers.sign(d) for d in determinants} - {None}
-    open_ = [d for d in determinants if helpers.sign(d) is None]
+    determinants = [facts.condition(G.determinant(p)) for p in orthant_patterns(G.k)]
+    known = {facts.sign(d) for d in determinants} - {None}
+    open_ = [d for d in determinants if facts.sign(d) is None]
     closed: dict = {}
 
     def relation(d, sign: int) -> frozenset:
@@ -207,7 +217,7 @@ def _coherent_regions(G: SceneMap, helpers) -> dict[str, sp.Basic]:
         if (d.raw, sign) not in closed:
             small = sp.count_ops(d.presented) <= LARGE
             closed[d.raw, sign] = (
-                helpers.closed([helpers.condition(sign * d.raw)])
+                closed_conjuncts([facts.condition(sign * d.raw)], [], facts)
                 if small
                 else frozenset({sp.Gt(sign * d.presented, 0)})
             )
@@ -215,17 +225,17 @@ def _coherent_regions(G: SceneMap, helpers) -> dict[str, sp.Basic]:
 
     unique = []
     for sign in (1, -1):
-        small = {d.raw: helpers.condition(sign * d.raw) for d in open_ if sp.count_ops(d.presented) <= LARGE}
-        if -sign in known or helpers.infeasible(list(small.values()), quick=True):
+        small = {d.raw: facts.condition(sign * d.raw) for d in open_ if sp.count_ops(d.presented) <= LARGE}
+        if -sign in known or facts.infeasible(list(small.values()), QUICK):
             continue
-        kept = helpers.drop_implied(list(small.values()), quick=True)
+        kept = facts.drop_implied(list(small.values()), (), QUICK)
         needed = [d for d in open_ if d.raw not in small or any(small[d.raw] is c for c in kept)]
         unique.append(frozenset().union(*[relation(d, sign) for d in needed]))
     some = {s: sp.Or(*[sp.And(*relation(d, s)) for d in open_]) for s in (1, -1)}
     mixed = sp.And(sp.true if 1 in known else some[1], sp.true if -1 in known else some[-1])
     out = {}
     if unique:
-        out["unique"] = helpers.boolean(helpers.merge(unique))
+        out["unique"] = boolean(merge_or(unique, facts.positive))
     if mixed != sp.false:
         out["undecided"] = mixed
     return out

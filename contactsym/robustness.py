@@ -260,6 +260,23 @@ def _stable_certificate(lp: LawPolynomials, conditions) -> Certificate | None:
 # --- the decision ------------------------------------------------------------------------
 
 
+def _instability_certificate(lp: LawPolynomials, conditions) -> Certificate | None:
+    """An exact proof that no law stabilises A: a coefficient, then (damped) Positivstellensatz."""
+    certificate = _coefficient_certificate(lp, conditions)
+    if certificate is not None:
+        return certificate
+    coefficients = [g for (kind, _), g in zip(lp.labels, conditions) if kind == "p"]
+    statement = positivstellensatz_certificate(lp, coefficients)
+    if statement:
+        return Certificate("unstable", "Positivstellensatz", statement)
+    if lp.k <= 3:  # (P8); for k = 4 degrees 2-3 certified no benchmark point
+        others = [g for (kind, order), g in zip(lp.labels, conditions) if kind == "p" and order != 2 * lp.k - 1]
+        statement = damped_positivstellensatz_certificate(lp, others)
+        if statement:
+            return Certificate("unstable", "damped Positivstellensatz", statement)
+    return None
+
+
 def _numeric_matrix(A) -> sp.Matrix:
     M = sp.Matrix(A)
     if M.rows != M.cols or M.rows == 0:
@@ -323,16 +340,7 @@ def decide(A, laws: int = 300, seed: int = 0) -> Robustness:
         if certificate is not None:
             return Robustness("stable", certificate, stable_law=stable_law)
     if stable_law is None:
-        certificate = _coefficient_certificate(lp, conditions)
-        coefficients = [g for (kind, _), g in zip(lp.labels, conditions) if kind == "p"]
-        statement = None if certificate else positivstellensatz_certificate(lp, coefficients)
-        if statement:
-            certificate = Certificate("unstable", "Positivstellensatz", statement)
-        elif certificate is None and k <= 3:  # (P8); for k = 4 degrees 2-3 certified no benchmark point
-            others = [g for (kind, order), g in zip(lp.labels, conditions) if kind == "p" and order != 2 * k - 1]
-            statement = damped_positivstellensatz_certificate(lp, others)
-            if statement:
-                certificate = Certificate("unstable", "damped Positivstellensatz", statement)
+        certificate = _instability_certificate(lp, conditions)
         if certificate is not None:
             return Robustness("unstable", certificate, unstable_law=unstable_law)
     return Robustness("undecided", stable_law=stable_law, unstable_law=unstable_law)

@@ -1,0 +1,144 @@
+"""Closed forms of Booleans of relations: each relation reduced, implied parts dropped, pairs merged.
+
+Size limits. A fully symbolic scene with k >= 3 has Hurwitz minors no reader can use in
+closed form: for q_i'' = sum_j a_ij N_j + b_i with k = 3, Delta_5 of the Hopf line is 2665
+operations unexpanded and 19390 terms expanded, and ``factor_list`` of its 306-term
+Delta_3 alone takes seconds (it is irreducible). Past ``raw_ops`` operations a relation is
+kept exactly as given (no expansion, no factoring); past ``factor_terms`` terms a numerator
+is kept unfactored and its sides are not regrouped by common factors (the other steps still
+apply to it as a whole). Both only skip rewriting: the relation kept is the given one or an
+equivalent multiple of it, so the condition means the same; only its presentation is less
+reduced. The built-in scenes stay far below both defaults (at most 986 operations, 130 terms).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+from sympy.core.relational import Relational
+from sympy.logic.boolalg import BooleanFunction
+
+from ..algebra import normalize
+from .facts import Facts
+from .merges import merge_abs, merge_and
+from .relations import Condition, arrange, as_positive_relation, drop_known_factors, solve_for, tidy, univariate
+
+__all__ = ["RAW_OPS", "FACTOR_TERMS", "closed_form", "closed_conjuncts"]
+
+#: Relations with more operations (unexpanded) are kept as given: see the module docstring.
+RAW_OPS = 1500
+#: Numerators with more terms are not factored: see the module docstring.
+FACTOR_TERMS = 200
+
+
+def closed_form(
+    condition: sp.Basic,
+    positive=(),
+    solve_for_symbol: sp.Symbol | None = None,
+    *,
+    raw_ops: float = RAW_OPS,
+    factor_terms: float = FACTOR_TERMS,
+) -> sp.Basic:
+    """The simplest equivalent form of a Boolean of relations, in the variables it is written in.
+
+    Each relation ``P op 0`` loses the factors of known sign (flipping op for negative ones),
+    is written as ``small < big`` with the terms of known positive sign on the right, and is
+    solved for ``solve_for_symbol`` when it is ``a x**2 + c`` or ``a x + c`` in it; in a
+    conjunction ``x < c, -x < c`` merge into ``|x| < c`` and parts the others imply are dropped.
+
+    Examples
+    --------
+    >>> kappa = sp.Symbol("kappa", positive=True)
+    >>> v1, v2 = sp.symbols("v_1 v_2", real=True)
+    >>> closed_form(kappa**2 * (2 * kappa**2 - v1 - v2) > 0)
+    v_1 + v_2 < 2*kappa**2
+    >>> closed_form(sp.And(v1 > 0, v2 > 0, sp.Or(v1 + v2 > 0, v1 < -1)))  # the Or follows from the rest
+    (v_1 > 0) & (v_2 > 0)
+    """
+    limits = (raw_ops, factor_terms)
+    # a disjunct is dropped on a slack known > 0 only: a slack known >= 0 would drop more, as
+    # correctly, but change the closed forms the scenes have printed so far
+    facts = Facts(positive, nonnegative_slack=False)
+    reduced = _reduce(condition, facts, solve_for_symbol, limits)
+    if len(reduced.free_symbols) == 1 and isinstance(reduced, BooleanFunction):
+        return univariate(reduced)
+    return reduced
+
+
+def _reduce(condition, facts: Facts, symbol, limits) -> sp.Basic:
+    if condition in (sp.true, sp.false):
+        return condition
+    if isinstance(condition, Relational):
+        return _reduce_relation(condition, facts.positive, symbol, limits)
+    if isinstance(condition, BooleanFunction):
+        args = [_reduce(arg, facts, symbol, limits) for arg in condition.args]
+        if isinstance(condition, sp.And):
+            flat = [c for arg in args for c in sp.And.make_args(arg)]
+            return sp.And(*_drop_implied_conjuncts(merge_abs(flat), facts))
+        if isinstance(condition, sp.Or):
+            return sp.Or(*_drop_implied_disjuncts(args, facts))
+        return condition.func(*args)
+    return condition
+
+
+def _reduce_relation(relation: Relational, positive, symbol, limits) -> sp.Basic:
+    raw_ops, factor_terms = limits
+    expr, op = as_positive_relation(relation)
+    if sp.count_ops(expr) > raw_ops:  # too large to expand: kept as given (module docstring)
+        return relation
+    rest, op, nonzero = drop_known_factors(normalize(expr), op, positive, factor_terms)
+    arranged = arrange(rest, op, positive, factor_terms)
+    if symbol is not None:
+        arranged = solve_for(arranged, symbol, positive)
+    return sp.And(arranged, *nonzero)
+
+
+def _conditions(relations) -> list[Condition] | None:
+    """The conditions of relations ``<, <=, >, >=``; None when one is another kind (==, !=)."""
+    conditions = [Condition.of(r) for r in relations]
+    return None if any(c is None for c in conditions) else conditions
+
+
+def _drop_implied_conjuncts(conjuncts: list[sp.Basic], facts: Facts) -> list[sp.Basic]:
+    """Remove an Or of relationals that the relational conjuncts imply (premises and its negation clash)."""
+    premises = [c for c in conjuncts if isinstance(c, Relational)]
+    kept = []
+    for c in conjuncts:
+        if isinstance(c, sp.Or) and all(isinstance(d, Relational) for d in c.args):
+            clash = _conditions(premises + [sp.Not(d) for d in c.args])
+            if clash is not None and facts.infeasible(clash):
+                continue
+        kept.append(c)
+    return kept
+
+
+def _drop_implied_disjuncts(disjuncts: list[sp.Basic], facts: Facts) -> list[sp.Basic]:
+    """Remove a disjunct that implies another one (it adds nothing to the Or)."""
+    kept = list(disjuncts)
+    for d in disjuncts:
+        premises = _conditions(sp.And.make_args(d))
+        others = [Condition.of(o) for o in kept if o is not d and isinstance(o, Relational)]
+        if premises is not None and any(o is not None and facts.implied(premises, o) for o in others):
+            kept.remove(d)
+    return kept
+
+
+def closed_conjuncts(conditions: list[Condition], equalities: list[sp.Basic], facts: Facts) -> frozenset:
+    """Closed forms of conditions and equations (presented by ``facts``), merged into ``|x| < c``.
+
+    Examples
+    --------
+    >>> x, y = sp.symbols("x y", real=True)
+    >>> facts = Facts()
+    >>> sorted(closed_conjuncts([facts.condition(1 - x + y), facts.condition(1 + x - y)], [], facts), key=str)
+    [Abs(x - y) < 1]
+    """
+    present = facts.present or (lambda e: e)
+    parts = []
+    for c in conditions:
+        relation = sp.Gt(c.raw, 0) if c.strict else sp.Ge(c.raw, 0)
+        reduced = facts.cached(("closed", relation), closed_form, present(relation), facts.positive)
+        parts.extend(sp.And.make_args(reduced))
+    for e in equalities:
+        parts.extend(sp.And.make_args(closed_form(present(e), facts.positive)))
+    parts = [tidy(p, facts.positive) for p in parts if p != sp.true]
+    return frozenset(merge_and(parts, facts.positive))
