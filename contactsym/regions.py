@@ -24,7 +24,8 @@ Both only skip rewriting: the region means the same. ``closed_form`` reads the t
 here at each call, so a caller (a benchmark of the old way, a test) may change them.
 
 A :class:`Region` wraps such a Boolean: ``&``, ``|``, ``~``, ``latex()``, vectorised
-``evaluate``, exact ``contains`` and ``plot``.
+``evaluate`` and exact ``contains``; :func:`contactsym.plotting.region_plot` draws it (the
+computation never imports the drawing).
 """
 
 from __future__ import annotations
@@ -182,12 +183,6 @@ class Region:
         if result not in (sp.true, sp.false):
             raise ValueError(f"cannot decide {result} exactly.")
         return bool(result)
-
-    def plot(self, ax=None, *, x, y, fixed=None, **style):
-        """Hatch the region in the (x, y) plane; see :func:`contactsym.plotting.region_plot`."""
-        from .plotting.regionplot import region_plot  # the leaf module: no import cycle
-
-        return region_plot(self, ax=ax, x=x, y=y, fixed=fixed or {}, **style)
 
 
 def _exact(value) -> sp.Expr:

@@ -84,7 +84,6 @@ def test_region_plot_hatches_on_the_given_axes(ax):
     assert drawn_on(artists, ax)
     assert artists[0].hatches == ["xx"]
     assert ax.get_legend_handles_labels()[1] == ["a < b"]
-    assert drawn_on(Region(a < b).plot(ax=ax, x="a", y="b", resolution=30), ax)
 
 
 # --- Fig. 1 ------------------------------------------------------------------------------------------
