@@ -20,6 +20,7 @@ import sympy as sp
 from .errors import ContactsymError
 from .orthants import scene_map
 from .plmap import OrthantMap, count_label, k2_label, k2_quadrants
+from .plotting.common import ContactPlot
 
 __all__ = ["CountDecision", "CountMapData", "count_equilibria", "decide_counts", "count_map_data", "count_map_plot"]
 
@@ -202,8 +203,8 @@ def count_map_data(scene, x: str, y: str, x_range, y_range, size: int = 201, **f
     return CountMapData(x, y, X, Y, np.where(undecided, -1, counts), label)
 
 
-def count_map_plot(data: CountMapData, ax=None):
-    """Draw the counts as filled patches with a legend; returns the artists.
+def count_map_plot(data: CountMapData, ax=None) -> ContactPlot:
+    """Draw the counts as filled patches with a legend; returns the :class:`~contactsym.plotting.ContactPlot`.
 
     Examples
     --------
@@ -231,7 +232,7 @@ def count_map_plot(data: CountMapData, ax=None):
     ax.set_ylabel(data.y)
     over = "" if data.label == "varies over the plane" else f" (over all loads: {data.label})"
     ax.set_title(f"number of equilibria, lift-off included{over}", fontsize=9)
-    return [mesh, legend]
+    return ContactPlot.of(ax, [mesh, legend])
 
 
 def count_map_figure(scene, path, x: str, y: str, x_range, y_range, **fixed):
