@@ -51,3 +51,13 @@ def test_report_with_a_figure_compiles_and_includes_it(tmp_path):
     log = tex.with_suffix(".log").read_text(errors="replace")
     assert "figures/test_plane.png" in log  # pdflatex read the PNG
     assert max(overfull(log), default=0) < 5, "an expression overflows the page"
+
+
+def test_each_count_region_says_why_its_count_holds():
+    scene = cs.scene("painleve-klein-guides")
+    tex = report_tex(scene)
+    for name, region in scene.equilibrium_counts().items():
+        reason = region.description.split(": ", 1)[-1]
+        heading = rf"\paragraph{{{name.capitalize()}.}} "
+        assert heading in tex
+        assert tex.split(heading, 1)[1].split("\n", 1)[0].startswith(reason.split(" (")[0]), name

@@ -237,7 +237,8 @@ def _regions_section(scene, named: _Named) -> str:
     if counts:
         text.append(r"\subsection*{Number of equilibria}")
         for name, region in counts.items():
-            text.append(f"\\paragraph{{{_escape(name.capitalize())}.}} ")
+            reason = _escape(region.description.split(": ", 1)[-1])  # the description starts with the scene's name
+            text.append(f"\\paragraph{{{_escape(name.capitalize())}.}} {reason}")
             text.append(_display(Formula(name, "", region.condition, "", _count_tag(scene, name), ""), named))
     elif note:
         text.append(r"\paragraph{Number of equilibria.} " + _escape(note))
