@@ -47,3 +47,43 @@ def build() -> Scene:
         solve_for=mu,
         description="(6.1)-(6.4): disc braked by two pads at angle alpha",
     )
+
+
+LAW_DERIVATIVES = ("Phi_u", "Phi_v", "Phi_uu", "Phi_uv", "Phi_vv", "Psi_u", "Psi_v", "Psi_uu", "Psi_uv", "Psi_vv")
+
+
+def squeal_direction(derivatives=LAW_DERIVATIVES) -> tuple[sp.Expr, sp.Expr]:
+    """(Phi*, l1): the Hopf line and the first Lyapunov coefficient at alpha = 90 deg, identical pads.
+
+    The special case Phi_j = Phi, Psi_j = Psi (< 0), and each law's derivatives at (u*, 0) equal
+    for both pads (``Phi_u`` = dPhi/du, ``Psi_uv`` = d^2 Psi/du dv, ...; those not in
+    ``derivatives`` are 0). Phi* solves the pipeline's Hopf condition Delta_3 = 0; l1 is
+    :attr:`Stability.first_lyapunov` on that line, reduced by
+    :func:`contactsym.lyapunov_form.first_lyapunov_polynomial` to a quadratic polynomial in the
+    derivatives with coefficients rational in m, mu, Psi. The normalization (``<q, q> = 1`` in
+    (u, v)) only adds a positive factor: l1 < 0 is a soft squeal (supercritical), l1 > 0 a jump
+    with hysteresis (subcritical). About 15 s for all ten derivatives.
+
+    Examples
+    --------
+    >>> Phi_line, l1 = squeal_direction(["Phi_uu"])
+    >>> Phi_line
+    -Psi**2*(mu**2 + 1)/(m*mu**2)
+    >>> l1
+    -Phi_uu*m*mu**3*(3*mu**2 + 5)/(4*(mu**2 + 1)*(mu**2 + 4)*(Psi**2*mu**2 + Psi**2 + mu**2))
+    """
+    from ..lyapunov_form import first_lyapunov_polynomial
+
+    stability = build().stability()
+    P = {str(s): s for s in stability.linearization.scene.parameters}
+    Phi, Psi = sp.Symbol("Phi", negative=True), sp.Symbol("Psi", negative=True)
+    at = {P["alpha"]: sp.pi / 2, P["Phi_1"]: Phi, P["Phi_2"]: Phi, P["Psi_1"]: Psi, P["Psi_2"]: Psi}
+    delta = next(c.lhs for c in sp.And.make_args(stability.hopf) if isinstance(c, sp.Eq))
+    (Phi_line,) = sp.solve(sp.factor(delta.subs(at)), Phi)
+    Phi_line = sp.factor(Phi_line)
+    at.update({P["Phi_1"]: Phi_line, P["Phi_2"]: Phi_line})
+    for j in (1, 2):
+        for name in LAW_DERIVATIVES:
+            law, order = name.split("_")
+            at[sp.Symbol(f"{law}_{j}_{order}", real=True)] = sp.Symbol(name, real=True) if name in derivatives else 0
+    return Phi_line, first_lyapunov_polynomial(stability, at)
