@@ -230,7 +230,7 @@ def lyapunov_symbolic(J: sp.Matrix, B, C, omega: sp.Expr, q: sp.Matrix, p: sp.Ma
 
 
 def _exact_solve(M: sp.Matrix, b: sp.Matrix) -> sp.Matrix:
-    """M^-1 b by fraction-free elimination over the exact domain of the entries (rational functions
+    """M^-1 b by Gauss-Jordan elimination over the exact domain of the entries (rational functions
     with Gaussian rational coefficients here): no symbolic pivot tests, results already cancelled."""
     from sympy.polys.matrices import DomainMatrix
 
@@ -289,16 +289,15 @@ def fast_first_lyapunov(stability, at: dict | None = None, reduce=None) -> sp.Ex
     forms = fast_hopf_forms(stability, at)
     if forms is None:
         return None
-    J, H, T, omega, q, p, _ = forms
+    J, H, T, omega, q, p = forms
     return lyapunov_symbolic(J, multilinear(H, 2), multilinear(T, 3), omega, q, p, reduce)
 
 
 def fast_hopf_forms(stability, at: dict | None = None) -> tuple | None:
-    """``(J, H, T, omega, q, p, law_symbols)`` of (2.1) at its equilibrium, for :func:`lyapunov_symbolic`.
+    """``(J, H, T, omega, q, p)`` of (2.1) at its equilibrium, for :func:`lyapunov_symbolic`.
 
     ``H`` and ``T`` are the nested second and third derivatives of the field (see
-    :func:`fast_first_lyapunov`), ``law_symbols`` the derivative symbols of generic laws
-    that they contain. None without a Hopf set.
+    :func:`fast_first_lyapunov`). None without a Hopf set.
     """
     lin = stability.linearization
     fast, k = lin.fast, stability.k
@@ -314,7 +313,6 @@ def fast_hopf_forms(stability, at: dict | None = None) -> tuple | None:
     rhs = [Phi[j] * fast.v[j] + Psi[j] * F[j] for j in range(k)] + F
     law_values = {**dict(zip(Phi, lin.Phi)), **dict(zip(Psi, lin.Psi)), **dict.fromkeys(F, 0)}
     pieces = lin.f
-    law_symbols: set = set()
 
     def at_equilibrium(expr: sp.Expr) -> sp.Expr:
         replace = {}
@@ -328,7 +326,6 @@ def fast_hopf_forms(stability, at: dict | None = None) -> tuple | None:
                 if isinstance(stability.linearization.scene.contacts[j].compliance, _generic_law()):
                     counts = (variables.count(fast.u[j]), variables.count(fast.v[j]))
                     replace[d] = _derivative_name(generic, counts)
-                    law_symbols.add(replace[d])
                     continue
                 actual = generic
             replace[d] = sp.diff(actual, *variables).subs(at)
@@ -349,7 +346,7 @@ def fast_hopf_forms(stability, at: dict | None = None) -> tuple | None:
     Phi_star, Psi_star = ([sp.sympify(x).subs(given) for x in values] for values in (lin.Phi, lin.Psi))
     q, p = hopf_vectors_45(A, Phi_star, Psi_star, omega)
     J = lin.matrix.subs(at).subs(given)
-    return J, H, T, omega, q, p, sorted(law_symbols - set(given), key=str)
+    return J, H, T, omega, q, p
 
 
 def _generic_law():

@@ -50,7 +50,8 @@ def first_lyapunov_polynomial(stability, at: dict | None = None) -> sp.Expr | No
     forms = fast_hopf_forms(stability, at)
     if forms is None:
         return None
-    J, H, T, omega, q, p, _ = forms
+    J, H, T, omega, q, p = forms
+    # the law symbols: in the field's higher derivatives but not in its linear part
     law = set().union(*[sp.sympify(e).free_symbols for e in _flat(H) + _flat(T)]) - J.free_symbols
     l1 = lyapunov_symbolic(J, multilinear(H, 2), multilinear(T, 3), omega, q, p, reduce=sp.cancel)
     numerator, denominator = sp.fraction(l1)
