@@ -14,6 +14,7 @@ from sympy.physics.mechanics import Lagrangian as lagrangian_of
 from sympy.physics.mechanics import RigidBody, dynamicsymbols, inertia
 
 from ..laws import Coulomb
+from ..lyapunov_form import first_lyapunov_polynomial
 from ..scene import Contact, Scene
 from ._planar import planar_body
 
@@ -72,8 +73,6 @@ def squeal_direction(derivatives=LAW_DERIVATIVES) -> tuple[sp.Expr, sp.Expr]:
     >>> l1
     -Phi_uu*m*mu**3*(3*mu**2 + 5)/(4*(mu**2 + 1)*(mu**2 + 4)*(Psi**2*mu**2 + Psi**2 + mu**2))
     """
-    from ..lyapunov_form import first_lyapunov_polynomial
-
     stability = build().stability()
     P = {str(s): s for s in stability.linearization.scene.parameters}
     Phi, Psi = sp.Symbol("Phi", negative=True), sp.Symbol("Psi", negative=True)
