@@ -128,7 +128,8 @@ def _direction_records(name, h, laws, distances, ours, curves, quick) -> list[di
                 else float("nan")
             )
             lost = [d for d in distances if d not in small]
-            notes = f"l1 = {h.l1:.3g} < 0 at mu* = {h.value:.6g}; amplitude ~ distance^{slope:.3f} over {small}" + (
+            fit = f"amplitude ~ distance^{slope:.3f} over {small}" if len(rows) > 1 else f"at {rows[0][0]} only"
+            notes = f"l1 = {h.l1:.3g} < 0 at mu* = {h.value:.6g}; {fit}" + (
                 f"; at {lost} the predicted amplitude exceeds N* = {h.u_star[0]:.3g}: contact loss" if lost else ""
             )
         else:
