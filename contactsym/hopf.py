@@ -30,7 +30,7 @@ from .numerics.reduced import _branch_at
 from .numerics.systems import _contact_law, _laws_key
 from .numerics.values import _Values, numeric_values, substitute
 
-__all__ = ["HopfCoefficient", "first_lyapunov", "hopf_point"]
+__all__ = ["HopfCoefficient", "first_lyapunov", "full_cycle_start", "hopf_point"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -314,3 +314,57 @@ def _widen(alpha, start: float) -> tuple[float, float]:
         f"Re lambda of the critical pair keeps the sign of {a0:.3g} within 90% of the start value: no Hopf "
         "crossing nearby; give bracket=(low, high)."
     )
+
+
+def full_cycle_start(
+    scene, hopf: HopfCoefficient, values: Mapping, eps: float, value: float, *, factor: float = 1.0, base=None
+) -> dict:
+    """Initial coordinates and rates of the full system (1.9) on the predicted cycle at ``parameter = value``.
+
+    The fast state (Q, V) of :meth:`HopfCoefficient.cycle_start` becomes gaps ``g_j = eps**2 Q_j``
+    and gap rates ``g_j' = eps V_j`` (the scaling (1.8)); the coordinates move from ``base``
+    (names to numbers, default 0, on the contact manifold) by the smallest change that gives
+    those gaps (Newton steps with the pseudo-inverse of the gaps' Jacobian), the rates likewise.
+    The result is a mapping by name for :func:`contactsym.numerics.simulate_full`.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> from contactsym.contact_laws import Hertz
+    >>> values = {"m": 1, "mu": 1, "alpha": 1.5707963267948966, "F_x": 0, "F_y": -4}
+    >>> brake, laws = cs.scene("brake"), {0: Hertz(), 1: Hertz()}
+    >>> h = hopf_point(brake, values, "mu", laws=laws)
+    >>> start = full_cycle_start(brake, h, values, 1e-3, 1.01 * h.value, base={"thetadot": -1})
+    >>> Q_1, Q_2, V_1, V_2 = h.cycle_start(1.01 * h.value)  # here g_1 = y and g_2 = -x
+    >>> [round(abs(float(x)), 9) for x in (start["y"] / 1e-6 - Q_1, start["x"] / 1e-6 + Q_2, start["ydot"] / 1e-3 - V_1)]
+    [0.0, 0.0, 0.0]
+    >>> start["thetadot"]
+    -1.0
+    """
+    fast = hopf.cycle_start(value, factor)
+    if fast is None:
+        raise HopfError(f"no small cycle at {hopf.parameter} = {value:g}: it lives on the other side of the line.")
+    k = scene.k
+    Q, V = fast[:k], fast[k:]
+    numbers = numeric_values(scene, values).numbers
+    coordinates = list(scene.coordinates)
+    names = [q.func.__name__ for q in coordinates]
+    plain = [sp.Symbol(f"_{name}", real=True) for name in names]
+    gaps = sp.Matrix([c.coordinate.subs(dict(zip(coordinates, plain))) for c in scene.contacts]).xreplace(numbers)
+    gap_value = sp.lambdify(plain, list(gaps))
+    gap_jacobian = sp.lambdify(plain, gaps.jacobian(plain))
+    base = dict(base or {})
+    position = np.array([float(base.get(name, 0.0)) for name in names])
+    target = eps**2 * np.asarray(Q, dtype=float)
+    for _ in range(20):  # Newton's method towards the gaps eps^2 Q (one step for linear gaps)
+        residual = np.asarray(gap_value(*position), dtype=float) - target
+        if np.max(np.abs(residual)) <= 1e-13 * max(np.max(np.abs(target)), 1e-300):
+            break
+        position -= np.linalg.pinv(np.asarray(gap_jacobian(*position), dtype=float)) @ residual
+    rate = np.array([float(base.get(f"{name}dot", 0.0)) for name in names])
+    Dg = np.asarray(gap_jacobian(*position), dtype=float)
+    rate += np.linalg.pinv(Dg) @ (eps * np.asarray(V, dtype=float) - Dg @ rate)
+    return {
+        **{name: float(x) for name, x in zip(names, position)},
+        **{f"{n}dot": float(r) for n, r in zip(names, rate)},
+    }

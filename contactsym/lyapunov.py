@@ -33,8 +33,10 @@ from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
+from sympy.polys.matrices import DomainMatrix
 
 from .errors import HopfError
+from .laws import Generic
 
 __all__ = ["HopfVectors", "lyapunov_numeric", "lyapunov_symbolic", "hopf_vectors_45"]
 
@@ -189,12 +191,14 @@ def _null_vector(M: sp.Matrix) -> sp.Matrix:
     return basis[0]
 
 
-def lyapunov_symbolic(J: sp.Matrix, B, C, omega: sp.Expr, q: sp.Matrix, p: sp.Matrix) -> sp.Expr:
+def lyapunov_symbolic(J: sp.Matrix, B, C, omega: sp.Expr, q: sp.Matrix, p: sp.Matrix, reduce=None) -> sp.Expr:
     """l1 = Re g21 / (2 omega) in the normalization <q, q> = <p, q> = 1, for real symbols.
 
     ``B(a, b)`` and ``C(a, b, c)`` return the multilinear forms as matrices; ``q`` and ``p``
     are critical eigenvectors of any scale (they are normalized here). The expression is
-    valid on the Hopf set only; it is not simplified.
+    valid on the Hopf set only. ``reduce`` (e.g. ``sp.cancel``) is applied to every entry of
+    every intermediate vector, so that the result is a reduced rational function when the
+    inputs are; without it nothing is simplified.
 
     Examples
     --------
@@ -205,17 +209,36 @@ def lyapunov_symbolic(J: sp.Matrix, B, C, omega: sp.Expr, q: sp.Matrix, p: sp.Ma
     ...     dot = lambda u, v: u[0]*v[0] + u[1]*v[1]
     ...     return 2*s*(dot(a, b)*c + dot(a, c)*b + dot(b, c)*a)
     >>> q, p = sp.Matrix([1, -sp.I]), sp.Matrix([1, -sp.I])
-    >>> sp.simplify(lyapunov_symbolic(J, B, C, w, q, p))
+    >>> lyapunov_symbolic(J, B, C, w, q, p, reduce=sp.cancel)
     2*s/omega
     """
+    reduce_given, reduce = reduce is not None, reduce or (lambda e: e)
+
+    def each(M: sp.Matrix) -> sp.Matrix:
+        return M.applyfunc(reduce)
+
     n = J.rows
-    q_norm = sp.expand(_dot(q, q))
-    p = p / _conjugate(sp.expand(_dot(p, q)))
+    q, p = each(q), each(p)
+    # expanding <q, q> and <p, q> only shortens them when they are reduced; otherwise it costs half the time
+    expand = sp.expand if reduce_given else (lambda e: e)
+    q_norm = reduce(expand(_dot(q, q)))
+    p = each(p / _conjugate(reduce(expand(_dot(p, q)))))
     qb = q.applyfunc(_conjugate)
-    h11 = -J.LUsolve(B(q, qb))
-    h20 = (2 * sp.I * omega * sp.eye(n) - J).LUsolve(B(q, q))
-    g21 = _dot(p, C(q, q, qb)) + 2 * _dot(p, B(q, h11)) + _dot(p, B(qb, h20))
-    return (g21 + _conjugate(g21)) / (4 * omega * q_norm)
+    solve = _exact_solve if reduce_given else (lambda M, b: M.LUsolve(b))
+    h11 = each(-solve(J, each(B(q, qb))))
+    h20 = each(solve(2 * sp.I * omega * sp.eye(n) - J, each(B(q, q))))
+    g21 = sum((reduce(_dot(p, v)) for v in (C(q, q, qb), 2 * B(q, h11), B(qb, h20))), sp.S.Zero)
+    return reduce((g21 + _conjugate(g21)) / (4 * omega * q_norm))
+
+
+def _exact_solve(M: sp.Matrix, b: sp.Matrix) -> sp.Matrix:
+    """M^-1 b by Gauss-Jordan elimination over the exact domain of the entries (rational functions
+    with Gaussian rational coefficients here): no symbolic pivot tests, results already cancelled."""
+    augmented = DomainMatrix.from_Matrix(M.row_join(b)).to_field()
+    reduced, pivots = augmented.rref()
+    if len(pivots) < M.rows or pivots[-1] >= M.cols:
+        raise HopfError("the linear system of the normal form is singular (a zero or 2 i omega eigenvalue).")
+    return reduced.to_Matrix()[:, M.cols :]
 
 
 def multilinear(derivatives: sp.MutableDenseNDimArray | list, order: int):
@@ -249,7 +272,7 @@ def _law_function(fast, j: int, which: str) -> sp.Expr:
     return sp.Function(f"{which}{j}")(fast.u[j], fast.v[j])
 
 
-def fast_first_lyapunov(stability, at: dict | None = None) -> sp.Expr | None:
+def fast_first_lyapunov(stability, at: dict | None = None, reduce=None) -> sp.Expr | None:
     """l1 of (2.1) at its equilibrium on the Hopf set, symbolically (None without a Hopf set).
 
     The field ``u_j' = Phi_j(u_j, v_j) v_j + Psi_j(u_j, v_j) f_j(u)``, ``v_j' = f_j(u)`` is
@@ -261,7 +284,20 @@ def fast_first_lyapunov(stability, at: dict | None = None) -> sp.Expr | None:
 
     ``at`` is substituted before the linear algebra (a slice of parameter space, the
     Hopf line solved for one parameter): the result is then far shorter. Its keys may be
-    the parameters and the derivative symbols.
+    the parameters and the derivative symbols. ``reduce`` is passed to :func:`lyapunov_symbolic`.
+    """
+    forms = fast_hopf_forms(stability, at)
+    if forms is None:
+        return None
+    J, H, T, omega, q, p = forms
+    return lyapunov_symbolic(J, multilinear(H, 2), multilinear(T, 3), omega, q, p, reduce)
+
+
+def fast_hopf_forms(stability, at: dict | None = None) -> tuple | None:
+    """``(J, H, T, omega, q, p)`` of (2.1) at its equilibrium, for :func:`lyapunov_symbolic`.
+
+    ``H`` and ``T`` are the nested second and third derivatives of the field (see
+    :func:`fast_first_lyapunov`). None without a Hopf set.
     """
     lin = stability.linearization
     fast, k = lin.fast, stability.k
@@ -287,7 +323,7 @@ def fast_first_lyapunov(stability, at: dict | None = None) -> sp.Expr | None:
             else:
                 j = (Phi + Psi).index(function) % k
                 generic = (fast.Phi if function in Phi else fast.Psi)[j]
-                if isinstance(stability.linearization.scene.contacts[j].compliance, _generic_law()):
+                if isinstance(fast.compliances[j], Generic):
                     counts = (variables.count(fast.u[j]), variables.count(fast.v[j]))
                     replace[d] = _derivative_name(generic, counts)
                     continue
@@ -309,10 +345,5 @@ def fast_first_lyapunov(stability, at: dict | None = None) -> sp.Expr | None:
     A = lin.A.subs(at).subs(given)
     Phi_star, Psi_star = ([sp.sympify(x).subs(given) for x in values] for values in (lin.Phi, lin.Psi))
     q, p = hopf_vectors_45(A, Phi_star, Psi_star, omega)
-    return lyapunov_symbolic(lin.matrix.subs(at).subs(given), multilinear(H, 2), multilinear(T, 3), omega, q, p)
-
-
-def _generic_law():
-    from .laws import Generic
-
-    return Generic
+    J = lin.matrix.subs(at).subs(given)
+    return J, H, T, omega, q, p

@@ -10,6 +10,7 @@ import contactsym as cs
 from contactsym import numerics
 from contactsym.contact_laws import Hertz
 from contactsym.errors import ComplianceError, HopfError
+from contactsym.hopf import full_cycle_start
 from contactsym.lyapunov import fast_first_lyapunov
 
 q, qd = sp.symbols("q qdot", real=True)
@@ -18,6 +19,7 @@ V = qd / eps
 BRAKE = {"m": 1, "alpha": np.pi / 2, "F_x": 0, "F_y": -4}
 HERTZ = {0: Hertz(), 1: Hertz()}
 # damping that weakens, then strengthens with the rate: Psi = -3/10 + V^2/10 - V^4/100 < 0 for all V
+SPIN = {"thetadot": -1}  # the disc turns clockwise, as the scene's friction assumes
 WEAKENING = cs.Law(-q / eps**2 - sp.Rational(3, 10) * V + V**3 / 30 - V**5 / 500, q, qd, eps, check=False)
 
 
@@ -33,6 +35,28 @@ def reaction_amplitudes(values, laws, start, duration, period):
         t_eval=np.linspace(duration - 2 * period, duration, 1500),
     )
     assert run.status == "ok"
+    return (run.reactions.max(axis=1) - run.reactions.min(axis=1)) / 2
+
+
+def full_run(values, laws, start, duration, period, eps):
+    """The full system (1.9) at eps over ``duration`` in tau (t = eps tau); the last two periods sampled."""
+    run = numerics.simulate_full(
+        cs.scene("brake"),
+        {**values, "r": 1, "J": 1},
+        eps,
+        (0, eps * duration),
+        start,
+        laws=laws,
+        method="DOP853",
+        rtol=1e-7,
+        t_eval=eps * np.linspace(duration - 2 * period, duration, 1500),
+        dense_output=False,
+    )
+    assert run.status == "ok"
+    return run
+
+
+def half_range(run) -> np.ndarray:
     return (run.reactions.max(axis=1) - run.reactions.min(axis=1)) / 2
 
 
@@ -56,6 +80,56 @@ def test_hertz_pads_squeal_softly_with_the_predicted_amplitude(hertz_line):
     assert np.all(inside < outside)
     for simulated in (inside, outside):
         assert simulated == pytest.approx(predicted, rel=0.1)
+
+
+def test_the_full_system_at_small_eps_squeals_with_the_predicted_amplitude_and_period(hertz_line):
+    """(1.9) with the gaps as x, y and the disc turning: the fast cycle, in t = eps tau."""
+    h, eps = hertz_line, 1e-3
+    mu = 1.01 * h.value
+    values = {**BRAKE, "mu": mu}
+    duration = 0.8 / (h.dalpha * (mu - h.value))
+    period = 2 * np.pi / h.omega
+    inside, outside = (
+        full_run(
+            values,
+            HERTZ,
+            full_cycle_start(cs.scene("brake"), h, values, eps, mu, factor=f, base=SPIN),
+            duration,
+            period,
+            eps,
+        )
+        for f in (0.8, 1.2)
+    )
+    assert np.all(half_range(inside) < half_range(outside))
+    for run in (inside, outside):
+        assert half_range(run) == pytest.approx(h.amplitude(mu), rel=0.1)
+    N = inside.reactions[0] - inside.reactions[0].mean()
+    ups = inside.t[1:][(N[:-1] < 0) & (N[1:] >= 0)]  # upward zero crossings: one per period
+    assert np.mean(np.diff(ups)) == pytest.approx(eps * period, rel=0.01)  # omega/eps in t, to O(distance)
+
+
+def test_the_full_system_keeps_a_large_cycle_before_the_line_where_l1_is_positive():
+    """Hysteresis in (1.9): at one mu before the line, the rest state and a large cycle both attract."""
+    laws, eps = {0: WEAKENING, 1: WEAKENING}, 1e-3
+    h = numerics.hopf_point(cs.scene("brake"), {**BRAKE, "mu": 0.3}, "mu", laws=laws)
+    mu = 0.97 * h.value
+    values = {**BRAKE, "mu": mu}
+    duration = 1 / abs(h.dalpha * (mu - h.value))
+    period = 2 * np.pi / h.omega
+    below, above = (
+        half_range(
+            full_run(
+                values,
+                laws,
+                full_cycle_start(cs.scene("brake"), h, values, eps, mu, factor=f, base=SPIN),
+                duration,
+                period,
+                eps,
+            )
+        )
+        for f in (0.7, 1.3)
+    )
+    assert np.all(below < 0.7 * h.amplitude(mu)) and np.all(above > 2 * h.amplitude(mu))
 
 
 def test_weakening_damping_jumps_and_shows_hysteresis():

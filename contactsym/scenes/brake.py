@@ -15,8 +15,10 @@ import sympy as sp
 from sympy.physics.mechanics import Lagrangian as lagrangian_of
 from sympy.physics.mechanics import RigidBody, dynamicsymbols, inertia
 
+from ..errors import SceneError
 from ..latex import tex
 from ..laws import Coulomb
+from ..lyapunov_form import first_lyapunov_polynomial
 from ..plotting import brake_hopf_data, brake_hopf_plot, brake_map_data, brake_map_plot, save_figure
 from ..regions import closed_form
 from ..scene import Contact, Scene
@@ -65,6 +67,10 @@ def build() -> Scene:
     )
 
 
+#: The special case's common law: Phi_j = Phi, Psi_j = Psi at both pads.
+PHI, PSI = sp.Symbol("Phi", negative=True), sp.Symbol("Psi", negative=True)
+
+
 def special_cases(scene) -> list[SpecialCase]:
     r"""The paper's special case (6.4): alpha = 90 deg, equal laws Phi_j = Phi, Psi_j = Psi.
 
@@ -80,29 +86,40 @@ def special_cases(scene) -> list[SpecialCase]:
     >>> omega.lhs, omega.rhs
     ('\\omega', -Psi*(mu**2 + 1)/(m*mu))
     """
-    if id(scene) not in _SPECIAL:  # the built-in brake is one object: derived once, then shared
-        _SPECIAL[id(scene)] = (scene, _derive_special_cases(scene))
-    return list(_SPECIAL[id(scene)][1])
+    return list(_special(scene)[0])
 
 
 _SPECIAL: dict = {}
 
 
-def _derive_special_cases(scene) -> list[SpecialCase]:
-    st, fast = scene.stability(), scene.fast_subsystem()
-    Phi, Psi = sp.Symbol("Phi", negative=True), sp.Symbol("Psi", negative=True)
+def _special(scene) -> tuple[list[SpecialCase], sp.Expr | None]:
+    """(the special cases, Phi on the Hopf line or None): derived once per scene object, then shared."""
+    if id(scene) not in _SPECIAL:
+        _SPECIAL[id(scene)] = (scene, _derive_special_cases(scene))  # the scene kept: its id stays its own
+    return _SPECIAL[id(scene)][1]
+
+
+def _equal_pads(scene) -> dict:
+    """The substitution of the special case: alpha = 90 deg, Phi_j = Phi, Psi_j = Psi."""
+    fast = scene.fast_subsystem()
     alpha = next(s for s in scene.parameters if s.name == "alpha")
-    equal = {**dict.fromkeys(fast.Phi, Phi), **dict.fromkeys(fast.Psi, Psi), alpha: sp.pi / 2}
+    return {**dict.fromkeys(fast.Phi, PHI), **dict.fromkeys(fast.Psi, PSI), alpha: sp.pi / 2}
+
+
+def _derive_special_cases(scene) -> tuple[list[SpecialCase], sp.Expr | None]:
+    st, equal = scene.stability(), _equal_pads(scene)
     stable = closed_form(sp.And(*[sp.Gt(h.subs(equal), 0) for h in st.hurwitz]), scene)
     intro = r"With $\Phi_j = \Phi$, $\Psi_j = \Psi$ and $\alpha = 90^\circ$ the Hurwitz conditions reduce to"
     cases = [SpecialCase(intro, "special", "", "", stable, ("6.4",), "with the mass m: erratum 13")]
     line = closed_form(st.hopf.subs(equal), scene)
-    solved = sp.solve(line, Phi, dict=True) if isinstance(line, sp.Equality) else []
-    if len(solved) == 1:
-        omega = sp.factor(sp.sqrt(sp.factor(st.poly.omega_squared.subs(equal).subs(solved[0]))))
-        on_line = "and on its boundary, a Hopf bifurcation, the frequency in the stretched time is"
-        cases.append(SpecialCase(on_line, "hopf frequency", r"\omega", "=", omega, (), "erratum 14"))
-    return cases
+    solved = sp.solve(line, PHI, dict=True) if isinstance(line, sp.Equality) else []
+    if len(solved) != 1:
+        return cases, None
+    Phi_line = sp.factor(solved[0][PHI])
+    omega = sp.factor(sp.sqrt(sp.factor(st.poly.omega_squared.subs(equal).subs(PHI, Phi_line))))
+    on_line = "and on its boundary, a Hopf bifurcation, the frequency in the stretched time is"
+    cases.append(SpecialCase(on_line, "hopf frequency", r"\omega", "=", omega, (), "erratum 14"))
+    return cases, Phi_line
 
 
 def figures(scene, directory: Path, *, resolution: int = 400, dpi: int = 150) -> list[tuple[Path, str]]:
@@ -134,3 +151,39 @@ def figures(scene, directory: Path, *, resolution: int = 400, dpi: int = 150) ->
             "(stretched time).",
         ),
     ]
+
+
+#: The law's derivatives at (u*, 0) that enter l1 (``Phi_uv`` = d^2 Phi / du dv, ...).
+LAW_DERIVATIVES = ("Phi_u", "Phi_v", "Phi_uu", "Phi_uv", "Phi_vv", "Psi_u", "Psi_v", "Psi_uu", "Psi_uv", "Psi_vv")
+
+
+def squeal_direction(scene, derivatives=LAW_DERIVATIVES) -> tuple[sp.Expr, sp.Expr]:
+    """(Phi*, l1): the Hopf line and the first Lyapunov coefficient at alpha = 90 deg, identical pads.
+
+    The special case Phi_j = Phi, Psi_j = Psi (< 0), and each law's derivatives at (u*, 0) equal
+    for both pads (``Phi_u`` = dPhi/du, ``Psi_uv`` = d^2 Psi/du dv, ...; those not in
+    ``derivatives`` are 0). Phi* is the Hopf line of :func:`special_cases`; l1 is
+    :attr:`Stability.first_lyapunov` on that line, reduced by
+    :func:`contactsym.lyapunov_form.first_lyapunov_polynomial` to a quadratic polynomial in the
+    derivatives with coefficients rational in m, mu, Psi. The normalization (``<q, q> = 1`` in
+    (u, v)) only adds a positive factor: l1 < 0 is a soft squeal (supercritical), l1 > 0 a jump
+    with hysteresis (subcritical). About 15 s for all ten derivatives.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> Phi_line, l1 = squeal_direction(cs.scene("brake"), ["Phi_uu"])
+    >>> Phi_line
+    -Psi**2*(mu**2 + 1)/(m*mu**2)
+    >>> l1
+    -Phi_uu*m*mu**3*(3*mu**2 + 5)/(4*(mu**2 + 1)*(mu**2 + 4)*(Psi**2*mu**2 + Psi**2 + mu**2))
+    """
+    Phi_line = _special(scene)[1]
+    if Phi_line is None:
+        raise SceneError("this brake has no Hopf line in Phi at alpha = 90 deg with equal pads.")
+    at = {**_equal_pads(scene), **{Phi_j: Phi_line for Phi_j in scene.fast_subsystem().Phi}}
+    for j in (1, 2):
+        for name in LAW_DERIVATIVES:
+            law, order = name.split("_")
+            at[sp.Symbol(f"{law}_{j}_{order}", real=True)] = sp.Symbol(name, real=True) if name in derivatives else 0
+    return Phi_line, first_lyapunov_polynomial(scene.stability(), at)
