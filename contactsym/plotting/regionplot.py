@@ -136,7 +136,7 @@ def region_plot(
     >>> from contactsym.regions import Region
     >>> a, b = sp.symbols("a b", real=True)
     >>> fig, ax = plt.subplots()
-    >>> artists = Region(a + b < 1).plot(ax=ax, x="a", y="b", resolution=20, label="a + b < 1")
+    >>> artists = region_plot(Region(a + b < 1), ax=ax, x="a", y="b", resolution=20, label="a + b < 1")
     >>> len(artists), ax.get_legend_handles_labels()[1]
     (2, ['a + b < 1'])
     >>> plt.close(fig)
