@@ -190,3 +190,13 @@ def test_imports_inside_functions_are_heavy_or_explained(module):
         if i.in_function and not i.commented and not any(i.target == h or i.target.startswith(h + ".") for h in HEAVY)
     ]
     assert not unexplained, f"{module} imports inside functions without a comment saying why: {unexplained}"
+
+
+def test_architecture_page_lists_every_module_and_no_stale_one():
+    """docs/architecture.md, the page a new maintainer reads first, has one line per module."""
+    page = (PACKAGE.parent / "docs" / "architecture.md").read_text()
+    listed = {line.split("`")[1] for line in page.splitlines() if line.startswith("- `") and line.count("`") >= 2}
+    files = {str(path.relative_to(PACKAGE)) for path in PACKAGE.rglob("*.py") if path.name != "__main__.py"}
+    assert files - listed == set(), f"modules missing from docs/architecture.md: {sorted(files - listed)}"
+    stale = {name for name in listed - files if name.endswith(".py") and not name.startswith("tests/")}
+    assert not stale, f"docs/architecture.md lists modules that do not exist: {sorted(stale)}"
