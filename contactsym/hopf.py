@@ -23,11 +23,10 @@ import numpy as np
 import sympy as sp
 
 from .errors import ComplianceError, HopfError, NumericsError
-from .laws import Generic, KelvinVoigt, Law, _in_domain
 from .lyapunov import HopfVectors, lyapunov_numeric
 from .numerics.codegen import _cached, lambdify_cse
 from .numerics.reduced import _branch_at
-from .numerics.systems import _contact_law, _laws_key
+from .numerics.systems import _contact_law, _index, _laws_key
 from .numerics.values import _Values, numeric_values, substitute
 
 __all__ = ["HopfCoefficient", "first_lyapunov", "full_cycle_start", "hopf_point"]
@@ -98,26 +97,6 @@ class HopfCoefficient:
         }
 
 
-def _law_QV(scene, j: int, law, Q: sp.Symbol, V: sp.Symbol) -> sp.Expr:
-    """N_j(Q, V) on the law's smooth branch (inside its domain), parameters kept symbolic."""
-    if isinstance(law, Generic):
-        fast = scene.fast_subsystem()
-        return fast.Phi[j] * Q + fast.Psi[j] * V
-    if isinstance(law, KelvinVoigt):
-        return -law.stiffness * Q - law.damping * V
-    if isinstance(law, Law):
-        return law.scaled.xreplace({law.Q: Q, law.V: V})
-    raise NumericsError(f"unsupported compliance law {law!r}; use Generic, KelvinVoigt or Law.")
-
-
-def _inside(scene, j: int, laws, N: sp.Expr, Q: sp.Symbol, V: sp.Symbol) -> sp.Expr:
-    """N_j extended by 0 outside the law's domain (for the inversion at the equilibrium)."""
-    law = _contact_law(scene, j, laws)
-    if not isinstance(law, Law) or not law.domain:
-        return N
-    return _in_domain(N, [w.xreplace({law.Q: Q, law.V: V}) for w in law.domain])
-
-
 def _field(scene, signs: tuple, laws, functions: dict) -> dict:
     """The (Q, V) field of one piece and its derivative tensors as generated code (cached)."""
 
@@ -128,7 +107,10 @@ def _field(scene, signs: tuple, laws, functions: dict) -> dict:
         V = [sp.Symbol(f"V_{j + 1}", real=True) for j in range(k)]
         z = Q + V
         only_functions = _Values({}, functions)
-        N = [substitute(_law_QV(scene, j, _contact_law(scene, j, laws), Q[j], V[j]), only_functions) for j in range(k)]
+        law = [_contact_law(scene, j, laws) for j in range(k)]
+        N = [substitute(law[j].smooth_scaled(Q[j], V[j], _index(scene, j)), only_functions) for j in range(k)]
+        # N_j cut to 0 outside the law's domain, for the inversion at the equilibrium
+        N_cut = [substitute(law[j].reaction_scaled(Q[j], V[j], _index(scene, j)), only_functions) for j in range(k)]
         f = [substitute(e, only_functions).xreplace(dict(zip(fast.u, N))) for e in fast.piece(signs)]
         F = sp.Matrix(V + f)
         params = sorted(F.free_symbols - set(z), key=str)
@@ -141,9 +123,7 @@ def _field(scene, signs: tuple, laws, functions: dict) -> dict:
         return {
             "params": params,
             "tensors": lambdify_cse(args, [J.tolist(), H, T, dN]),
-            "N_rest": [
-                lambdify_cse([Q[j], *params], _inside(scene, j, laws, N[j], Q[j], V[j]).subs(V[j], 0)) for j in range(k)
-            ],
+            "N_rest": [lambdify_cse([Q[j], *params], N_cut[j].subs(V[j], 0)) for j in range(k)],
             "N_QV": [
                 lambdify_cse([Q[j], *params], [N[j].diff(x).subs(V[j], 0) for x in (Q[j], V[j])]) for j in range(k)
             ],

@@ -58,6 +58,10 @@ class Compliance:
         """The reaction in the scaled deformation Q = q/eps**2 and rate V = q'/eps, as eps -> 0 (1.8)."""
         raise NotImplementedError
 
+    def smooth_scaled(self, Q: sp.Expr, V: sp.Expr, index: int | None) -> sp.Expr:
+        """:meth:`reaction_scaled` on the law's smooth branch, not cut to 0 outside its domain (for derivatives)."""
+        return self.reaction_scaled(Q, V, index)
+
     def parameters(self) -> set:
         """The symbols the law brings into a scene (its stiffness, damping, ...)."""
         return set()
@@ -401,6 +405,9 @@ class Law(Compliance):
     def reaction_scaled(self, Q, V, index):
         at = {self.Q: Q, self.V: V}
         return _in_domain(self.scaled.xreplace(at), [w.xreplace(at) for w in self.domain])
+
+    def smooth_scaled(self, Q, V, index):
+        return self.scaled.xreplace({self.Q: Q, self.V: V})
 
     def parameters(self):
         return self.expr.free_symbols - {self.q, self.qdot, self.eps}

@@ -100,3 +100,14 @@ def test_simulation_accepts_the_library_laws_and_refuses_uv_for_an_implicit_one(
         assert run.status == "ok" and np.all(np.isfinite(run.reactions))
     with pytest.raises(numerics.NumericsError, match="form='deformation'"):
         numerics.fast_system(cs.scene("brake"), values, laws={0: CubicStiffening(), 1: CubicStiffening()}, form="uv")
+
+
+def test_smooth_branch_is_the_reaction_inside_the_domain_and_is_not_cut_outside():
+    Q, V = sp.symbols("Q V", real=True)
+    law = Hertz(2, 1)
+    smooth, cut = law.smooth_scaled(Q, V, None), law.reaction_scaled(Q, V, None)
+    assert not smooth.has(sp.Piecewise) and cut.has(sp.Piecewise)
+    for q, v in [(-0.5, 0.1), (-2.0, -0.3), (-0.1, 0.0)]:  # in compression: the two agree
+        assert float(smooth.subs({Q: q, V: v})) == pytest.approx(float(cut.subs({Q: q, V: v})))
+    assert cut.subs({Q: 0.5, V: 0}) == 0  # a gap: no reaction, but the smooth branch goes on
+    assert sp.diff(smooth, Q).subs({Q: -1, V: 0}) == sp.diff(law.scaled, law.Q).subs({law.Q: -1, law.V: 0})
