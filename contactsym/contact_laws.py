@@ -26,8 +26,9 @@ from dataclasses import replace
 
 import sympy as sp
 
+from .compliance import KelvinVoigt, _require_positive
 from .errors import ComplianceError
-from .laws import KelvinVoigt, Law, _require_positive
+from .formula_law import Law
 from .scene import Scene
 
 __all__ = ["CubicStiffening", "Hertz", "HuntCrossley", "KelvinVoigt", "with_laws"]

@@ -65,7 +65,7 @@ from ..errors import NumericsError
 
 # private names that tests, contactsym.hopf and contactsym.atlas import from here are re-exported
 # with redundant aliases, until they import them from their modules
-from ..laws import _in_domain as _in_domain
+from ..formula_law import _in_domain as _in_domain
 from .certified import Classification, certified_sign, classify, decide
 from .classifier import PointClassifier
 from .classifier import _one_signed_form as _one_signed_form
