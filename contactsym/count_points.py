@@ -21,6 +21,7 @@ from .errors import ContactsymError
 from .orthants import scene_map
 from .plmap import OrthantMap, count_label, k2_label, k2_quadrants
 from .plotting.common import ContactPlot
+from .plotting.figures import save_figure
 
 __all__ = ["CountDecision", "CountMapData", "count_equilibria", "decide_counts", "count_map_data", "count_map_plot"]
 
@@ -237,13 +238,5 @@ def count_map_plot(data: CountMapData, ax=None) -> ContactPlot:
 
 def count_map_figure(scene, path, x: str, y: str, x_range, y_range, **fixed):
     """Draw :func:`count_map_plot` for one plane into a PNG file and return its path (for reports)."""
-    from matplotlib.figure import Figure  # matplotlib is heavy and optional: loaded only to draw
-
     data = count_map_data(scene, x, y, x_range, y_range, **fixed)
-    figure = Figure(figsize=(6.0, 4.2))
-    count_map_plot(data, ax=figure.add_subplot())
-    path = Path(path)
-    partial = path.with_name(path.stem + ".partial.png")
-    figure.savefig(partial, dpi=130, bbox_inches="tight")
-    partial.replace(path)  # all or nothing
-    return path
+    return save_figure(Path(path), lambda f: count_map_plot(data, ax=f.add_subplot()), size=(6.0, 4.2), dpi=130)

@@ -23,22 +23,26 @@ FIGURE_SCENES = ("painleve-klein-guides", "painleve-klein-rod", "brake", "slidin
 def save_figure(path: Path, draw: Callable, *, size=(7.0, 5.0), dpi: int = 150) -> Path:
     r"""Call ``draw(figure)`` on a new matplotlib Figure of ``size`` inches and write it to ``path``.
 
-    The Figure is made without pyplot, so drawing many files keeps no global state.
+    The Figure is made without pyplot, so drawing many files keeps no global state; the file
+    is written beside ``path`` and renamed, all or nothing.
 
     Examples
     --------
     >>> import tempfile
     >>> with tempfile.TemporaryDirectory() as directory:
     ...     path = save_figure(Path(directory) / "line.png", lambda f: f.add_subplot().plot([0, 1]), dpi=20)
-    ...     path.read_bytes()[:4]
-    b'\x89PNG'
+    ...     path.read_bytes()[:4], sorted(p.name for p in Path(directory).iterdir())
+    (b'\x89PNG', ['line.png'])
     """
     from matplotlib.figure import Figure  # matplotlib only when a figure is drawn
 
     figure = Figure(figsize=size)
     draw(figure)
-    figure.savefig(path, dpi=dpi, bbox_inches="tight")
-    return Path(path)
+    path = Path(path)
+    partial = path.with_name(path.stem + ".partial.png")
+    figure.savefig(partial, dpi=dpi, bbox_inches="tight")
+    partial.replace(path)  # all or nothing: a reader never sees half a PNG
+    return path
 
 
 def scene_figures(scene, directory, *, resolution=400, dpi=150) -> dict[str, Path]:
