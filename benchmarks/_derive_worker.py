@@ -76,7 +76,7 @@ def main(argv: list[str]) -> int:
     else:
         result = naive(scene)
         seconds = time.perf_counter() - imported
-        from contactsym.algebra import normalize
+        from contactsym.algebra.basic import normalize
 
         ours_poly = scene.linearization().charpoly.as_expr()
         info = {"agree": normalize(result["charpoly"] - ours_poly) == 0}  # sin^2 + cos^2 = 1, s^2 = 1

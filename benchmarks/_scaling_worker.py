@@ -17,7 +17,7 @@ def _expand_normalize(expr):
     """The normalization of earlier versions: expand, then sin^2 = 1 - cos^2 and s^2 = 1."""
     import sympy as sp
 
-    from contactsym.algebra import reduce_signs, reduce_trig
+    from contactsym.algebra.basic import reduce_signs, reduce_trig
 
     return reduce_signs(reduce_trig(sp.expand(expr)))
 
@@ -26,7 +26,7 @@ def _use_the_naive_way() -> None:
     """Accelerations by LU solve + expand, and expand-based normalization in every stage."""
     import contactsym as cs
     from contactsym import equilibria, fast, linear, mechanics, regions, regularize, stability
-    from contactsym.scene import Contact, Scene
+    from contactsym.mechanism.scene import Contact, Scene
 
     for module in (fast, linear, stability, equilibria, regions, regularize):
         module.normalize = _expand_normalize

@@ -50,7 +50,7 @@ def old_count_regions(scene) -> dict:
 
     import sympy as sp
 
-    from contactsym.count_conditions import count_facts
+    from contactsym.counts.conditions import count_facts
     from contactsym.inequalities import closed_conjuncts
 
     facts = count_facts(scene)
@@ -130,7 +130,7 @@ def _disagreements(regions, n: int = 4000) -> tuple[int, int]:
     """Random points of the generic k = 2 scene whose label differs from the counts of every cell."""
     import numpy as np
 
-    from contactsym.plmap import OrthantMap
+    from contactsym.counts.plmap import OrthantMap
 
     rng = np.random.default_rng(0)
     values = {f"{x}_{i}{j}": rng.normal(size=n) for x in "ac" for i in (1, 2) for j in (1, 2)}
@@ -152,7 +152,7 @@ def _main(mode: str, target: str) -> None:
     started = time.perf_counter()
     scene = _build(target)
     if mode == "ours":
-        from contactsym.counts import count_regions
+        from contactsym.counts.regions import count_regions
 
         found = count_regions(scene)
         regions, seconds = list(found), time.perf_counter() - started

@@ -15,7 +15,7 @@ fast subsystem simulated on both sides of the line:
 
 Each law is checked twice: on the fast subsystem in tau, and on the full system (1.9) at
 eps = 1e-3 in t (the disc turning, the pads' gaps as coordinates, started on the predicted
-cycle by ``contactsym.hopf.full_cycle_start``). ours_s: one l1 evaluation (a point on the
+cycle by ``contactsym.numerics.hopf.full_cycle_start``). ours_s: one l1 evaluation (a point on the
 line, k = 2); baseline_s: the simulations that confirm it. Also timed: ``Stability.first_lyapunov``
 with Hertz pads (symbolic stiffness and damping) against evaluating it at a point, and the
 brake's closed form ``contactsym.scenes.brake.squeal_direction(scene)``. Plot: ``hopf_direction.png``.
@@ -30,8 +30,8 @@ import sympy as sp
 
 import contactsym as cs
 from contactsym import numerics
-from contactsym.contact_laws import CubicStiffening, Hertz, HuntCrossley
-from contactsym.hopf import full_cycle_start
+from contactsym.laws.library import CubicStiffening, Hertz, HuntCrossley
+from contactsym.numerics.hopf import full_cycle_start
 
 from . import record
 
@@ -147,7 +147,7 @@ def _symbolic_records() -> list[dict]:
     """Stability.first_lyapunov with Hertz pads (symbolic k, d), and the brake's closed form."""
     import sympy as sp
 
-    from contactsym.contact_laws import with_laws
+    from contactsym.laws.library import with_laws
     from contactsym.scenes.brake import squeal_direction
 
     k, d = sp.symbols("k d", positive=True)
@@ -197,7 +197,7 @@ def run(quick: bool, out) -> list[dict]:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from contactsym.hopf_plots import hopf_amplitude_data, hopf_amplitude_plot
+    from contactsym.plotting.hopf import hopf_amplitude_data, hopf_amplitude_plot
 
     distances = (0.001, 0.003, 0.01) if quick else (0.001, 0.003, 0.01, 0.02)
     records, curves = [], {}

@@ -1,6 +1,6 @@
 """regions k=3 symbolic: cold time of ``Scene.regions()`` for q_i'' = sum_j a_ij N_j + b_i, k = 3.
 
-Ours: :func:`contactsym.regions.scene_regions` as it is now (relations past ``RAW_OPS``
+Ours: :func:`contactsym.stages.regions.scene_regions` as it is now (relations past ``RAW_OPS``
 operations kept as derived, numerators past ``FACTOR_TERMS`` terms not factored). Old: the
 same code with both limits lifted, i.e. every relation normalized, expanded and factored (the
 Hopf line's Delta_5 has 19390 terms). Each runs in a fresh process with a time limit; the

@@ -1,6 +1,6 @@
 """robustness: undecided fraction and time per point of ``robustness.decide`` against Props 7/8.
 
-Ours: :func:`contactsym.robustness.decide` (certificates and exact witness laws), per point.
+Ours: :func:`contactsym.robustness.classify.decide` (certificates and exact witness laws), per point.
 Baseline: what contactsym had for k >= 3: Proposition 7 (A symmetric positive definite:
 stable for every law) and Proposition 8 (det A < 0 or all a_ss < 0: unstable for every
 law), the rest undecided. Cases: random A with entries uniform in [-2, 2] (k = 3 and 4,
@@ -17,8 +17,8 @@ import time
 import numpy as np
 import sympy as sp
 
-from contactsym.law_polynomials import LawPolynomials, fast_spectral_abscissa
-from contactsym.robustness import decide, nested_sequences
+from contactsym.robustness.classify import decide, nested_sequences
+from contactsym.robustness.law_polynomials import LawPolynomials, fast_spectral_abscissa
 
 from . import record
 

@@ -12,7 +12,10 @@ Examples
 mu**2*sin(alpha)**2/m**2 + sin(alpha)**2/m**2
 """
 
-from .algebra import SignSymbol
+import sys
+
+from . import _aliases
+from .algebra.basic import SignSymbol
 from .errors import (
     ComplianceError,
     ContactsymError,
@@ -20,15 +23,15 @@ from .errors import (
     SignPatternError,
     SingularJacobianError,
 )
-from .latex import latex
 from .laws import Compliance, Coulomb, Generic, KelvinVoigt, Law, Viscous
-from .linear import lam
+from .mechanism.files.reader import FigurePlan, SceneFileError, load_scene, read_scene
+from .mechanism.scene import Contact, Scene
 from .parse import ParseError, parse_expression
-from .regions import Region, closed_form
+from .printing.latex_output import latex
 from .report import ReportError, ReportResult, conditions, report_tex, write_report
-from .scene import Contact, Scene
-from .scenefile import FigurePlan, SceneFileError, load_scene, read_scene
 from .scenes import DEFAULT_SCENE, scene, scene_names
+from .stages.linear import lam
+from .stages.regions import Region, closed_form
 
 __all__ = [
     "Compliance",
@@ -66,3 +69,5 @@ __all__ = [
 ]
 
 __version__ = "0.1.0"
+
+_aliases.install(sys.modules[__name__])

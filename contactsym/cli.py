@@ -1,7 +1,7 @@
 """Command line.
 
 SCENE is a built-in scene's name or the path of a scene file (``my.toml``, see
-:mod:`contactsym.scenefile`).
+:mod:`contactsym.mechanism.files.reader`).
 
 ``contactsym [show] [SCENE]``            the derivation chain of a scene, as text
 ``contactsym list``                      the built-in scenes
@@ -35,9 +35,9 @@ import sympy as sp
 
 from .atomic import replaced_directory, signals_as_exceptions
 from .errors import ContactsymError, SceneError, SignPatternError
+from .mechanism.files.reader import scene_or_file
+from .mechanism.scene import Scene
 from .parse import ParseError
-from .scene import Scene
-from .scenefile import scene_or_file
 from .scenes import DEFAULT_SCENE, scene, scene_names
 from .validate import cut, shorten
 

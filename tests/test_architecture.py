@@ -15,11 +15,14 @@ import contactsym
 
 PACKAGE = pathlib.Path(contactsym.__file__).parent
 
-#: The pipeline's stages: computed from the previous stage, never from what is built on them.
-STAGES = ("regularize", "fast", "equilibria", "linear", "hurwitz", "stability", "regions", "counts")
+#: The subpackages below the scene: the stages and what they are computed with.
+BELOW_THE_SCENE = ("stages", "counts", "algebra", "inequalities", "robustness", "hopf", "laws", "printing")
 
 #: What the stages are below: the scene and its registry, output and numerics.
-ABOVE_THE_STAGES = ("scene", "scenes", "plotting", "report", "numerics")
+ABOVE_THE_STAGES = ("mechanism", "scenes", "plotting", "report", "numerics", "atlas", "cli")
+
+#: At most this many modules at the top level; the rest live in the subpackage of their domain.
+TOP_LEVEL_LIMIT = 14
 
 #: Heavy optional modules that may be imported where first needed, without a comment.
 HEAVY = ("matplotlib", "scipy.optimize", "dask", "xarray")
@@ -27,8 +30,8 @@ HEAVY = ("matplotlib", "scipy.optimize", "dask", "xarray")
 
 @dataclass(frozen=True)
 class Import:
-    source: str  # the importing module, e.g. "contactsym.fast"
-    target: str  # the imported module ("contactsym.latex", or an outside one: "matplotlib.pyplot")
+    source: str  # the importing module, e.g. "contactsym.stages.fast"
+    target: str  # the imported module ("contactsym.printing.latex_output", or an outside one: "matplotlib.pyplot")
     line: int
     in_function: bool
     commented: bool  # a comment on the import's line or on the line above
@@ -90,12 +93,23 @@ def _imports(module: str) -> list[Import]:
 IMPORTS = {module: _imports(module) for module in MODULES}
 
 
+def _parent(module: str) -> str | None:
+    """The package whose ``__init__`` runs before ``module`` does; the root package is left out:
+    it runs before any of its modules and imports them, so an edge to it closes no cycle that
+    Python would meet."""
+    parent = module.rpartition(".")[0]
+    return parent if parent in MODULES and parent != "contactsym" else None
+
+
 def _graph() -> dict[str, set[str]]:
-    """contactsym module -> the contactsym modules it imports (anywhere in it)."""
-    return {
-        module: {i.target for i in imports if i.target in MODULES and i.target != module}
-        for module, imports in IMPORTS.items()
-    }
+    """contactsym module -> the contactsym modules it imports (anywhere in it), and its parent
+    package: importing a submodule runs the parent's ``__init__`` first."""
+    graph = {}
+    for module, imports in IMPORTS.items():
+        edges = {i.target for i in imports if i.target in MODULES and i.target != module}
+        edges |= {p for p in map(_parent, edges | {module}) if p is not None and p != module}
+        graph[module] = edges
+    return graph
 
 
 def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
@@ -143,11 +157,11 @@ def test_the_cycle_finder_finds_a_cycle_and_only_cycles():
 
 
 def test_the_import_reader_sees_imports_in_functions_and_skips_type_checking_blocks():
-    stability = {(i.target, i.in_function) for i in IMPORTS["contactsym.stability"]}
-    assert ("contactsym.robustness", True) in stability  # imported where first needed
-    assert ("contactsym.linear", False) in stability
-    assert all(i.line > 0 for i in IMPORTS["contactsym.stability"])
-    assert any(i.target == "contactsym.scenes" for i in IMPORTS["contactsym.scenefile"])
+    stability = {(i.target, i.in_function) for i in IMPORTS["contactsym.stages.stability"]}
+    assert ("contactsym.robustness.classify", True) in stability  # imported where first needed
+    assert ("contactsym.stages.linear", False) in stability
+    assert all(i.line > 0 for i in IMPORTS["contactsym.stages.stability"])
+    assert any(i.target == "contactsym.scenes" for i in IMPORTS["contactsym.mechanism.files.reader"])
 
 
 def test_no_import_cycle_among_contactsym_modules():
@@ -162,8 +176,8 @@ def test_no_import_cycle_among_contactsym_modules():
 
 def test_latex_is_a_leaf():
     """latex.py prints; each stage says what its formulas are, so the printer imports no stage."""
-    assert _is_leaf("contactsym.latex")
-    assert not _is_leaf("contactsym.fast")
+    assert _is_leaf("contactsym.printing.latex_output")
+    assert not _is_leaf("contactsym.stages.fast")
 
 
 def _is_leaf(module: str) -> bool:
@@ -171,15 +185,52 @@ def _is_leaf(module: str) -> bool:
     return {i.target for i in IMPORTS[module] if i.target in MODULES} <= {"contactsym.errors"}
 
 
-@pytest.mark.parametrize("stage", STAGES)
-def test_stages_never_import_what_is_built_on_them(stage):
+def test_the_graph_sees_the_edge_to_a_parent_package():
+    graph = _graph()
+    assert "contactsym.numerics" in graph["contactsym.numerics.hopf"]
+    assert "contactsym.stages" in graph["contactsym.mechanism.scene"]  # it imports contactsym.stages.fast
+    assert _cycles(
+        {**graph, "contactsym.stages.fast": graph["contactsym.stages.fast"] | {"contactsym.mechanism.scene"}}
+    )
+
+
+def _below_the_scene(module: str) -> bool:
+    return any(module == f"contactsym.{p}" or module.startswith(f"contactsym.{p}.") for p in BELOW_THE_SCENE)
+
+
+@pytest.mark.parametrize("module", sorted(m for m in MODULES if _below_the_scene(m)))
+def test_stages_never_import_what_is_built_on_them(module):
     above = {f"contactsym.{name}" for name in ABOVE_THE_STAGES}
     wrong = [
         f"line {i.line}: {i.target}"
-        for i in IMPORTS[f"contactsym.{stage}"]
+        for i in IMPORTS[module]
         if i.target in above or any(i.target.startswith(f"{name}.") for name in above)
     ]
-    assert not wrong, f"contactsym.{stage} imports " + "; ".join(wrong)
+    assert not wrong, f"{module} imports " + "; ".join(wrong)
+
+
+def test_few_modules_at_the_top_level():
+    top = sorted(p.name for p in PACKAGE.glob("*.py") if p.name != "__main__.py")
+    assert len(top) <= TOP_LEVEL_LIMIT, f"{len(top)} modules at the top level: {top}"
+
+
+def _submodules(package: str) -> list[str]:
+    return [m for m in MODULES if m.rpartition(".")[0] == package and not m.endswith("__main__")]
+
+
+@pytest.mark.parametrize("package", sorted(m for m in MODULES if MODULES[m].name == "__init__.py"))
+def test_no_name_shadows_a_module(package):
+    """``contactsym.numerics.integrate`` must be the module, not a function of the same name."""
+    import importlib
+    import types
+
+    wrong = []
+    for sub in _submodules(package):
+        importlib.import_module(sub)
+        value = getattr(importlib.import_module(package), sub.rpartition(".")[2])
+        if not isinstance(value, types.ModuleType) or value.__name__ != sub:
+            wrong.append(f"{sub} is {type(value).__name__}")
+    assert not wrong, f"names in {package} shadow its modules: {wrong}"
 
 
 @pytest.mark.parametrize("module", sorted(MODULES))

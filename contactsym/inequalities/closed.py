@@ -17,7 +17,7 @@ import sympy as sp
 from sympy.core.relational import Relational
 from sympy.logic.boolalg import BooleanFunction
 
-from ..algebra import normalize
+from ..algebra.basic import normalize
 from .facts import Facts
 from .merges import merge_abs, merge_and
 from .relations import Condition, arrange, as_positive_relation, drop_known_factors, solve_for, tidy, univariate

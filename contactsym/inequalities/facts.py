@@ -13,7 +13,7 @@ from collections.abc import Callable, Iterator
 
 import sympy as sp
 
-from ..algebra import known_sign, normalize
+from ..algebra.basic import known_sign, normalize
 from .relations import Condition
 
 __all__ = ["Facts", "pythagorean", "half_angles"]

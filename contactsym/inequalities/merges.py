@@ -11,7 +11,7 @@ import itertools
 import sympy as sp
 from sympy.core.relational import Relational
 
-from ..algebra import known_sign
+from ..algebra.basic import known_sign
 from .relations import positive_part
 
 __all__ = ["split", "merge_and", "merge_abs", "merge_pair", "merge_or", "boolean"]

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.core.relational import Relational
 
-from ..algebra import known_sign
+from ..algebra.basic import known_sign
 
 __all__ = [
     "FLIP",

@@ -29,7 +29,7 @@ The modules, each one job, from the bottom up:
 - :mod:`~contactsym.numerics.codegen`: generated NumPy code, cached per scene;
 - :mod:`~contactsym.numerics.systems`: ODE assembly, and the full system (1.9);
 - :mod:`~contactsym.numerics.certified`: certified signs, :func:`decide`, :func:`classify`;
-- :mod:`~contactsym.numerics.integrate`: :func:`integrate` and the :class:`Simulation` result;
+- :mod:`~contactsym.numerics.integration`: :func:`integrate` and the :class:`Simulation` result;
 - :mod:`~contactsym.numerics.reduced`: equilibrium branches and the reduced system (2.2);
 - :mod:`~contactsym.numerics.fastsystem`: the fast subsystem (2.1), generated and simulated;
 - :mod:`~contactsym.numerics.simulate`: the full system (1.9) simulated;
@@ -37,7 +37,7 @@ The modules, each one job, from the bottom up:
 - :mod:`~contactsym.numerics.trajectories`: trajectories of (2.1) for a phase portrait;
 - :mod:`~contactsym.numerics.classifier`: :class:`PointClassifier`, many points at once.
 
-The Hopf bifurcation of the fast subsystem is :mod:`contactsym.hopf`, which builds on
+The Hopf bifurcation of the fast subsystem is :mod:`contactsym.numerics.hopf`, which builds on
 these modules; :func:`first_lyapunov` and :func:`hopf_point` are its functions.
 
 Examples
@@ -60,12 +60,12 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-from .. import hopf as _hopf
 from ..errors import NumericsError
 
-# private names that tests, contactsym.hopf and contactsym.atlas import from here are re-exported
+# private names that tests, contactsym.numerics.hopf and contactsym.atlas import from here are re-exported
 # with redundant aliases, until they import them from their modules
-from ..formula_law import _in_domain as _in_domain
+from ..laws.formula import _in_domain as _in_domain
+from . import hopf as _hopf
 from .certified import Classification, certified_sign, classify, decide
 from .classifier import PointClassifier
 from .classifier import _one_signed_form as _one_signed_form
@@ -75,7 +75,7 @@ from .codegen import NumericFunction, lambdify_cse, lambdify_stage
 from .codegen import _cached as _cached
 from .cycles import Cycle, fast_cycle, simulate_averaged
 from .fastsystem import fast_system, simulate_fast
-from .integrate import Simulation, integrate
+from .integration import Simulation, integrate
 from .reduced import _branch_at as _branch_at
 from .reduced import equilibrium_reactions, reduced_system, simulate_reduced
 from .simulate import simulate_full
@@ -115,16 +115,16 @@ __all__ = [
 ]
 
 
-# --- the Hopf bifurcation of the fast subsystem (contactsym.hopf) -------------------------
-# contactsym.hopf builds on the modules above; its module object is bound here even while it is
+# --- the Hopf bifurcation of the fast subsystem (contactsym.numerics.hopf) -------------------------
+# contactsym.numerics.hopf builds on the modules above; its module object is bound here even while it is
 # being imported (it may be imported first), and its functions are looked up when called
 
 
 def first_lyapunov(scene, values: Mapping, **options):
-    """l1 of the fast subsystem at a point on its Hopf set; see :func:`contactsym.hopf.first_lyapunov`."""
+    """l1 of the fast subsystem at a point on its Hopf set; see :func:`contactsym.numerics.hopf.first_lyapunov`."""
     return _hopf.first_lyapunov(scene, values, **options)
 
 
 def hopf_point(scene, values: Mapping, parameter, **options):
-    """The Hopf crossing along ``parameter`` and l1 there; see :func:`contactsym.hopf.hopf_point`."""
+    """The Hopf crossing along ``parameter`` and l1 there; see :func:`contactsym.numerics.hopf.hopf_point`."""
     return _hopf.hopf_point(scene, values, parameter, **options)

@@ -15,10 +15,10 @@ from fractions import Fraction
 import sympy as sp
 from sympy.core.evalf import PrecisionExhausted
 
+from ..algebra.intervals import interval_sign
 from ..errors import NumericsError
-from ..intervals import interval_sign
 from ..parse import sympy_only
-from ..stability import Stability
+from ..stages.stability import Stability
 from .values import _UNIT, _number, _Values, numeric_values, substitute
 
 

@@ -10,10 +10,10 @@ import numpy as np
 import sympy as sp
 
 from ..errors import NumericsError
-from ..fast import FastSubsystem
-from ..linear import Linearization
-from ..regularize import ReducedSystem, Regularized
-from ..stability import Stability
+from ..stages.fast import FastSubsystem
+from ..stages.linear import Linearization
+from ..stages.regularize import ReducedSystem, Regularized
+from ..stages.stability import Stability
 from .values import numeric_values, substitute
 
 #: generated functions, per scene and parameter set

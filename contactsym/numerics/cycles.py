@@ -9,10 +9,10 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..errors import NumericsError
-from ..scene import t as _time
+from ..mechanism.scene import t as _time
 from .codegen import lambdify_cse
 from .fastsystem import _equilibrium_state, _fast_form, _fast_scales, fast_system
-from .integrate import Simulation, integrate
+from .integration import Simulation, integrate
 from .reduced import _reaction_scale, _try_branch
 from .systems import OdeSystem, _coordinates, _free_coordinates, _manifold_parameters
 from .values import _check_free, _check_span, _evaluate, _state_values, _Values, _with, numeric_values, substitute

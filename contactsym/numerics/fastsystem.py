@@ -12,7 +12,7 @@ import sympy as sp
 from ..errors import NumericsError
 from ..laws import ImplicitDeformation
 from .codegen import _cached, lambdify_cse
-from .integrate import Simulation, integrate
+from .integration import Simulation, integrate
 from .reduced import _reaction_scale, _try_branch
 from .systems import (
     OdeSystem,

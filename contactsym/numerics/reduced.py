@@ -9,10 +9,10 @@ import numpy as np
 import sympy as sp
 
 from ..errors import NumericsError
-from ..scene import t as _time
+from ..mechanism.scene import t as _time
 from .certified import decide
 from .codegen import _cached
-from .integrate import Simulation, integrate
+from .integration import Simulation, integrate
 from .systems import OdeSystem, _coordinates, _first_order, _free_coordinates, _manifold_parameters
 from .values import (
     _check_free,

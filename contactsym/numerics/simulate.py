@@ -11,7 +11,7 @@ import sympy as sp
 from ..errors import NumericsError
 from ..progress import Progress
 from .codegen import lambdify_cse
-from .integrate import Simulation, integrate
+from .integration import Simulation, integrate
 from .reduced import _reaction_scale, _try_branch
 from .systems import _contact_law, _coordinates, _invert_law, _law_scaled, _manifold_parameters, full_system
 from .values import (

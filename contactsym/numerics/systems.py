@@ -15,7 +15,7 @@ from scipy.optimize import brentq  # already loaded by scipy.integrate
 
 from ..errors import NumericsError
 from ..laws import Compliance
-from ..scene import t as _time
+from ..mechanism.scene import t as _time
 from .codegen import _cached, lambdify_cse
 from .values import _check_free, _plain_expr, _positive, _Values, numeric_values, substitute
 

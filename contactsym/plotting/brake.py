@@ -14,9 +14,9 @@ from dataclasses import dataclass, field
 import numpy as np
 import sympy as sp
 
-from ..latex import tex
-from ..regions import Region
+from ..printing.latex_output import tex
 from ..scenes import paper_knowledge
+from ..stages.regions import Region
 from .common import STABLE_HATCH, UNSTABLE_HATCH, ContactPlot, _axes, _scene
 from .regionplot import RegionData, _boundary_plot, _relational_fields, _values_for, region_plot
 

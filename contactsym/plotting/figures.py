@@ -3,7 +3,7 @@
 What a built-in scene draws, and with which caption, is scene knowledge: the function
 ``figures(scene, directory, *, resolution, dpi)`` of ``scenes/<name>.py``, asked for
 through :func:`contactsym.scenes.paper_knowledge`. A user's scene has none here; its
-``[figures]`` plan is drawn by :mod:`contactsym.scenefigures`.
+``[figures]`` plan is drawn by :mod:`contactsym.plotting.plan_figures`.
 """
 
 from __future__ import annotations

@@ -13,7 +13,7 @@ import numpy as np
 import sympy as sp
 from scipy import ndimage
 
-from ..counts import square_threshold
+from ..counts.regions import square_threshold
 from .common import STABLE_HATCH, UNSTABLE_HATCH, ContactPlot, _axes, _degrees, _float, _scene
 from .regionplot import RegionData, _boundary_plot, _relational_fields, _values_for, region_plot
 

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from ..latex import tex
+from ..printing.latex_output import tex
 from ..scenes import paper_knowledge
 from .common import CASE_TITLES, ContactPlot, _axes, _float, _scene
 

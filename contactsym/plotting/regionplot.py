@@ -1,7 +1,7 @@
 """Any region on a grid of two of its symbols, hatched; the zero sets that bound it.
 
 Regions are duck-typed: anything with ``condition``, ``evaluate(**values)`` and the
-``_by_name`` mapping of its symbols (a :class:`contactsym.regions.Region`) is drawn.
+``_by_name`` mapping of its symbols (a :class:`contactsym.stages.regions.Region`) is drawn.
 This module imports no other part of contactsym, so ``Region.plot`` can use it.
 """
 
@@ -76,7 +76,7 @@ def region_data(region, *, x, y, fixed=None, xlim=(-1.0, 1.0), ylim=(-1.0, 1.0),
     Examples
     --------
     >>> import sympy as sp
-    >>> from contactsym.regions import Region
+    >>> from contactsym.stages.regions import Region
     >>> a, b = sp.symbols("a b", real=True)
     >>> data = region_data(Region(a + b < 1), x="a", y="b", resolution=3)
     >>> data.mask.tolist()
@@ -133,7 +133,7 @@ def region_plot(
     >>> import matplotlib
     >>> matplotlib.use("Agg")
     >>> import matplotlib.pyplot as plt
-    >>> from contactsym.regions import Region
+    >>> from contactsym.stages.regions import Region
     >>> a, b = sp.symbols("a b", real=True)
     >>> fig, ax = plt.subplots()
     >>> artists = region_plot(Region(a + b < 1), ax=ax, x="a", y="b", resolution=20, label="a + b < 1")

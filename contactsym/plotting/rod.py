@@ -13,8 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from ..counts import corner_cases
-from ..latex import tex
+from ..counts.regions import corner_cases
+from ..printing.latex_output import tex
 from .common import CASE_TITLES, ContactPlot, _axes, _float, _scene
 
 __all__ = ["ROD_CASES", "RodFData", "rod_f_data", "rod_f_plot", "rod_portrait_values"]
@@ -49,7 +49,7 @@ def _piece_roots(f, corners):
 
 
 def _corner_case_at(scene, numeric: dict):
-    """The scene's count case (:func:`contactsym.counts.corner_cases`) whose corner ordering holds at ``numeric``."""
+    """The scene's count case (:func:`contactsym.counts.regions.corner_cases`) whose corner ordering holds at ``numeric``."""
     for candidate in corner_cases(scene):
         ordering = candidate.ordering
         if bool(ordering.subs({s: numeric[str(s)] for s in ordering.free_symbols})):

@@ -25,13 +25,13 @@ from pathlib import Path
 
 import sympy as sp
 
-from ..errata import AGREE, latex_table, text_to_latex
+from ..counts.one_sided import one_sided_cases
 from ..errors import ContactsymError
-from ..latex import Formula, formulas, tex
-from ..one_sided import one_sided_cases
-from ..scene import paper_equations
+from ..mechanism.scene import paper_equations
+from ..printing.latex_output import Formula, formulas, tex
 from ..scenes import paper_name
-from ..stability import generic_minors, hurwitz_names, robustness_formulas
+from ..stages.stability import generic_minors, hurwitz_names, robustness_formulas
+from .errata import AGREE, latex_table, text_to_latex
 from .scene_parts import _count_tag, _special_cases
 from .summary import _counts
 from .typesetting import WIDTH, _describe, _display, _escape, _Named, width

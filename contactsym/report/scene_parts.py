@@ -17,8 +17,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ..latex import Formula
-from ..scenefigures import plan_figures
+from ..plotting.plan_figures import plan_figures
+from ..printing.latex_output import Formula
 from ..scenes import paper_knowledge, paper_name
 from .typesetting import _display, _Named
 

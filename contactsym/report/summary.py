@@ -16,10 +16,10 @@ from __future__ import annotations
 import sympy as sp
 
 from ..errors import ContactsymError
-from ..latex import tex
-from ..regions import Region
-from ..scene import paper_equations
-from ..stability import hurwitz_names
+from ..mechanism.scene import paper_equations
+from ..printing.latex_output import tex
+from ..stages.regions import Region
+from ..stages.stability import hurwitz_names
 from .scene_parts import _count_tag
 
 __all__ = ["conditions", "summary_text"]

@@ -9,7 +9,7 @@ so the document can list it with its size.
 Examples
 --------
 >>> import sympy as sp
->>> from contactsym.latex import Formula
+>>> from contactsym.printing.latex_output import Formula
 >>> x, y = sp.symbols("x y")
 >>> print(_display(Formula("f", "f", x + y, "=", ("4.6",)), _Named()))
 \begin{equation}
@@ -25,8 +25,8 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from ..errata import text_to_latex
-from ..latex import Formula, tex
+from ..printing.latex_output import Formula, tex
+from .errata import text_to_latex
 
 #: Visible width (in characters of math) of one displayed line, and the most lines one formula may take.
 WIDTH = 78

@@ -72,7 +72,7 @@ def paper_name(scene) -> str | None:
     --------
     >>> paper_name(scene("brake"))
     'brake'
-    >>> from contactsym.scenefile import load_scene
+    >>> from contactsym.mechanism.files.reader import load_scene
     >>> from pathlib import Path
     >>> paper_name(load_scene(Path(__file__).parents[2] / "examples" / "brake.toml")) is None
     True
@@ -100,7 +100,7 @@ def paper_knowledge(scene, attribute: str, default=None):
     --------
     >>> paper_knowledge(scene("brake"), "no such attribute", "none here")
     'none here'
-    >>> from contactsym.scenefile import load_scene
+    >>> from contactsym.mechanism.files.reader import load_scene
     >>> from pathlib import Path
     >>> own = load_scene(Path(__file__).parents[2] / "examples" / "brake.toml")
     >>> paper_knowledge(own, "special_cases") is None

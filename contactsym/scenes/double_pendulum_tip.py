@@ -7,8 +7,8 @@ the tip, Coulomb friction mu |N| at the tip.
 
 from __future__ import annotations
 
-from ..scene import Scene
-from ..scenefile import FigurePlan
+from ..mechanism.files.reader import FigurePlan
+from ..mechanism.scene import Scene
 from .link_chain import build_chain
 
 

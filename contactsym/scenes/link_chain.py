@@ -13,7 +13,7 @@ import sympy as sp
 from sympy.physics.mechanics import Lagrangian, Particle, Point, ReferenceFrame, dynamicsymbols
 
 from ..laws import Coulomb
-from ..scene import Contact, Scene
+from ..mechanism.scene import Contact, Scene
 
 
 def build_chain(n: int, name: str | None = None) -> Scene:

@@ -15,10 +15,10 @@ import sympy as sp
 from sympy.physics.mechanics import Lagrangian as lagrangian_of
 from sympy.physics.mechanics import Particle, dynamicsymbols
 
-from ..algebra import SignSymbol
+from ..algebra.basic import SignSymbol
 from ..laws import Coulomb
+from ..mechanism.scene import Contact, Scene
 from ..plotting import Fig1Data, fig1_data, fig1_plot, save_figure
-from ..scene import Contact, Scene
 from ._planar import planar_body
 
 #: The paper's numbers of this example, by formula key (see :func:`contactsym.scenes.paper_knowledge`).

@@ -13,6 +13,7 @@ from pathlib import Path
 import sympy as sp
 from sympy.physics.mechanics import ReferenceFrame, dynamicsymbols
 
+from ..mechanism.scene import Contact, Scene
 from ..plotting import (
     ROD_CASES,
     phase_portrait_caption,
@@ -23,7 +24,6 @@ from ..plotting import (
     rod_portrait_values,
     save_figure,
 )
-from ..scene import Contact, Scene
 
 #: The paper's numbers of this example, by formula key (``"key:detail"`` for one row).
 EQUATIONS = {

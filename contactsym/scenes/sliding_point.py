@@ -14,8 +14,8 @@ from sympy.physics.mechanics import Lagrangian as lagrangian_of
 from sympy.physics.mechanics import Particle, Point, ReferenceFrame, dynamicsymbols
 
 from ..laws import Coulomb, KelvinVoigt
+from ..mechanism.scene import Contact, Scene, t
 from ..plotting import phase_portrait_caption, phase_portrait_data, phase_portrait_plot, save_figure
-from ..scene import Contact, Scene, t
 
 #: The paper's numbers of this example, by formula key (see :func:`contactsym.scenes.paper_knowledge`).
 EQUATIONS = {

@@ -13,7 +13,7 @@ import sympy as sp
 from sympy.physics.mechanics import Lagrangian, Particle, RigidBody, dynamicsymbols, inertia
 
 from ..laws import Coulomb
-from ..scene import Contact, Scene
+from ..mechanism.scene import Contact, Scene
 from ._planar import planar_body
 
 

@@ -17,9 +17,9 @@ import sympy as sp
 from sympy.physics.mechanics import Lagrangian as lagrangian_of
 from sympy.physics.mechanics import RigidBody, dynamicsymbols, inertia
 
-from ..count_points import count_map_figure
 from ..laws import Coulomb
-from ..scene import Contact, Scene
+from ..mechanism.scene import Contact, Scene
+from ..plotting.counts import count_map_figure
 from ._planar import planar_body
 
 

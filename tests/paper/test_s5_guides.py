@@ -8,7 +8,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import contactsym as cs
-from contactsym.algebra import SignSymbol
+from contactsym.algebra.basic import SignSymbol
 from tests.helpers import max_real_part, numeric, same, truth
 
 scene = cs.scene("painleve-klein-guides")

@@ -1,0 +1,113 @@
+"""Fraction-free linear algebra over the trigonometric field: adj(M), det(M) and M^-1 loads.
+
+The Faddeev–LeVerrier recurrence divides only by integers, so every product is reduced at
+once modulo sin^2 + cos^2 = 1 (:mod:`contactsym.algebra.canonical_form`) and nothing swells; one
+common denominator det M is kept. Used by the contact-space derivation
+(:mod:`contactsym.mechanism.contact_space`) and by the fast subsystem.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import sympy as sp
+from sympy.physics.mechanics import dynamicsymbols
+
+from .canonical_form import TrigField
+
+__all__ = ["adjugate_and_det", "adjugate_and_det_in_field", "polynomial_adjugate", "solve_fraction_free", "t"]
+
+#: The time t of ``sympy.physics.mechanics`` (coordinates are functions q(t)).
+t = dynamicsymbols._t
+
+
+def adjugate_and_det(M: list[list], reduce) -> tuple[list[list], object]:
+    """adj(M) and det(M) of a square matrix over a commutative ring containing Q.
+
+    Faddeev–LeVerrier: with M_0 = 0 and c_n = 1, M_k = M M_(k-1) + c_(n-k+1) I and
+    c_(n-k) = -tr(M M_k)/k give the characteristic polynomial sum c_i x^i; then
+    det M = (-1)^n c_0 and adj M = (-1)^(n-1) M_n (Cayley–Hamilton). Only integer divisions
+    occur, so ``reduce`` (a ring homomorphism's normal form) may be applied after every step.
+
+    Examples
+    --------
+    >>> a, b, c, d = sp.symbols("a b c d")
+    >>> adj, det = adjugate_and_det([[a, b], [c, d]], lambda x: sp.expand(x))
+    >>> adj, det
+    ([[d, -b], [-c, a]], a*d - b*c)
+    """
+    n = len(M)
+    zero = M[0][0] * 0
+    Mk = [[zero] * n for _ in range(n)]
+    coefficient = zero + 1
+    for k in range(1, n + 1):
+        product = _matmul(M, Mk, reduce)
+        Mk = [[product[i][j] + (coefficient if i == j else zero) for j in range(n)] for i in range(n)]
+        trace = reduce(sum((M[i][j] * Mk[j][i] for i in range(n) for j in range(n)), zero))
+        coefficient = reduce(-trace * sp.Rational(1, k))
+    sign = -1 if n % 2 else 1
+    return [[-sign * x for x in row] for row in Mk], reduce(sign * coefficient)
+
+
+def _matmul(A, B, reduce):
+    n, m, p = len(A), len(B), len(B[0])
+    return [[reduce(sum((A[i][r] * B[r][j] for r in range(m)), A[0][0] * 0)) for j in range(p)] for i in range(n)]
+
+
+def solve_fraction_free(
+    M: sp.Matrix, loads: list[sp.Matrix], rows: sp.Matrix | None = None, *, substitution=None, offsets=None
+) -> list[list[sp.Expr]]:
+    """Canonical entries of ``rows^T M^-1 load (+ offset)`` for each load (rows = identity by default).
+
+    One trigonometric field for all entries; adj(M) and det(M) by :func:`adjugate_and_det`
+    with every product reduced; one common denominator det M. ``substitution`` ({symbol:
+    expression}) is applied to the loads and offsets inside the field, where a rational value
+    (a rate on the contact manifold) costs one composition instead of a ``together``.
+
+    Examples
+    --------
+    >>> q, m = sp.symbols("q m", positive=True)
+    >>> M = sp.Matrix([[m, 0], [0, m*sp.sin(q)**2 + m*sp.cos(q)**2]])
+    >>> solve_fraction_free(M, [sp.Matrix([1, sp.cos(q)])])
+    [[1/m, cos(q)/m]]
+    """
+    rows = sp.eye(M.rows) if rows is None else rows
+    substitution = dict(substitution or {})
+    offsets = offsets or [None] * len(loads)
+    extra = [x for offset in offsets if offset is not None for x in offset]
+    field = TrigField([*M, *rows, *substitution, *substitution.values(), *extra] + [x for load in loads for x in load])
+    values = {symbol: field.element(value) for symbol, value in substitution.items()}
+    adj, det = adjugate_and_det_in_field(field, M)
+    projected = _matmul([[field.element(x) for x in rows[:, i]] for i in range(rows.cols)], adj, field.reduce)
+    results = []
+    for load, offset in zip(loads, offsets):
+        vector = [[field.substituted(x, values)] for x in load]
+        column = [row[0] / det for row in _matmul(projected, vector, field.reduce)]
+        if offset is not None:
+            column = [x + field.substituted(y, values) for x, y in zip(column, offset)]
+        results.append([field.present(x) for x in column])
+    return results
+
+
+def adjugate_and_det_in_field(field, M: sp.Matrix):
+    """adj M and det M as elements of ``field``; in the polynomial ring of M's own entries (no
+    gcds, computed once per matrix) when they are polynomials, as a mass matrix usually is."""
+    polynomial = polynomial_adjugate(sp.ImmutableMatrix(M))
+    if polynomial is not None:
+        adj, det = polynomial
+        return [[field.field.new(x.set_ring(field.ring)) for x in row] for row in adj], field.field.new(
+            det.set_ring(field.ring)
+        )
+    entries = [[field.element(x) for x in row] for row in M.tolist()]
+    return adjugate_and_det(entries, field.reduce)
+
+
+@lru_cache(maxsize=16)
+def polynomial_adjugate(M: sp.ImmutableMatrix):
+    """(adj M, det M) as reduced polynomials of M's own field's ring, or None when an entry is
+    not a polynomial; cached: the fast subsystem and the sign of det M both need it."""
+    field = TrigField(list(M))
+    entries = [[field.element(x) for x in row] for row in M.tolist()]
+    if any(x.denom != 1 for row in entries for x in row):
+        return None
+    return adjugate_and_det([[x.numer for x in row] for row in entries], field._reduce_poly)

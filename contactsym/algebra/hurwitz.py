@@ -1,0 +1,210 @@
+"""Routh–Hurwitz conditions in the Liénard–Chipart form, fraction-free, any degree.
+
+For ``p(lam) = a_0 lam^n + a_1 lam^(n-1) + ... + a_n`` with ``a_0 > 0`` every root has a
+negative real part exactly when all ``a_i > 0`` and the Hurwitz determinants
+``Delta_(n-1), Delta_(n-3), ...`` are positive. The determinants are computed once per
+degree for generic coefficients (polynomials with integer coefficients, no division)
+and then evaluated at the given coefficients.
+
+A Hopf point is where ``Delta_(n-1) = 0`` with the other conditions positive; there
+``p(i omega) = 0`` and ``omega^2`` is the common root of the even and odd parts.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cache, cached_property
+
+import sympy as sp
+
+from ..printing.latex_output import Formula
+
+__all__ = ["hurwitz_matrix", "hurwitz_minors", "lienard_chipart", "hopf_omega_squared", "Hurwitz"]
+
+_z = sp.Symbol("z")
+_CANCEL_LIMIT = 2000
+
+
+def _generic(n: int) -> tuple[sp.Symbol, ...]:
+    return sp.symbols(f"a_0:{n + 1}")
+
+
+def hurwitz_matrix(coefficients) -> sp.Matrix:
+    """The n x n Hurwitz matrix H[i, j] = a_(2j - i) (1-based), for a_0 lam^n + ... + a_n.
+
+    Examples
+    --------
+    >>> hurwitz_matrix(sp.symbols("a0:4"))
+    Matrix([
+    [a1, a3,  0],
+    [a0, a2,  0],
+    [ 0, a1, a3]])
+    """
+    a = list(coefficients)
+    n = len(a) - 1
+
+    def entry(i, j):
+        index = 2 * (j + 1) - (i + 1)
+        return a[index] if 0 <= index <= n else sp.S.Zero
+
+    return sp.Matrix(n, n, entry)
+
+
+@cache
+def _generic_minors(n: int) -> tuple[sp.Expr, ...]:
+    H = hurwitz_matrix(_generic(n))
+    return tuple(sp.expand(H[:m, :m].det(method="berkowitz")) for m in range(1, n + 1))
+
+
+def _coefficients(poly: sp.Poly) -> list[sp.Expr]:
+    return [poly.coeff_monomial(poly.gen**i) for i in range(poly.degree(), -1, -1)]
+
+
+def hurwitz_minors(poly: sp.Poly) -> list[sp.Expr]:
+    """Delta_1 .. Delta_n of ``poly`` (unexpanded substitution into generic minors).
+
+    Examples
+    --------
+    >>> x, a, b = sp.symbols("x a b")
+    >>> hurwitz_minors(sp.Poly(x**2 + a*x + b, x))
+    [a, a*b]
+    """
+    values = dict(zip(_generic(poly.degree()), _coefficients(poly)))
+    return [m.xreplace(values) for m in _generic_minors(poly.degree())]
+
+
+def _lienard_chipart_choice(poly: sp.Poly) -> tuple[list[int], list[int]]:
+    """(powers s of the coefficients p_s that are not positive numbers, orders m of the
+    minors Delta_(n-1), Delta_(n-3), ... down to Delta_2): the Liénard–Chipart conditions."""
+    n = poly.degree()
+    powers = [n - i for i, c in enumerate(_coefficients(poly)) if not (c.is_number and c > 0)]
+    return powers, list(range(n - 1, 1, -2))
+
+
+def _lienard_chipart_parts(poly: sp.Poly, minors: list[sp.Expr]) -> tuple[list, list]:
+    """(the chosen coefficients, the chosen minors)."""
+    powers, orders = _lienard_chipart_choice(poly)
+    coefficients = _coefficients(poly)
+    return [coefficients[poly.degree() - s] for s in powers], [minors[m - 1] for m in orders]
+
+
+def lienard_chipart(poly: sp.Poly, minors: list[sp.Expr] | None = None) -> list[sp.Expr]:
+    """Expressions that are all > 0 exactly when ``poly`` is Hurwitz stable.
+
+    The leading coefficient must be positive; coefficients that are positive numbers
+    are dropped, and Delta_1 (= a_1) is not repeated.
+
+    Examples
+    --------
+    >>> x, a, b, c = sp.symbols("x a b c")
+    >>> lienard_chipart(sp.Poly(x**3 + a*x**2 + b*x + c, x))
+    [a, b, c, a*b - c]
+    """
+    coefficients, chosen = _lienard_chipart_parts(poly, minors or hurwitz_minors(poly))
+    return coefficients + chosen
+
+
+def _first_subresultant(A: sp.Poly, B: sp.Poly) -> sp.Poly:
+    """The subresultant of degree 1 of A and B (deg A >= deg B >= 1), as one determinant.
+
+    Rows z^i A (i < deg B - 1) and z^i B (i < deg A - 1); the columns hold the
+    coefficients of z^(m+n-2) .. z^2 and, last, the row polynomial itself.
+    """
+    if A.degree() == 1:
+        return A
+    if B.degree() == 1:
+        return B
+    m, n = A.degree(), B.degree()
+    rows = [A * _z**i for i in reversed(range(n - 1))] + [B * _z**i for i in reversed(range(m - 1))]
+    top = m + n - 2
+    matrix = sp.Matrix(
+        [[row.coeff_monomial(_z ** (top - c)) for c in range(top - 1)] + [row.as_expr()] for row in rows]
+    )
+    return sp.Poly(matrix.det(method="berkowitz"), _z)
+
+
+@cache
+def _generic_omega_squared(n: int) -> sp.Expr | None:
+    if n < 2:
+        return None
+    a = _generic(n)[::-1]  # a[i] is the coefficient of lam**i
+    even = sp.Poly(sum((-1) ** i * a[2 * i] * _z**i for i in range(n // 2 + 1)), _z)
+    odd = sp.Poly(sum((-1) ** i * a[2 * i + 1] * _z**i for i in range((n - 1) // 2 + 1)), _z)
+    if odd.degree() < 1:
+        return -even.coeff_monomial(1) / even.coeff_monomial(_z)
+    s = _first_subresultant(even, odd)
+    return -s.coeff_monomial(1) / s.coeff_monomial(_z)
+
+
+def hopf_omega_squared(poly: sp.Poly) -> sp.Expr | None:
+    """omega^2 at a Hopf point (Delta_(n-1) = 0): the common root of Re and Im of p(i omega).
+
+    Examples
+    --------
+    >>> x, a = sp.symbols("x a", positive=True)
+    >>> hopf_omega_squared(sp.Poly(x**4 + 2*x**3 + 3*x**2 + a*x + 1, x))
+    a/2
+    """
+    generic = _generic_omega_squared(poly.degree())
+    if generic is None:
+        return None
+    values = dict(zip(_generic(poly.degree()), _coefficients(poly)))
+    omega_squared = generic.xreplace(values)
+    # cancel is cheap for small scenes and worthless (and slow) for large generic ones
+    return sp.cancel(omega_squared) if sp.count_ops(omega_squared) < _CANCEL_LIMIT else omega_squared
+
+
+@dataclass(frozen=True, eq=False)
+class Hurwitz:
+    """Hurwitz data of a characteristic polynomial (4.6)-(4.7).
+
+    Examples
+    --------
+    >>> x, a, b = sp.symbols("x a b")
+    >>> Hurwitz(sp.Poly(x**2 + a*x + b, x)).conditions
+    [a, b]
+    """
+
+    poly: sp.Poly
+
+    @cached_property
+    def coefficients(self) -> list[sp.Expr]:
+        """p_n, ..., p_0 (leading first)."""
+        return _coefficients(self.poly)
+
+    @cached_property
+    def minors(self) -> list[sp.Expr]:
+        return hurwitz_minors(self.poly)
+
+    @cached_property
+    def _parts(self) -> tuple[list, list]:
+        return _lienard_chipart_parts(self.poly, self.minors)
+
+    @cached_property
+    def conditions(self) -> list[sp.Expr]:
+        coefficients, chosen = self._parts
+        return coefficients + chosen
+
+    @cached_property
+    def labels(self) -> list[tuple[str, int]]:
+        """What each condition is: ``("p", s)`` for the coefficient p_s of (4.6),
+        ``("Delta", m)`` for the Hurwitz minor Delta_m of (4.7)."""
+        powers, orders = _lienard_chipart_choice(self.poly)
+        return [("p", s) for s in powers] + [("Delta", m) for m in orders]
+
+    @cached_property
+    def hopf_set(self) -> sp.Basic:
+        """Delta_(n-1) = 0 with the other Liénard–Chipart conditions positive (degree >= 3)."""
+        coefficients, chosen = self._parts
+        if not chosen:
+            return sp.false
+        others = coefficients + chosen[1:]
+        return sp.And(sp.Eq(chosen[0], 0), *[sp.Gt(c, 0) for c in others])
+
+    @cached_property
+    def omega_squared(self) -> sp.Expr | None:
+        return hopf_omega_squared(self.poly)
+
+    def formulas(self, present: bool = False) -> tuple[Formula, ...]:
+        """The conditions h_i > 0 of (4.7): see :func:`contactsym.printing.latex_output.formulas`."""
+        return tuple(Formula("hurwitz", f"h_{{{i}}}", c, "", ("4.7",)) for i, c in enumerate(self.conditions, 1))

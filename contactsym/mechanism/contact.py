@@ -1,0 +1,123 @@
+"""One compliant contact, and the contact manifold (1.1) its gap defines.
+
+A contact's gap is a coordinate that must vanish (1.1), or a gap function ``g_j(q)`` for
+Lagrangian scenes. In the fast subsystem the slow state is frozen in plain symbols
+(q(t) -> q, q'(t) -> qdot) and put on the manifold g = 0, g' = 0.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+
+import sympy as sp
+
+from ..errors import SceneError
+from ..laws import Compliance, Coulomb, Generic, Viscous
+from ..parse import sympy_only
+from ..validate import contact_fields, shorten
+from .contact_space import t
+
+__all__ = ["Contact", "contact_manifold", "plain_symbol", "solve_linear"]
+
+
+@dataclass(frozen=True)
+class Contact:
+    """One compliant contact.
+
+    Parameters
+    ----------
+    coordinate : sympy expression
+        The coordinate q_j of (1.1) that vanishes for rigid contact (a dynamicsymbol
+        among the scene's coordinates), or, for ``Scene.from_lagrangian``, a gap
+        function g_j(q) whose zero set is the contact.
+    reaction : sympy.Symbol
+        The normal reaction N_j, as it appears in the accelerations.
+    compliance : Compliance, optional
+        The law (1.5). Default: ``Generic()``, any admissible law.
+    friction : Coulomb or Viscous, optional
+        A friction law attached to this contact; its force is added to the equations.
+    unilateral : bool
+        True when the contact can only push (N >= 0) and may open; then only
+        equilibria with u_j > 0 are admissible. False (default): bilateral.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> Contact(coordinate=dynamicsymbols("y"), reaction=sp.Symbol("N"))
+    Contact(y(t), N, Generic())
+    """
+
+    coordinate: sp.Expr
+    reaction: sp.Symbol
+    compliance: Compliance | None = None
+    friction: Coulomb | Viscous | None = None
+    unilateral: bool = False
+
+    def __post_init__(self):
+        contact_fields(self.coordinate, self.compliance, self.friction, self.unilateral)
+        if self.compliance is None:
+            object.__setattr__(self, "compliance", Generic())
+        object.__setattr__(self, "coordinate", sympy_only(self.coordinate, "the gap of a contact"))
+        if not isinstance(self.reaction, sp.Symbol):
+            raise SceneError(f"the reaction of a contact must be a sympy Symbol, not {shorten(self.reaction)}.")
+
+    def __repr__(self) -> str:
+        side = ", unilateral" if self.unilateral else ""
+        return f"Contact({self.coordinate}, {self.reaction}, {self.compliance!r}{side})"
+
+
+def plain_symbol(symbol: sp.Expr, suffix: str = "") -> sp.Symbol:
+    """A plain real symbol for a frozen coordinate q(t) or its rate ('qdot', 'xdot_1': printed with a dot)."""
+    name = symbol.func.__name__ if isinstance(symbol, sp.core.function.AppliedUndef) else str(symbol)
+    base, underscore, index = name.partition("_")
+    return sp.Symbol(base + suffix + underscore + index, real=True)
+
+
+def solve_linear(equations: list[sp.Expr], candidates: list[sp.Symbol]) -> dict:
+    """Solve equations, linear in some of the candidates, uniquely for the fewest of them."""
+    equations = [e for e in (sp.expand(e) for e in equations) if e != 0]
+    for size in range(1, len(equations) + 1):
+        for chosen in itertools.combinations(candidates, size):
+            polys = [e.as_poly(*chosen) for e in equations]
+            if any(p is None or p.total_degree() > 1 for p in polys):
+                continue
+            if any(c.free_symbols & set(chosen) for p in polys for c in p.coeffs()):
+                continue
+            solutions = sp.linsolve(equations, list(chosen))
+            if not isinstance(solutions, sp.FiniteSet) or len(solutions) != 1:
+                continue
+            solution = dict(zip(chosen, next(iter(solutions))))
+            if any(v.has(*chosen) for v in solution.values()):
+                continue
+            if all(sp.expand(e.subs(solution)) == 0 for e in equations):
+                return {c: sp.cancel(v) for c, v in solution.items()}
+    return {}
+
+
+def contact_manifold(plain, frozen_symbols: dict, coordinates, gaps, at: dict) -> dict:
+    """Substitution that puts the frozen state on the contact manifold g = 0, g' = 0.
+
+    ``plain`` freezes an expression (q(t) -> q, q' -> qdot, see ``frozen_symbols``).
+    Coordinates and rates are eliminated where the gaps are linear in them; ``at``
+    (coordinates or parameters at contact) fixes the rest.
+    """
+    at = {plain(key): plain(value) for key, value in at.items()}
+    frozen_gaps = [plain(g).subs(at) for g in gaps]
+    positions = [frozen_symbols[q] for q in reversed(coordinates)]
+    at.update(solve_linear(frozen_gaps, [p for p in positions if p not in at]))
+    residual = [g for g in (sp.expand(g.subs(at)) for g in frozen_gaps) if g != 0]
+    if residual:
+        raise SceneError(
+            f"cannot place the state on the contact manifold: gaps {residual} do not vanish; "
+            "pass at={...} giving coordinates or parameters at contact."
+        )
+    rates = [plain(sp.diff(g, t)).subs(at) for g in gaps]
+    # eliminate first the rates of the coordinates whose positions the gaps fixed
+    order = sorted(reversed(coordinates), key=lambda q: frozen_symbols[q] not in at)
+    velocities = [frozen_symbols[sp.diff(q, t)] for q in order]
+    at.update(solve_linear(rates, velocities))
+    if any(sp.expand(r.subs(at)) != 0 for r in rates):
+        raise SceneError("the contact rates g_j' cannot all vanish: the contacts are redundant or inconsistent.")
+    return at

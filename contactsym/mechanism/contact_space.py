@@ -1,0 +1,224 @@
+"""Lagrangian scenes in contact space, built on ``sympy.physics.mechanics``.
+
+Lagrange's equations with the reactions as unknown loads read
+
+    M(q) q'' = F(q, q') + W N + sum_j phi_j(N_j) D_j,                       (1.4)
+
+where the columns w_j = grad g_j of W carry the normal reactions (virtual work N_j dg_j,
+the normal n_j of (1.1) in the metric of the kinetic energy) and D_j is the generalized
+direction of contact j's friction force, of magnitude -phi_j(N_j) (``mu |N_j|`` for Coulomb).
+
+The fast subsystem needs only the contact accelerations g'' = W^T q'' + h(q, q'):
+
+    f(u) = b + G u + H phi(u),   G = W^T M^-1 W,   H = W^T M^-1 D,   b = W^T M^-1 F + h,
+
+a k x k Delassus matrix G, its friction partner H and the load b (:class:`ContactSpace`).
+They are computed fraction-free: adj(M) and det(M) by the Faddeev–LeVerrier recurrence,
+which divides only by integers, so every product is reduced at once modulo
+sin^2 + cos^2 = 1 (:mod:`contactsym.canonical`) and nothing swells; one common denominator
+det(M) > 0 (M is positive definite) is kept for every entry. The full accelerations are
+built only when a stage asks for them (:attr:`ContactSpace.accelerations`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import sympy as sp
+from sympy.physics.mechanics import LagrangesMethod
+from sympy.physics.vector import Point, Vector
+
+from ..algebra.canonical_form import TrigField
+from ..algebra.fraction_free import adjugate_and_det, adjugate_and_det_in_field, solve_fraction_free, t
+from ..errors import SceneError
+
+__all__ = [
+    "ContactSpace",
+    "contact_space",
+    "lagrangian_accelerations",
+    "mass_determinant",
+    "mass_determinant_is_zero",
+    "t",
+]
+
+
+def _friction_terms(contacts, frame, coordinates) -> list[tuple[sp.Matrix, sp.Expr] | None]:
+    """(D_j, phi_j(N_j)) per contact: friction's generalized direction and signed magnitude."""
+    terms = []
+    for contact in contacts:
+        law = contact.friction
+        if law is None:
+            terms.append(None)
+            continue
+        if not isinstance(law.point, Point) or not isinstance(law.direction, Vector):
+            raise SceneError(
+                "with from_lagrangian, a friction law needs point=<the sliding Point> and "
+                "direction=<unit Vector of its sliding velocity>."
+            )
+        if frame is None:
+            raise SceneError("friction laws on points need frame=<the inertial ReferenceFrame>.")
+        slip = law.point.vel(frame).dot(law.direction)
+        # the generalized force of -m d is -m * d(slip)/dq' (the partial velocity along d)
+        direction = sp.Matrix([sp.diff(slip, sp.diff(q, t)) for q in coordinates])
+        terms.append((direction, -law.magnitude(contact.reaction, slip)))
+    return terms
+
+
+@dataclass(frozen=True, eq=False)
+class ContactSpace:
+    """Lagrange's equations (1.4) split as M q'' = F + W N + D phi(N) (see the module docstring).
+
+    Attributes
+    ----------
+    coordinates : tuple of dynamicsymbols
+    M : Matrix
+        The mass matrix.
+    F : Matrix
+        Generalized forces without the contact forces.
+    W : Matrix
+        n x k, the gap gradients w_j = grad g_j.
+    friction : tuple
+        Per contact ``(D_j, phi_j(N_j))`` or None.
+    reactions : tuple of Symbol
+    """
+
+    coordinates: tuple
+    M: sp.Matrix
+    F: sp.Matrix
+    W: sp.Matrix
+    friction: tuple
+    reactions: tuple
+
+    @cached_property
+    def forcing(self) -> sp.Matrix:
+        """F + W N + sum_j phi_j(N_j) D_j."""
+        total = self.F + self.W * sp.Matrix(self.reactions)
+        for term in self.friction:
+            if term is not None:
+                total += term[1] * term[0]
+        return total
+
+    @cached_property
+    def accelerations(self) -> list[sp.Expr]:
+        """q'' = adj(M) (F + W N + D phi) / det M, each entry in canonical form per load term."""
+        loads = [self.F] + [self.W[:, j] for j in range(self.W.cols)]
+        loads += [term[0] for term in self.friction if term is not None]
+        multipliers = [sp.S.One, *self.reactions] + [term[1] for term in self.friction if term is not None]
+        columns = solve_fraction_free(self.M, loads)
+        return [sp.Add(*[c[i] * w for c, w in zip(columns, multipliers)]) for i in range(self.M.rows)]
+
+
+def mass_determinant(M: sp.Matrix):
+    """1/det M as a :class:`~contactsym.canonical.Fraction`: det M is its denominator over
+    its (constant) numerator.
+
+    Examples
+    --------
+    >>> q, m = sp.symbols("q m", positive=True)
+    >>> monomial, rest = mass_determinant(sp.Matrix([[2*m, m*sp.cos(q)], [m*sp.cos(q), m]])).denominator_split()
+    >>> monomial, rest.as_expr()
+    (m**2, sin(q)**2 + 1)
+    """
+    field = TrigField(list(M))
+    return field.fraction(1 / adjugate_and_det_in_field(field, M)[1])
+
+
+def _check_mass_matrix(M: sp.Matrix, coordinates) -> None:
+    """A clear error for a singular mass matrix, naming the coordinates involved."""
+
+    def name(q):
+        return getattr(q.func, "__name__", str(q)) if q.args == (t,) else str(q)
+
+    zero = [name(q) for i, q in enumerate(coordinates) if M[i, i] == 0]
+    if zero:
+        raise SceneError(
+            f"the mass matrix is singular: no kinetic energy in the coordinates {zero}; "
+            "every coordinate needs inertia (give its body a mass or moment of inertia)."
+        )
+    if mass_determinant_is_zero(M):
+        involved = [name(q) for i, q in enumerate(coordinates) if any(M[i, j] != 0 for j in range(M.cols) if j != i)]
+        raise SceneError(
+            f"the mass matrix is singular (det M = 0): the coordinates {involved} are not independent; "
+            "drop one of them or add the inertia that tells them apart."
+        )
+
+
+def mass_determinant_is_zero(M: sp.Matrix) -> bool:
+    """det M = 0 identically. A nonzero value at one exact point proves det M != 0: the point
+    puts rationals (2t/(1 + t^2), (1 - t^2)/(1 + t^2)) for each angle's sine and cosine, so the
+    test is exact and costs one rational determinant; only a zero there needs the symbolic det."""
+    field = TrigField(list(M))
+    entries = [[field.element(x) for x in row] for row in M.tolist()]
+    trig = {i for pair in field.pairs for i in pair}
+    if any(not g.is_Symbol and i not in trig for i, g in enumerate(field.ring.symbols)):
+        return not adjugate_and_det(entries, field.reduce)[1]  # sqrt(m) and m are not independent
+    point = [sp.Rational(k + 2, 2 * k + 7) for k in range(field.ring.ngens)]
+    for c, s in field.pairs:
+        t = sp.Rational(c + 1, c + 5)
+        point[c], point[s] = (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
+    try:
+        values = sp.Matrix([[_evaluate(x, point) for x in row] for row in entries])
+        if values.det() != 0:
+            return False
+    except ZeroDivisionError:  # the point hit a pole of an entry: decide symbolically
+        pass
+    return not adjugate_and_det(entries, field.reduce)[1]
+
+
+def _evaluate(value, point) -> sp.Rational:
+    numer = value.numer.evaluate(list(zip(value.numer.ring.gens, point)))
+    denom = value.denom.evaluate(list(zip(value.denom.ring.gens, point)))
+    return sp.Rational(numer) / sp.Rational(denom)
+
+
+def contact_space(lagrangian, coordinates, contacts, loads=(), frame=None) -> ContactSpace:
+    """Lagrange's equations of a scene split into contact-space parts (no solve, no expand).
+
+    Parameters
+    ----------
+    lagrangian : sympy expression
+        T - V in the coordinates (dynamicsymbols) and their rates.
+    coordinates : list of dynamicsymbols
+    contacts : list of Contact
+        Each ``coordinate`` is a gap function g_j(q) (or a coordinate).
+    loads : list of (Point, Vector) or (ReferenceFrame, Vector)
+        Applied forces and torques, as in ``LagrangesMethod``'s forcelist.
+    frame : ReferenceFrame
+        The inertial frame; needed when there are loads or friction laws.
+    """
+    coordinates = list(coordinates)
+    friction = _friction_terms(contacts, frame, coordinates)
+    method = LagrangesMethod(lagrangian, coordinates, forcelist=list(loads) or None, frame=frame)
+    method.form_lagranges_equations()
+    M = method.mass_matrix
+    _check_mass_matrix(M, coordinates)
+    columns = []
+    for contact in contacts:
+        gradient = sp.Matrix([sp.diff(contact.coordinate, q) for q in coordinates])
+        if gradient.is_zero_matrix:
+            raise SceneError(f"the gap {contact.coordinate} does not depend on the coordinates {coordinates}.")
+        columns.append(gradient)
+    W = sp.Matrix.hstack(*columns)
+    reactions = tuple(c.reaction for c in contacts)
+    return ContactSpace(tuple(coordinates), M, method.forcing, W, tuple(friction), reactions)
+
+
+def lagrangian_accelerations(lagrangian, coordinates, contacts, loads=(), frame=None) -> list[sp.Expr]:
+    """Solve Lagrange's equations for the accelerations, with the reactions as unknown loads.
+
+    See :func:`contact_space` for the parameters; returns the accelerations of ``coordinates``.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> import contactsym as cs
+    >>> y = dynamicsymbols("y")
+    >>> m, g = sp.symbols("m g", positive=True)
+    >>> N = sp.Symbol("N", real=True)
+    >>> L = m*y.diff()**2/2 - m*g*y
+    >>> lagrangian_accelerations(L, [y], [cs.Contact(coordinate=y, reaction=N)])
+    [N/m - g]
+    """
+    return contact_space(lagrangian, coordinates, contacts, loads, frame).accelerations

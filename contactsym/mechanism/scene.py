@@ -1,0 +1,377 @@
+"""Scenes: a mechanical system with compliant frictional contacts, written once.
+
+A scene holds the accelerations (1.4) ``q'' = G(t, q, q', N)`` of its coordinates and
+its contacts (:mod:`contactsym.mechanism.contact`). Each contact has a gap: a coordinate that must
+vanish (1.1), or a gap function ``g_j(q)`` for Lagrangian scenes. The scene is this
+mechanical input plus a thin cache: the fast subsystem is derived from it, and every
+later stage from the stage before (``Linearization(fast, signs)``, ``Stability(lin)``,
+``Equilibria(fast)``), computed on first request and cached here.
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+
+import sympy as sp
+
+from ..algebra.basic import known_sign, present
+from ..algebra.canonical_form import present_factor
+from ..counts.regions import count_regions
+from ..errors import SignPatternError
+from ..parse import sympy_only
+from ..printing.latex_output import Formula, Numbering, _repr_latex, tex
+from ..stages import equilibria as _equilibria
+from ..stages import fast as _fast
+from ..stages import linear as _linear
+from ..stages import regularize as _regularize
+from ..stages import stability as _stability
+from ..stages.equilibria import Equilibria
+from ..stages.fast import FastSubsystem
+from ..stages.linear import Linearization
+from ..stages.regions import scene_regions
+from ..stages.regularize import ReducedSystem, Regularized
+from ..stages.stability import Stability
+from ..validate import lagrangian_parts, scene_options, scene_parts, shorten, sign_pattern
+from .checks import check_eps, check_equations, check_scene, with_friction
+from .contact import Contact, contact_manifold, plain_symbol
+from .contact_space import contact_space, mass_determinant, t
+
+__all__ = ["Contact", "Scene", "paper_equations", "plain_symbol", "t"]
+
+#: The scene's own formulas: the accelerations (1.4), for any number of contacts.
+NUMBERS = Numbering({"accelerations": (("1.4",),) * 3, "contact accelerations": (("1.4",),) * 3})
+
+#: The general theory's numbers of every stage's formulas.
+GENERAL_NUMBERS = (
+    NUMBERS | _regularize.NUMBERS | _fast.NUMBERS | _equilibria.NUMBERS | _linear.NUMBERS | _stability.NUMBERS
+)
+
+
+def paper_equations(scene, key: str, detail: str | None = None) -> tuple[tuple, str]:
+    """The paper's equation numbers and a note for a formula of ``scene`` (any object with ``k``).
+
+    The general theory's numbers (by the number of contacts k) come first, then the numbers
+    of the paper's example that the scene reproduces (its ``equations``).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> paper_equations(cs.scene("painleve-klein-guides"), "A")
+    (('4.3', '5.4'), '')
+    >>> paper_equations(cs.scene("brake"), "stable for every law")
+    (('4.4', '6.3'), 'Proposition 6; with equality allowed: erratum 12')
+    """
+    return GENERAL_NUMBERS(key, getattr(scene, "k", 2), getattr(scene, "equations", None), detail)
+
+
+class Scene:
+    """A mechanical system with k compliant contacts.
+
+    Build one with :meth:`from_accelerations` or :meth:`from_lagrangian`, or take a
+    built-in one with :func:`contactsym.mechanism.scene`. Treat a scene as immutable: each stage
+    (``fast_subsystem()``, ``linearization()``, ...) is computed on first request and cached.
+
+    Parameters
+    ----------
+    coordinates : sequence of dynamicsymbols
+        The generalized coordinates q.
+    accelerations : sequence of sympy expressions
+        q'' for each coordinate (1.4), in q, q', the reactions and parameters. Every
+        expression given to contactsym is a SymPy object or a number: text is refused
+        (:func:`contactsym.parse_expression` reads a formula with declared names).
+    contacts : sequence of Contact
+    name, description : str
+        For listings and reports.
+    parameters : sequence of Symbol, optional
+        If given, every free symbol of the accelerations must be among them (catches typos).
+    at : dict, optional
+        Coordinates or parameters at rigid contact that the gaps do not fix by themselves
+        (e.g. ``{h: l*sin(phi)}`` for the guides of §5).
+    presentation : dict, optional
+        Substitutions into the variables a reader uses (kappa, v_j, mu_pm, ...).
+    positive : tuple, optional
+        Expressions positive in the scene's domain (e.g. ``sin(alpha)`` for 0 < alpha < pi).
+    solve_for : Symbol, optional
+        The parameter that closed-form regions are solved for where possible.
+    eps : Symbol or number, optional
+        The small parameter of (1.6); a positive symbol ``epsilon`` by default.
+    equations : dict, optional
+        The paper's equation numbers of the example the scene reproduces,
+        ``{formula key: (numbers, note)}`` (a built-in scene passes its module's ``EQUATIONS``).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> import contactsym as cs
+    >>> x, y = dynamicsymbols("x y")
+    >>> N, mu, X, Y = sp.symbols("N mu X Y", real=True)
+    >>> s = cs.Scene.from_accelerations([x, y], [X - mu*sp.Abs(N), N + Y],
+    ...                                  [cs.Contact(coordinate=y, reaction=N)])
+    >>> s.fast_subsystem().f
+    Matrix([[Y + u]])
+    """
+
+    def __init__(
+        self,
+        coordinates,
+        accelerations,
+        contacts,
+        *,
+        name: str = "user",
+        parameters=None,
+        at: dict | None = None,
+        presentation: dict | None = None,
+        positive: tuple = (),
+        solve_for: sp.Symbol | None = None,
+        description: str = "",
+        eps: sp.Symbol | None = None,
+        contact_space=None,
+        equations: dict | None = None,
+    ):
+        derived = contact_space is not None
+        coordinates, accelerations, contacts = scene_parts(coordinates, accelerations, contacts, derived=derived)
+        scene_options(name, description, at, presentation, parameters, positive, solve_for)
+        self.name = name
+        self.description = description
+        self.coordinates = tuple(coordinates)
+        self.contacts = tuple(contacts)
+        #: Lagrange's equations in contact-space parts (``mechanics.ContactSpace``), or None.
+        self.contact_space = contact_space
+        if accelerations is not None:
+            self.accelerations = dict(zip(self.coordinates, (sympy_only(g, "an acceleration") for g in accelerations)))
+        self.eps = check_eps(eps)
+        self.at = {sympy_only(k, "a key of at"): sympy_only(v, "a value of at") for k, v in (at or {}).items()}
+        self.presentation = {
+            sympy_only(k, "a presentation key"): sympy_only(v, "a presentation value")
+            for k, v in (presentation or {}).items()
+        }
+        self._declared_positive = tuple(self.plain(e) for e in positive)
+        #: The paper's own equation numbers of this scene, {formula key: (numbers, note)}.
+        self.equations = check_equations(equations)
+        #: The parameter that closed-form regions are solved for, where possible.
+        self.solve_for = solve_for
+        self._stage_cache: dict = {}
+        check_scene(self, parameters)
+
+    # --- construction ------------------------------------------------------------
+
+    @classmethod
+    def from_accelerations(cls, coordinates, accelerations, contacts, **options) -> Scene:
+        """A scene from its accelerations (1.4): ``coordinates[i]'' = accelerations[i]``.
+
+        Friction may be written out with ``Abs(N)``/``sign(N)``, or attached to a
+        contact as ``Coulomb(mu, direction={coordinate: coefficient})``.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from sympy.physics.mechanics import dynamicsymbols
+        >>> import contactsym as cs
+        >>> x, y = dynamicsymbols("x y")
+        >>> N, mu = sp.symbols("N mu", real=True)
+        >>> c = cs.Contact(coordinate=y, reaction=N, friction=cs.Coulomb(mu, {x: 1}))
+        >>> cs.Scene.from_accelerations([x, y], [0, N - 1], [c]).accelerations[x]
+        -mu*Abs(N)
+        """
+        coordinates, accelerations, contacts = scene_parts(coordinates, accelerations, contacts)
+        accelerations = with_friction(coordinates, accelerations, contacts)
+        return cls(coordinates, accelerations, contacts, **options)
+
+    @classmethod
+    def from_lagrangian(cls, lagrangian, coordinates, contacts, loads=(), frame=None, **options) -> Scene:
+        """A scene from a Lagrangian, via ``sympy.physics.mechanics.LagrangesMethod``.
+
+        See :func:`contactsym.mechanism.contact_space.lagrangian_accelerations`.
+        """
+        coordinates, _, contacts = scene_parts(coordinates, None, contacts, derived=True)
+        lagrangian = sympy_only(lagrangian, "the Lagrangian")
+        lagrangian_parts(lagrangian, loads, frame)
+        space = contact_space(lagrangian, coordinates, contacts, loads, frame)
+        return cls(coordinates, None, contacts, contact_space=space, **options)
+
+    @cached_property
+    def positive_expressions(self) -> tuple:
+        """Expressions positive throughout the scene's domain: the declared ones (e.g.
+        sin(alpha), 0 < alpha < pi) and, for a Lagrangian scene, the factor of det M > 0
+        on the contact manifold that is not a monomial (when it is irreducible)."""
+        if self.contact_space is None:
+            return self._declared_positive
+        inverse = mass_determinant(self.contact_space.M.applyfunc(self.freeze))
+        monomial, rest = inverse.denominator_split()
+        sign = known_sign(monomial / inverse.numerator_expr(), self._declared_positive)
+        if sign is None or rest == 1:
+            return self._declared_positive
+        form, scale = present_factor(rest, inverse.pairs)
+        return self._declared_positive + ((1 if scale > 0 else -1) * sign * form,)
+
+    @cached_property
+    def accelerations(self) -> dict:
+        """q'' for each coordinate (1.4); for a Lagrangian scene built on first request."""
+        return dict(zip(self.coordinates, self.contact_space.accelerations))
+
+    # --- the contact manifold (1.1) ----------------------------------------------
+
+    @property
+    def k(self) -> int:
+        """Number of contacts."""
+        return len(self.contacts)
+
+    @property
+    def reactions(self) -> tuple[sp.Symbol, ...]:
+        return tuple(c.reaction for c in self.contacts)
+
+    @cached_property
+    def gaps(self) -> tuple[sp.Expr, ...]:
+        return tuple(c.coordinate for c in self.contacts)
+
+    @cached_property
+    def gap_accelerations(self) -> tuple[sp.Expr, ...]:
+        """g_j'' with the accelerations (1.4) substituted."""
+        rates = {sp.diff(q, t, 2): g for q, g in self.accelerations.items()}
+        return tuple(sp.diff(g, t, 2).subs(rates) for g in self.gaps)
+
+    @cached_property
+    def frozen_symbols(self) -> dict:
+        """Plain symbols for the slow state frozen in the fast subsystem: q(t) -> q, q' -> qdot."""
+        symbols = {sp.diff(q, t): plain_symbol(q, "dot") for q in self.coordinates}
+        symbols.update({q: plain_symbol(q) for q in self.coordinates})
+        return symbols
+
+    def plain(self, expr: sp.Expr) -> sp.Expr:
+        """``expr`` with the slow state in plain symbols: q(t) -> q, q'(t) -> qdot (see ``frozen_symbols``)."""
+        rates = {d: s for d, s in self.frozen_symbols.items() if isinstance(d, sp.Derivative)}
+        return sympy_only(expr, "the expression").subs(rates).subs(self.frozen_symbols)
+
+    @cached_property
+    def manifold(self) -> dict:
+        """Substitution that puts the frozen state on the contact manifold g = 0, g' = 0.
+
+        Coordinates and rates are eliminated where the gaps are linear in them; the
+        scene's ``at`` mapping (coordinates or parameters at contact) fixes the rest.
+        """
+        return contact_manifold(self.plain, self.frozen_symbols, self.coordinates, self.gaps, self.at)
+
+    @cached_property
+    def free_coordinates(self) -> tuple:
+        """The coordinates (dynamicsymbols) that rigid contact leaves free to move."""
+        fixed = set(self.manifold)
+        return tuple(
+            q for q in self.coordinates if self.plain(q) not in fixed and self.plain(sp.diff(q, t)) not in fixed
+        )
+
+    def freeze(self, expr: sp.Expr) -> sp.Expr:
+        """Evaluate on the contact manifold with the slow state frozen (plain symbols)."""
+        return self.plain(expr).subs(self.manifold)
+
+    # --- sign patterns ------------------------------------------------------------
+
+    @property
+    def fixed_signs(self) -> dict:
+        """Switching functions whose sign the scene fixes (unilateral contacts: u_j > 0)."""
+        return self.fast_subsystem().fixed_signs
+
+    def sign_patterns(self) -> list[tuple[int, ...]]:
+        """All admissible sign patterns of the switching functions (fixed ones kept)."""
+        return self.fast_subsystem().sign_patterns()
+
+    def check_signs(self, signs) -> tuple:
+        """Validate a sign pattern against the switching functions of the fast subsystem."""
+        switching = self.fast_subsystem().switching
+        signs = sign_pattern(signs)
+        if len(signs) != len(switching):
+            raise SignPatternError(
+                f"the sign pattern {signs} has length {len(signs)}, but scene {shorten(self.name)} has "
+                f"{len(switching)} switching functions {list(switching)}; give one sign (+1 or -1) each."
+            )
+        for value, s in zip(signs, switching):
+            if isinstance(value, bool) or value not in (1, -1):
+                raise SignPatternError(f"sign {value!r} for {s} must be +1 or -1.")
+            if self.fixed_signs.get(s, value) != value:
+                raise SignPatternError(f"{s} > 0 on the unilateral contact; its sign must be +1.")
+        return signs
+
+    # --- stages -------------------------------------------------------------------
+
+    def _stage(self, key, build):
+        if key not in self._stage_cache:
+            self._stage_cache[key] = build()
+        return self._stage_cache[key]
+
+    def regularized(self) -> Regularized:
+        """The system (1.7)/(1.9) in slow and fast variables (see :mod:`contactsym.stages.regularize`)."""
+        return self._stage("regularized", lambda: Regularized(self))
+
+    def fast_subsystem(self) -> FastSubsystem:
+        """The associated system (2.1): ``u' = Phi v + Psi f(u)``, ``v' = f(u)``."""
+        return self._stage("fast", lambda: FastSubsystem(self))
+
+    def equilibria(self, signs=None) -> Equilibria:
+        """Equilibria of the fast subsystem, one branch per sign pattern (4.2)."""
+        key = None if signs is None else self.check_signs(signs)
+        return self._stage(("equilibria", key), lambda: Equilibria(self.fast_subsystem(), key, self.stability))
+
+    def linearization(self, signs=None) -> Linearization:
+        """Jacobian A (4.3), the matrix (4.5) and the characteristic polynomial (4.6)."""
+        key = None if signs is None else self.check_signs(signs)
+        return self._stage(("linear", key), lambda: Linearization(self.fast_subsystem(), key))
+
+    def stability(self, signs=None) -> Stability:
+        """Hurwitz conditions (4.7) and the robustness classification (Props. 3-8)."""
+        key = None if signs is None else self.check_signs(signs)
+        return self._stage(("stability", key), lambda: Stability(self.linearization(key)))
+
+    def regions(self, signs=None) -> dict:
+        """Named closed-form regions: stable / unstable for every law, law-dependent, Hopf line."""
+        key = None if signs is None else self.check_signs(signs)
+        return self._stage(("regions", key), lambda: scene_regions(self, key))
+
+    def equilibrium_counts(self) -> dict:
+        """Named closed-form regions by the number of equilibria (see :mod:`contactsym.counts.regions`)."""
+        return self._stage("counts", lambda: count_regions(self))
+
+    def reduced_system(self, signs=None) -> ReducedSystem:
+        """The comparison system (2.2): slow motion with reactions from f(u*) = 0."""
+        key = None if signs is None else self.check_signs(signs)
+        return self._stage(("reduced", key), lambda: ReducedSystem(self, key))
+
+    # --- presentation -------------------------------------------------------------
+
+    @property
+    def parameters(self) -> tuple[sp.Symbol, ...]:
+        """The symbols of the fast subsystem other than u, v: loads, geometry, frozen state."""
+        return self.fast_subsystem().parameters
+
+    def present(self, expr: sp.Expr, signs=None, presentation: dict | None = None) -> sp.Expr:
+        """Rewrite in the scene's presentation variables (e.g. kappa, v_j, mu_pm).
+
+        ``signs`` gives the sign pattern of ``expr`` when it belongs to one piece, so that the
+        presentation's sign symbols (v_j = kappa s_j mu_j) take its values; ``presentation``
+        replaces the scene's own substitutions (see :func:`contactsym.algebra.basic.present`).
+        """
+        return present(expr, self.presentation if presentation is None else presentation, signs)
+
+    def formulas(self, present: bool = False) -> tuple[Formula, ...]:
+        """The accelerations (1.4) and, for gap functions, the contact accelerations g_j''."""
+
+        def row(key, lhs, rhs, detail):
+            return NUMBERS.formula(key, lhs, rhs, k=self.k, own=self.equations, detail=detail)
+
+        rows = []
+        for q in self.coordinates:
+            plain = self.plain(q)
+            rows.append(
+                row("accelerations", r"\ddot{" + tex(plain) + "}", self.plain(self.accelerations[q]), str(plain))
+            )
+        if all(gap in self.coordinates for gap in self.gaps):
+            return tuple(rows)  # the contact accelerations are among the accelerations above
+        for j, g in enumerate(self.gap_accelerations, 1):
+            lhs = r"\ddot{q}" + (f"_{{{j}}}" if self.k > 1 else "")
+            rows.append(row("contact accelerations", lhs, sp.expand(self.freeze(g)), str(j)))
+        return tuple(rows)
+
+    def __repr__(self) -> str:
+        return f"<Scene '{self.name}': {len(self.coordinates)} coordinates, k = {self.k} contacts>"
+
+    def _repr_latex_(self) -> str:
+        return _repr_latex(self)

@@ -1,0 +1,17 @@
+"""The printer: LaTeX through SymPy's printer and the :class:`Formula` rows the stages print as,
+and plain text with Unicode mathematics as LaTeX. Imports no stage.
+"""
+
+from .latex_output import Formula, Numbering, formulas, latex, prime, signs_latex, tex
+from .unicode_math import text_to_latex
+
+__all__ = [
+    "Formula",
+    "Numbering",
+    "formulas",
+    "latex",
+    "prime",
+    "signs_latex",
+    "tex",
+    "text_to_latex",
+]

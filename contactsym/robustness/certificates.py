@@ -1,0 +1,377 @@
+"""Certificates and witness-law searches for :mod:`contactsym.robustness.classify` (proofs P3-P8 there).
+
+Polynomials are ``QQ[c1..ck, d1..dk]`` ring elements from
+:class:`contactsym.robustness.law_polynomials.LawPolynomials`; every certificate found in floating
+point (a linear program) is re-checked in rationals before it is returned.
+
+Examples
+--------
+>>> from contactsym.robustness.law_polynomials import law_ring
+>>> R, (c1, c2, d1, d2) = law_ring(2)
+>>> amgm_certificate(c1**2 - c1*c2 + c2**2)
+'amgm'
+>>> amgm_certificate(c1**2 - 3*c1*c2 + c2**2) is None
+True
+"""
+
+from __future__ import annotations
+
+import itertools
+from fractions import Fraction
+from functools import cache
+from math import isqrt
+
+import numpy as np
+import sympy as sp
+from scipy.optimize import linprog, minimize
+from scipy.spatial import ConvexHull, QhullError
+from sympy.polys.domains import QQ, ZZ
+from sympy.polys.matrices import DomainMatrix
+from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
+from sympy.polys.rings import ring
+
+from .law_polynomials import _evaluate_terms, _generic_conditions, fast_spectral_abscissa
+
+__all__ = [
+    "amgm_certificate",
+    "climbed_laws",
+    "fisher_fuller_laws",
+    "sampled_laws",
+    "weak_damping_laws",
+    "generic_vertex_coefficients",
+    "positivstellensatz_certificate",
+    "damped_positivstellensatz_certificate",
+    "rational_law",
+    "vertex_laws",
+]
+
+
+def rational_law(c, d, digits: int = 4) -> tuple[list, list]:
+    """A float law rounded to ``digits`` significant decimal digits, as exact rationals."""
+    return [QQ.convert(Fraction(f"{x:.{digits}g}")) for x in c], [QQ.convert(Fraction(f"{x:.{digits}g}")) for x in d]
+
+
+# --- (P4) AM-GM -----------------------------------------------------------------------------
+
+
+def _sqrt_lower_bound(x) -> Fraction:
+    """A rational r <= sqrt(x), exact when x is the square of a rational."""
+    x = Fraction(int(QQ.numer(x)), int(QQ.denom(x))) if not isinstance(x, Fraction) else x
+    n, d = x.numerator, x.denominator
+    rn, rd = isqrt(n), isqrt(d)
+    if rn * rn == n and rd * rd == d:
+        return Fraction(rn, rd)
+    scale = 10**30
+    return Fraction(isqrt(n * d * scale * scale), d * scale)
+
+
+def amgm_certificate(g) -> str | None:
+    """``"coefficients"`` if g has nonnegative coefficients (one positive), ``"amgm"`` if each
+    negative term is absorbed by midpoint AM-GM pairs of positive terms (shares split evenly
+    among the pairs a positive term is in), else None. Either way g > 0 on the open orthant."""
+    positive = {e: v for e, v in g.items() if v > 0}
+    negative = {e: -v for e, v in g.items() if v < 0}
+    if not positive:
+        return None
+    if not negative:
+        return "coefficients"
+    pairs = {b: [] for b in negative}
+    for b in negative:
+        for a1 in positive:
+            a2 = tuple(2 * x - y for x, y in zip(b, a1))
+            if a2 in positive and a1 < a2:
+                pairs[b].append((a1, a2))
+    uses = {a: 0 for a in positive}
+    for found in pairs.values():
+        for a1, a2 in found:
+            uses[a1] += 1
+            uses[a2] += 1
+    for b, need in negative.items():
+        have = sum(2 * _sqrt_lower_bound(positive[a1] * positive[a2] / (uses[a1] * uses[a2])) for a1, a2 in pairs[b])
+        if have < Fraction(int(QQ.numer(need)), int(QQ.denom(need))):
+            return None
+    return "amgm"
+
+
+# --- witness searches (P6, P7, sampling) ---------------------------------------------
+
+
+def fisher_fuller_laws(order, k) -> list[tuple[list, list]]:
+    """(P6) laws (c, d) = (diag C, diag C), C = diag(delta^r) along the nested sequence ``order``."""
+    laws = []
+    for delta in (sp.Rational(1, 2), sp.Rational(1, 10), sp.Rational(1, 100), sp.Rational(1, 10**4)):
+        c = [None] * k
+        for r, j in enumerate(order):
+            c[j] = delta**r
+        laws.append((c, list(c)))
+    return laws
+
+
+def sampled_laws(Af: np.ndarray, count: int, seed: int) -> tuple[list, list]:
+    """(stable-looking, unstable-looking) rational laws from log-uniform samples, best first."""
+    k = Af.shape[0]
+    rng = np.random.default_rng(seed)
+    c = 10.0 ** rng.uniform(-3, 3, (count, k))
+    d = 10.0 ** rng.uniform(-3, 3, (count, k))
+    top = fast_spectral_abscissa(Af, c, d)
+    order = np.argsort(top)
+    stable = [rational_law(c[i], d[i]) for i in order[:8] if top[i] < 0]
+    unstable = [rational_law(c[i], d[i]) for i in order[::-1][:8] if top[i] > 0]
+    return stable, unstable
+
+
+def _normalized(c: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(c / t^2, d / t) with t = max(sqrt(c), d) per law: (c, d) -> (t^2 c, t d) scales every
+    eigenvalue of (4.5) by t, so this keeps stability and makes abscissae comparable."""
+    t = np.maximum(np.sqrt(c).max(axis=1), d.max(axis=1))[:, None]
+    return c / t**2, d / t
+
+
+def weak_damping_laws(Af: np.ndarray, seed: int, count: int = 400) -> list:
+    """Unstable laws with small damping. Left-multiplying lam^2 x + (lam D + C) A x = 0 by the left
+    eigenvector y of CA (CA x = mu x) gives lam^2 + mu s lam + mu = 0 to first order in D, with
+    s = sum_j (d_j / c_j) y_j x_j / (y.x): a non-real mu, or a real mu > 0 with some
+    y_j x_j / (y.x) < 0 (then d concentrated on j makes s < 0), has Re lam > 0 for small D."""
+    k = Af.shape[0]
+    rng = np.random.default_rng(seed + 2)
+    stiffness = np.vstack([np.ones(k), 10.0 ** rng.uniform(-3, 3, (count, k))])
+    mu, X = np.linalg.eig(stiffness[:, :, None] * Af[None])
+    laws = []
+    for c, values, vectors in zip(stiffness, mu, X):
+        if np.abs(values.imag).max() > 1e-6 * np.abs(values).max():
+            laws.append(rational_law(c, 1e-4 * c))
+        elif abs(np.linalg.det(vectors)) > 1e-12:
+            weights = (np.linalg.inv(vectors).T * vectors).real  # column i: y_i x_i with y_i . x_i = 1
+            i, j = np.unravel_index(np.argmin(weights.T), weights.T.shape)
+            if weights[j, i] < -1e-9:
+                d = 1e-6 * abs(weights[j, i]) * c
+                d[j] = 1e-3 * c[j]
+                laws.append(rational_law(c, d))
+        if len(laws) >= 8:
+            break
+    return laws
+
+
+def climbed_laws(Af: np.ndarray, sign: float, seed: int, starts: int = 3) -> list:
+    """Rational laws found by Nelder-Mead on log(c, d) maximising sign * (normalized abscissa), from
+    the best of wide log-uniform samples (1e-6..1e6): the rare unstable (stable) laws sampling misses."""
+    k = Af.shape[0]
+    rng = np.random.default_rng(seed + 1)
+    x = rng.uniform(-6, 6, (4000, 2 * k))
+
+    def abscissa(y):
+        return fast_spectral_abscissa(Af, *_normalized(10.0 ** y[:, :k], 10.0 ** y[:, k:]))
+
+    top = sign * abscissa(x)
+    found = []
+    for start in x[np.argsort(-top)[:starts]]:
+        best = minimize(
+            lambda y: -sign * abscissa(np.clip(y, -8, 8)[None])[0],
+            start,
+            method="Nelder-Mead",
+            options={"maxfev": 300, "xatol": 1e-3},
+        )
+        if -best.fun > 0:
+            c, d = _normalized(10.0 ** np.clip(best.x[None, :k], -8, 8), 10.0 ** np.clip(best.x[None, k:], -8, 8))
+            found.append(rational_law(c[0], d[0]))
+    return found
+
+
+# --- (P3) vertex laws ----------------------------------------------------------------------
+
+
+def _vertex_direction(b, others) -> np.ndarray | None:
+    """An integer w with w.(b - a) >= 1 for every a in others, or None if b is not a vertex."""
+    if not others:
+        return None
+    differences = np.array([np.subtract(b, a) for a in others], dtype=float)
+    n = differences.shape[1]
+    result = linprog(np.zeros(n), A_ub=-differences, b_ub=-np.ones(len(others)), bounds=[(-20, 20)] * n, method="highs")
+    if result.status != 0:
+        return None
+    w = np.round(4 * result.x).astype(int)
+    return w if (differences @ w >= 1).all() else None
+
+
+@cache
+def generic_vertex_coefficients(k: int) -> tuple[tuple[tuple[int, ...], sp.Expr], ...]:
+    """(subset S, coefficient) pairs: the coefficients, as polynomials in symbols m_S for the
+    principal minors det(A_S), at the vertices of the Newton polytopes of the Hurwitz minors
+    among the Liénard–Chipart conditions of the generic A (P3). A negative value at some A gives an
+    unstable law: the vertex of the generic support is a vertex of any support inside it."""
+    subsets = [S for r in range(1, k + 1) for S in itertools.combinations(range(k), r)]
+    m = {S: sp.Symbol("m_" + "_".join(str(j + 1) for j in S)) for S in subsets}
+    names = [f"c{j}" for j in range(1, k + 1)] + [f"d{j}" for j in range(1, k + 1)]
+    R, *gens = ring(",".join(names), ZZ[tuple(m.values())])
+    c, d = gens[:k], gens[k:]
+    p = [R(0)] * (2 * k + 1)
+    p[2 * k] = R(1)
+    for S in subsets:
+        for size in range(len(S) + 1):
+            for T in itertools.combinations(S, size):
+                term = R(R.domain.convert(m[S]))
+                for j in S:
+                    term *= d[j] if j in T else c[j]
+                p[2 * k - 2 * len(S) + size] += term
+    labels, conditions = _generic_conditions(k)
+    found = []
+    for (kind, _), terms in zip(labels, conditions):
+        if kind != "Delta":
+            continue
+        g = _evaluate_terms(terms, p[::-1][1:], R(1))
+        for b in _vertices(list(g)):
+            found.append((b, R.domain.to_sympy(g[b])))
+    return tuple(found)
+
+
+def _vertices(points: list) -> list:
+    """The vertices of the convex hull of integer points: qhull in their affine hull, each
+    vertex then confirmed by an exact integer direction (P3)."""
+    X = np.array(points, dtype=float)
+    centred = X - X.mean(axis=0)
+    _, singular, basis = np.linalg.svd(centred, full_matrices=False)
+    rank = int((singular > 1e-9 * max(1.0, singular.max())).sum())
+    try:
+        candidates = ConvexHull(centred @ basis[:rank].T).vertices if rank >= 2 else range(len(points))
+    except QhullError:
+        candidates = range(len(points))
+    return [
+        points[i] for i in candidates if _vertex_direction(points[i], [a for a in points if a != points[i]]) is not None
+    ]
+
+
+def vertex_laws(lp, conditions, per_condition: int = 2, tries: int = 12) -> list[tuple[list, list]]:
+    """Laws t^w on which a negative vertex coefficient of a condition dominates (P3); at most
+    ``tries`` negative terms per condition, largest first."""
+    laws = []
+    for g in conditions:
+        if g is None:
+            continue
+        negative = sorted((e for e, v in g.items() if v < 0), key=lambda e: g[e])[:tries]
+        found = 0
+        for b in negative:
+            w = _vertex_direction(b, [a for a in g if a != b])
+            if w is None:
+                continue
+            for t in (2, 4, 16, 256, 2**16):
+                point = [QQ(t) ** int(x) if x >= 0 else QQ(1, t ** int(-x)) for x in w]
+                if g(*point) < 0:
+                    laws.append((point[: lp.k], point[lp.k :]))
+                    found += 1
+                    break
+            if found >= per_condition:
+                break
+    return laws
+
+
+# --- (P5) Positivstellensatz linear program -------------------------------------------------
+
+
+def _multipliers(gens, degree: int) -> list:
+    one = gens[0].ring(1)
+    found = [one]
+    for r in range(1, degree + 1):
+        found += [np.prod(m) for m in itertools.combinations_with_replacement(gens, r)]
+    return found
+
+
+def positivstellensatz_certificate(lp, conditions, degrees: tuple | None = None) -> str | None:
+    """(P5): monomial multipliers s_i >= 0 with every coefficient of sum s_i g_i <= 0, checked exactly;
+    multipliers of degree ``degrees[0]``, then ``degrees[1]``, ..."""
+    for degree in degrees or ((2, 3) if lp.k <= 3 else (1, 2)):
+        statement = _positivstellensatz(lp, conditions, degree)
+        if statement:
+            return statement
+    return None
+
+
+def _positivstellensatz(lp, conditions, degree: int) -> str | None:
+    known = [g for g in conditions if g is not None]
+    gens = list(lp.c) + list(lp.d)
+    products = [g * mu for g in known for mu in _multipliers(gens, degree)]
+    monomials = sorted({e for q in products for e in q})
+    row = {e: i for i, e in enumerate(monomials)}
+    matrix = np.zeros((len(monomials), len(products)))
+    for j, q in enumerate(products):
+        for e, v in q.items():
+            matrix[row[e], j] = float(v)
+    scale = np.maximum(np.abs(matrix).max(axis=0), 1e-300)
+    matrix /= scale  # columns of comparable size
+    for margin in (1e-7, 0.0):  # a margin keeps the rounded multipliers on the right side
+        statement = _solve_and_check(lp, matrix, scale, products, monomials, margin, degree)
+        if statement:
+            return statement
+    return None
+
+
+def _exact_weights(matrix, scale, products, monomials, x) -> list | None:
+    """Rational multipliers near the float solution x that keep its tight rows exactly at 0.
+
+    The rows x makes (nearly) 0, and sum s = 1, form a linear system K s = r; the rounded x is
+    projected onto it in rationals, s = x + K^T (K K^T)^-1 (r - K x), K reduced to independent
+    rows. The caller re-checks every coefficient exactly."""
+    support = [j for j, value in enumerate(x) if value > 1e-12]
+    if not support:
+        return None
+    values = matrix[:, support] @ x[support]
+    touched = np.abs(matrix[:, support]).max(axis=1) > 0
+    tight = [monomials[i] for i in np.nonzero(touched & (np.abs(values) <= 1e-9))[0]]
+    rows = [[products[j].get(e, QQ(0)) for j in support] for e in tight] + [[QQ(1)] * len(support)]
+    _, independent = DomainMatrix(rows, (len(rows), len(support)), QQ).transpose().rref()
+    K = DomainMatrix([rows[i] for i in independent], (len(independent), len(support)), QQ)
+    target = DomainMatrix([[QQ(int(i == len(rows) - 1))] for i in independent], (len(independent), 1), QQ)
+    rounded = [QQ.convert(Fraction(x[j] / scale[j]).limit_denominator(10**15)) for j in support]
+    start = DomainMatrix([[w] for w in rounded], (len(support), 1), QQ)
+    try:
+        y = (K * K.transpose()).lu_solve(target - K * start)
+    except (ValueError, ZeroDivisionError, DMNonInvertibleMatrixError):
+        return None
+    exact = (start + K.transpose() * y).to_Matrix()
+    if any(w < 0 for w in exact):
+        return None
+    weights = [QQ(0)] * len(products)
+    for position, j in enumerate(support):
+        weights[j] = QQ.convert(exact[position])
+    return weights
+
+
+def _solve_and_check(lp, matrix, scale, products, monomials, margin, degree) -> str | None:
+    result = linprog(
+        matrix.sum(axis=0),
+        A_ub=matrix,
+        b_ub=-margin * np.ones(matrix.shape[0]),
+        A_eq=np.ones((1, len(products))),
+        b_eq=[1.0],
+        bounds=(0, None),
+        method="highs",
+    )
+    if result.status != 0:
+        return None
+    weights = _exact_weights(matrix, scale, products, monomials, result.x)
+    if weights is None:
+        return None
+    total = lp.ring(0)
+    used = 0
+    for w, q in zip(weights, products):
+        if w:
+            total += q * w
+            used += 1
+    if used == 0 or any(v > 0 for v in total.values()):
+        return None
+    return f"a combination of {used} Liénard–Chipart conditions times monomials of degree <= {degree} has every coefficient <= 0"
+
+
+def damped_positivstellensatz_certificate(lp, conditions, degree: int = 4) -> str | None:
+    """(P8): P5 on the other conditions after d_i = u + sum_(j != i) (-a_jj / a_ii) d_j, when a_ii > 0 is the
+    only positive diagonal entry: u > 0 exactly when p_(2k-1) = sum a_jj d_j > 0 (u reuses the generator d_i)."""
+    diagonal = [lp.minors[(j,)] for j in range(lp.k)]
+    positive = [j for j, a in enumerate(diagonal) if a > 0]
+    if len(positive) != 1:
+        return None
+    i = positive[0]
+    d_i = lp.d[i] + sum((-diagonal[j] / diagonal[i]) * lp.d[j] for j in range(lp.k) if j != i)
+    substituted = [g.compose(lp.d[i], d_i) for g in conditions if g is not None]
+    statement = positivstellensatz_certificate(lp, substituted, degrees=(degree,))
+    if statement is None:
+        return None
+    return f"with d_{i + 1} = u + sum_j (-a_jj / a_{i + 1}{i + 1}) d_j (u > 0 exactly when p_{2 * lp.k - 1} > 0): {statement}"

@@ -1,0 +1,202 @@
+"""Equilibria (u*, 0) of the fast subsystem: f(u*) = 0 (3.1), (4.2).
+
+f is smooth on each piece of a sign pattern; a root of that piece is an equilibrium
+when it lies in the piece: s_i sigma_i(u*) > 0 for every switching function sigma_i.
+
+Lift-off (:class:`LiftOff`). A unilateral contact j only pushes; with its gap open the
+law gives N_j = 0 identically, so (2.1) reads u_j = 0, v_j' = f_j(u). The reactions rest
+(u_j = 0 and the closed contacts' f_i = 0) while the gap accelerates open, f_j(u*) > 0:
+v_j grows, q_j = eps^2 Q_j becomes positive and the contact leaves the fast scale, which
+is the rigid motion with the contact released. That state persists (is stable) when
+the opening is strict and the closed contacts' fast subsystem, with the open u_j frozen
+at 0, is asymptotically stable: its linearization is (4.5) with the principal submatrix
+A_S of the closed contacts S, so its Hurwitz conditions are those of charpoly(A_S).
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import cached_property
+
+import sympy as sp
+
+from ..algebra.basic import normalize
+from ..algebra.hurwitz import Hurwitz
+from ..printing.latex_output import Formula, Numbering, _repr_latex, signs_latex, tex
+from .fast import solve_piece
+from .linear import Linearization, charpoly
+from .stability import Stability
+
+__all__ = ["Branch", "Equilibria", "LiftOff"]
+
+#: The general theory's number of an equilibrium: (3.2) for k = 1, (4.2) beyond.
+NUMBERS = Numbering({"equilibrium": (("3.2",), ("4.2",), ("4.2",))})
+
+
+@dataclass(frozen=True)
+class Branch:
+    """One equilibrium: its sign pattern, the reactions u* and where it exists.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> cs.scene("sliding-point").equilibria().branches[0].u_star
+    (-Y(x, xdot),)
+    """
+
+    signs: tuple
+    u_star: tuple
+    condition: sp.Basic
+
+    def formulas(self, present: bool = False, own: dict | None = None) -> tuple[Formula, ...]:
+        """u* (3.2)/(4.2) and, on a sign pattern, where it exists; ``own``: the scene's paper numbers."""
+        k = len(self.u_star)
+        rows = []
+        for j, value in enumerate(self.u_star, 1):
+            lhs = "u^{*}" if k == 1 else f"u_{{{j}}}^{{*}}"
+            rows.append(NUMBERS.formula("equilibrium", lhs, value, k=k, own=own))
+        if self.signs:
+            where = r"\text{where } s = " + signs_latex(self.signs) + r":\ "
+            rows.append(Formula("existence", "", where + tex(self.condition), ""))
+        return tuple(rows)
+
+    def _repr_latex_(self) -> str:
+        return _repr_latex(self)
+
+
+@dataclass(frozen=True)
+class LiftOff:
+    """An equilibrium at which the unilateral contacts ``open`` lift off (u_j = 0, f_j > 0).
+
+    Attributes
+    ----------
+    open : tuple of int
+        Indices (from 0) of the contacts that lift off.
+    signs : tuple
+        The sign pattern of the piece (the open contacts' switching functions are 0 there).
+    u_star : tuple
+        The reactions, 0 at the open contacts.
+    condition : sympy Boolean
+        Where it exists: inside its piece, the closed unilateral contacts pushing, and
+        every open gap accelerating open.
+    stable : sympy Boolean
+        The Hurwitz conditions of the closed contacts' (4.5), all positive (True when all open).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> (lift,) = cs.scene("painleve-rod").equilibria().lift_offs
+    >>> lift.u_star, lift.stable
+    ((0,), True)
+    >>> lift.condition
+    -g + l*thetadot**2*sin(theta) > 0
+    """
+
+    open: tuple
+    signs: tuple
+    u_star: tuple
+    condition: sp.Basic
+    stable: sp.Basic
+
+
+def _lift_offs(fast, patterns, stability_of) -> list[LiftOff]:
+    u = fast.u
+    unilateral = [j for j, pushes_only in enumerate(fast.unilateral) if pushes_only]
+    found = []
+    for size in range(1, len(unilateral) + 1):
+        for opened in itertools.combinations(unilateral, size):
+            closed = [i for i in range(fast.k) if i not in opened]
+            at_zero = {u[j]: 0 for j in opened}
+            for pattern in patterns:
+                f = fast.piece(pattern).subs(at_zero)
+                rest = sp.Matrix([f[i] for i in closed])
+                roots = solve_piece(rest, tuple(u[i] for i in closed), pattern) if closed else [()]
+                for root in roots:
+                    at = {**at_zero, **dict(zip((u[i] for i in closed), root))}
+                    inside = [sp.Gt(sp.cancel(s * sw.subs(at)), 0) for s, sw in zip(pattern, fast.switching)]
+                    inside = [c for c, sw in zip(inside, fast.switching) if not sw.has(*at_zero)]
+                    pushing = [sp.Gt(at[u[i]], 0) for i in closed if i in unilateral]
+                    opening = [sp.Gt(normalize(f[j].subs(at)), 0) for j in opened]
+                    lin = stability_of(pattern).linearization
+                    A = lin.A.extract(closed, closed)
+                    poly = charpoly(A, [lin.Phi[i] for i in closed], [lin.Psi[i] for i in closed])
+                    stable = sp.And(*[sp.Gt(c, 0) for c in Hurwitz(poly).conditions]) if closed else sp.true
+                    u_star = tuple(at[x] for x in u)
+                    found.append(LiftOff(opened, pattern, u_star, sp.And(*inside, *pushing, *opening), stable))
+    return found
+
+
+@dataclass(frozen=True, eq=False)
+class Equilibria:
+    """All equilibrium branches, one or more per admissible sign pattern.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> eq = cs.scene("painleve-klein-rod").equilibria()
+    >>> len(eq.branches)
+    4
+
+    ``stability_of(signs)`` gives the Stability of a sign pattern (the scene passes its
+    cached one); by default it is built here from the fast subsystem.
+    """
+
+    fast: object
+    signs: tuple | None = None
+    stability_of: Callable | None = None
+
+    def _stability(self, signs) -> Stability:
+        if self.stability_of is not None:
+            return self.stability_of(signs)
+        return Stability(Linearization(self.fast, signs))
+
+    @cached_property
+    def patterns(self) -> list[tuple]:
+        return [self.signs] if self.signs is not None else self.fast.sign_patterns()
+
+    @cached_property
+    def branches(self) -> tuple[Branch, ...]:
+        fast = self.fast
+        branches = []
+        for pattern in self.patterns:
+            for root in fast.roots(pattern):
+                at = dict(zip(fast.u, root))
+                inside = [sp.Gt(sp.cancel(s * sw.subs(at)), 0) for s, sw in zip(pattern, fast.switching)]
+                branches.append(Branch(pattern, root, sp.And(*inside)))
+        return tuple(branches)
+
+    @cached_property
+    def lift_offs(self) -> tuple[LiftOff, ...]:
+        """Equilibria with some unilateral contacts open (see the module docstring)."""
+        return tuple(_lift_offs(self.fast, self.patterns, self._stability))
+
+    def stable(self, equilibrium) -> sp.Basic:
+        """Where an equilibrium (a Branch or a LiftOff) is asymptotically stable for the scene's laws.
+
+        Examples
+        --------
+        >>> import contactsym as cs
+        >>> eq = cs.scene("painleve-rod").equilibria()
+        >>> len(sp.And.make_args(eq.stable(eq.branches[0])))  # the two Hurwitz conditions of k = 1
+        2
+        >>> eq.stable(eq.lift_offs[0])
+        True
+        """
+        if isinstance(equilibrium, LiftOff):
+            return equilibrium.stable
+        return sp.And(*[sp.Gt(h, 0) for h in self._stability(equilibrium.signs).hurwitz])
+
+    def __iter__(self):
+        return iter(self.branches)
+
+    def __len__(self) -> int:
+        return len(self.branches)
+
+    def formulas(self, present: bool = False) -> tuple[Formula, ...]:
+        """Every branch's u* and where it exists: see :func:`contactsym.printing.latex_output.formulas`."""
+        return tuple(row for branch in self.branches for row in branch.formulas(own=self.fast.paper_equations))
+
+    def _repr_latex_(self) -> str:
+        return _repr_latex(self)

@@ -1,0 +1,188 @@
+"""Linearization of the fast subsystem at an equilibrium (u*, 0): (4.3), (4.5), (4.6).
+
+For any compliance law the Jacobian of (4.1) at (u*, 0) is ``[[Psi A, Phi], [A, 0]]``
+(terms with dPhi/du multiply v = 0, terms with dPsi/du multiply f = 0). Its
+characteristic polynomial needs only the principal minors of A:
+
+    det(lam^2 I - (lam Psi + Phi) A)
+        = sum_S (-1)^|S| lam^(2(k - |S|)) det(A_S) prod_{j in S} (lam Psi_j + Phi_j).
+"""
+
+from __future__ import annotations
+
+import itertools
+import logging
+from dataclasses import dataclass
+from functools import cached_property
+
+import sympy as sp
+
+from ..algebra.basic import normalize, sign_symbols
+from ..algebra.canonical_form import to_fraction
+from ..errors import ContactsymError
+from ..printing.latex_output import Formula, Numbering, _repr_latex
+
+__all__ = ["lam", "charpoly", "principal_minors", "Linearization"]
+
+#: The general theory's numbers: A is (3.2) for k = 1 and (4.3) beyond; (4.5) and (4.6) for k >= 2.
+NUMBERS = Numbering(
+    {
+        "A": (("3.2",), ("4.3",), ("4.3",)),
+        "matrix": ((), ("4.5",), ("4.5",)),
+        "charpoly": ((), ("4.6",), ("4.6",)),
+    }
+)
+
+
+log = logging.getLogger("contactsym")
+
+#: The eigenvalue variable of characteristic polynomials.
+lam = sp.Symbol("lambda")
+
+
+def principal_minors(A: sp.Matrix) -> dict[tuple[int, ...], sp.Expr]:
+    """det(A_S) for every subset S of the indices (the empty set gives 1)."""
+    k = A.rows
+    minors = {(): sp.S.One}
+    for size in range(1, k + 1):
+        for S in itertools.combinations(range(k), size):
+            minors[S] = A.extract(list(S), list(S)).det(method="berkowitz")
+    return minors
+
+
+def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
+    """The characteristic polynomial of (4.5) from the principal minors of A.
+
+    When the common denominator of its coefficients is not a monomial but has a known sign
+    (``positive`` lists expressions known to be positive, e.g. det M of a Lagrangian
+    scene), the polynomial is multiplied by it: the same roots, polynomial coefficients.
+
+    Examples
+    --------
+    >>> a, Phi, Psi = sp.symbols("a Phi Psi")
+    >>> charpoly(sp.Matrix([[a]]), [Phi], [Psi]).as_expr()
+    -Phi*a - Psi*a*lambda + lambda**2
+    """
+    k = A.rows
+    total = sp.S.Zero
+    for S, minor in principal_minors(A).items():
+        factor = sp.Mul(*[lam * Psi[j] + Phi[j] for j in S])
+        total += (-1) ** len(S) * lam ** (2 * (k - len(S))) * minor * factor
+    fraction = to_fraction(total)
+    if fraction.denominator_split()[1] != 1:
+        sign = fraction.denominator_sign(positive)
+        if sign is not None:
+            return sp.Poly(sign * fraction.numerator_expr(), lam)
+    return sp.Poly(fraction.as_expr(), lam)
+
+
+@dataclass(frozen=True, eq=False)
+class Linearization:
+    """The linearized fast subsystem on one sign pattern.
+
+    With ``signs=None`` each open switching function gets a sign symbol s_i
+    (``SignSymbol``, valued +1 or -1), so one object covers every pattern, as the
+    paper's (5.4) does with s_j = sign N_j.
+
+    Attributes
+    ----------
+    A : Matrix
+        (4.3) ``df_i/du_j``; for nonlinear f it depends on u = u*, the equilibrium.
+    Phi, Psi : tuple
+        The law's values at the equilibrium: v = 0 and, for a law that depends on u and
+        a piece with one equilibrium, u = u*.
+    matrix : Matrix
+        (4.5) ``[[Psi A, Phi], [A, 0]]``.
+    charpoly : Poly
+        (4.6) in ``contactsym.lam``.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> lin = cs.scene("brake").linearization()
+    >>> lin.A[0, 1]
+    mu*sin(alpha)/m - cos(alpha)/m
+    >>> lin.det_A
+    mu**2*sin(alpha)**2/m**2 + sin(alpha)**2/m**2
+    """
+
+    fast: object
+    signs: tuple | None = None
+
+    @property
+    def scene(self):
+        """The scene of the fast subsystem, for callers that need its mechanics (no stage does)."""
+        return self.fast.scene
+
+    @cached_property
+    def sign_values(self) -> tuple:
+        """The signs used: the given pattern, or fixed values and symbols s_i."""
+        if self.signs is not None:
+            return self.signs
+        switching = self.fast.switching
+        symbols = sign_symbols(len(switching))
+        return tuple(self.fast.fixed_signs.get(sw, s) for sw, s in zip(switching, symbols))
+
+    @cached_property
+    def f(self) -> sp.Matrix:
+        """f on this piece (Abs/sign replaced by the signs)."""
+        return self.fast.piece(self.sign_values)
+
+    @cached_property
+    def A(self) -> sp.Matrix:
+        return self.fast.jacobian(self.sign_values).applyfunc(normalize)
+
+    @cached_property
+    def det_A(self) -> sp.Expr:
+        return normalize(self.A.det(method="berkowitz"))
+
+    @cached_property
+    def u_star(self) -> dict:
+        """{u_j: u_j*} when this piece has exactly one equilibrium, else {} (Phi, Psi stay in u)."""
+        if self.fast.constant_laws:
+            return {}
+        try:
+            roots = self.fast.roots(tuple(self.sign_values))
+        except ContactsymError:
+            return {}
+        return dict(zip(self.fast.u, roots[0])) if len(roots) == 1 else {}
+
+    def _at_equilibrium(self, values) -> tuple:
+        """The law's values at the equilibrium: v = 0 and, for a law that depends on u, u = u*."""
+        at = {**dict.fromkeys(self.fast.v, 0), **self.u_star}
+        return tuple(sp.sympify(x).subs(at) for x in values)
+
+    @cached_property
+    def Phi(self) -> tuple:
+        return self._at_equilibrium(self.fast.Phi)
+
+    @cached_property
+    def Psi(self) -> tuple:
+        return self._at_equilibrium(self.fast.Psi)
+
+    @cached_property
+    def matrix(self) -> sp.Matrix:
+        Psi, Phi = sp.diag(*self.Psi), sp.diag(*self.Phi)
+        return sp.BlockMatrix([[Psi * self.A, Phi], [self.A, sp.zeros(self.A.rows)]]).as_explicit()
+
+    @cached_property
+    def charpoly(self) -> sp.Poly:
+        log.info("scene '%s': characteristic polynomial (4.6) from %d principal minors", self.fast.name, 2**self.A.rows)
+        return charpoly(self.A, self.Phi, self.Psi, self.fast.positive)
+
+    def formulas(self, present: bool = False) -> tuple[Formula, ...]:
+        """A (4.3), det A, the matrix (4.5) and p(lambda) (4.6); ``present``: in the presentation variables."""
+        show = self.fast.present if present else (lambda expr: expr)
+
+        def row(key, lhs, rhs):
+            return NUMBERS.formula(key, lhs, show(rhs), k=self.A.rows, own=self.fast.paper_equations)
+
+        return (
+            row("A", "A", self.A),
+            row("det A", r"\det A", self.det_A),
+            row("matrix", "J", self.matrix),
+            row("charpoly", r"p(\lambda)", self.charpoly.as_expr()),
+        )
+
+    def _repr_latex_(self) -> str:
+        return _repr_latex(self)

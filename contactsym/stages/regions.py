@@ -1,0 +1,203 @@
+"""Closed-form regions: the raw Hurwitz/proposition conditions as inequalities a reader writes.
+
+``closed_form`` reduces each relational ``P op 0`` exactly:
+
+1. present it in the scene's variables (kappa, v_j, mu_pm, ...);
+2. clear the denominator (its sign must be known) and factor the numerator;
+3. drop constant factors, factors of known sign (masses, squares of nonzero symbols,
+   Phi < 0, Psi < 0, sines the scene declares positive) flipping the relation for
+   negative ones; in ``P > 0`` an even power of an unknown factor f becomes the condition
+   f != 0 (in ``P >= 0`` and ``P == 0`` it stays);
+4. write what is left as ``small < big`` with the terms of known positive sign on the
+   right (``v1 + v2 < 2 kappa**2``, ``-m mu**2 Phi < Psi**2 (mu**2 + 1)``);
+5. solve for a parameter the scene names when the condition is ``a x**2 + c`` or
+   ``a x + c`` in it (``mu <= |cot(alpha)|``);
+6. merge ``x < c`` and ``-x < c`` into ``|x| < c``.
+
+Steps 2-6 are the inequality engine :mod:`contactsym.inequalities`, shared with the
+equilibrium counts; this module presents a scene's conditions and wraps them as regions.
+
+Size limits. Past :data:`RAW_OPS` operations a relation is kept exactly as derived (step 1
+only); past :data:`FACTOR_TERMS` terms a numerator is kept unfactored (see
+:mod:`contactsym.inequalities.closed`, where the numbers for a fully symbolic k = 3 scene are).
+Both only skip rewriting: the region means the same. ``closed_form`` reads the two names
+here at each call, so a caller (a benchmark of the old way, a test) may change them.
+
+A :class:`Region` wraps such a Boolean: ``&``, ``|``, ``~``, ``latex()``, vectorised
+``evaluate`` and exact ``contains``; :func:`contactsym.plotting.region_plot` draws it (the
+computation never imports the drawing).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import numpy as np
+import sympy as sp
+
+from .. import inequalities
+from ..algebra.basic import known_sign
+from ..parse import sympy_only
+from ..printing.latex_output import tex
+
+__all__ = ["Region", "closed_form", "known_sign", "scene_regions", "REGION_NAMES"]
+
+#: Relations with more operations (unexpanded) are kept as derived: see the module docstring.
+RAW_OPS = inequalities.RAW_OPS
+#: Numerators with more terms are not factored: see the module docstring.
+FACTOR_TERMS = inequalities.FACTOR_TERMS
+
+
+def closed_form(condition, scene=None, solve_for: sp.Symbol | None = None, signs=None) -> sp.Basic:
+    """The simplest equivalent form of a condition, in the scene's presentation variables.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> s = cs.scene("painleve-klein-guides")
+    >>> closed_form(s.stability().robustly_unstable, s)
+    v_1 + v_2 > 2*kappa**2
+    >>> b = cs.scene("brake")
+    >>> closed_form(b.stability().robustly_stable, b, solve_for=sp.Symbol("mu", positive=True))
+    mu <= Abs(cot(alpha))
+    >>> closed_form(s.stability().robustly_stable, s)
+    ((v_1 + 1)*(v_2 + 1) >= 0) & (v_1 < 2*kappa**2 + 1) & (v_2 < 2*kappa**2 + 1) & (v_1 + v_2 < 2*kappa**2)
+    """
+    positive = tuple(getattr(scene, "positive_expressions", ()))
+    condition = scene.present(condition, signs) if scene is not None else sympy_only(condition, "the condition")
+    return inequalities.closed_form(condition, positive, solve_for, raw_ops=RAW_OPS, factor_terms=FACTOR_TERMS)
+
+
+#: The regions every scene offers, from its stability object.
+REGION_NAMES = {
+    "stable for every law": "robustly_stable",
+    "unstable for every law": "robustly_unstable",
+    "law-dependent": "law_dependent",
+    "Hopf line": "hopf",
+}
+
+
+def scene_regions(scene, signs=None) -> dict[str, Region]:
+    """The named closed-form regions of a scene (one sign pattern, or all with symbols s_i).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> scene_regions(cs.scene("brake"))["stable for every law"]
+    Region(stable for every law: mu <= Abs(cot(alpha)))
+    """
+    stability = scene.stability(signs)
+    regions = {}
+    for name, attribute in REGION_NAMES.items():
+        raw = getattr(stability, attribute)
+        if raw is None:
+            continue
+        condition = closed_form(raw, scene, solve_for=getattr(scene, "solve_for", None), signs=signs)
+        regions[name] = Region(condition, name=name, description=f"{scene.name}: {attribute}")
+    return regions
+
+
+@dataclass(frozen=True, eq=False)
+class Region:
+    """A closed-form Boolean region in a scene's symbols.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> x, y = sp.symbols("x y", real=True)
+    >>> r = Region(x + y < 2, name="below") & Region(x > 0)
+    >>> r.contains(x=1, y="1/2"), r.contains(x=1, y=1)
+    (True, False)
+    >>> r.evaluate(x=np.array([0.5, 1.5]), y=np.array([0.0, 1.0])).tolist()
+    [True, False]
+    >>> print(r.latex())
+    x > 0 \\wedge x + y < 2
+    """
+
+    condition: sp.Basic
+    name: str = ""
+    description: str = ""
+    symbols: tuple = field(default=())
+
+    def __post_init__(self):
+        object.__setattr__(self, "condition", sympy_only(self.condition, "a region's condition"))
+        if not self.symbols:
+            object.__setattr__(self, "symbols", tuple(sorted(self.condition.free_symbols, key=str)))
+
+    def _combine(self, other: Region, op, word: str) -> Region:
+        name = f"({self.name} {word} {other.name})" if self.name and other.name else ""
+        return Region(op(self.condition, other.condition), name)
+
+    def __and__(self, other: Region) -> Region:
+        return self._combine(other, sp.And, "and")
+
+    def __or__(self, other: Region) -> Region:
+        return self._combine(other, sp.Or, "or")
+
+    def __invert__(self) -> Region:
+        return Region(sp.Not(self.condition), f"not {self.name}" if self.name else "")
+
+    def latex(self) -> str:
+        return tex(self.condition)
+
+    def _repr_latex_(self) -> str:
+        return f"${self.latex()}$"
+
+    def __repr__(self) -> str:
+        label = f"{self.name}: " if self.name else ""
+        return f"Region({label}{self.condition})"
+
+    @cached_property
+    def _by_name(self) -> dict:
+        return {str(s): s for s in self.condition.free_symbols}
+
+    def _symbols_for(self, values: dict) -> dict:
+        unknown = set(values) - set(self._by_name)
+        missing = set(self._by_name) - set(values)
+        if missing:
+            raise ValueError(f"give values for {sorted(missing)}; the region depends on them.")
+        if unknown:
+            raise ValueError(f"the region does not depend on {sorted(unknown)}; known: {sorted(self._by_name)}.")
+        return {self._by_name[name]: value for name, value in values.items()}
+
+    @cached_property
+    def _compiled(self):
+        symbols = sorted(self.condition.free_symbols, key=str)
+        return symbols, sp.lambdify(symbols, self.condition, modules="numpy")
+
+    def evaluate(self, **arrays) -> np.ndarray:
+        """Membership for arrays of parameter values (broadcast with numpy), by symbol name."""
+        self._symbols_for(arrays)
+        symbols, function = self._compiled
+        arguments = [np.asarray(arrays[str(s)], dtype=float) for s in symbols]
+        shape = np.broadcast_shapes(*(a.shape for a in arguments)) if arguments else ()
+        return np.broadcast_to(np.asarray(function(*arguments), dtype=bool), shape)
+
+    def contains(self, **exact_values) -> bool:
+        """Exact membership: values are converted to rationals (floats exactly, strings parsed as numbers)."""
+        values = {s: _exact(v) for s, v in self._symbols_for(exact_values).items()}
+        result = self.condition.xreplace(values)
+        if result not in (sp.true, sp.false):
+            result = result.simplify() if not result.free_symbols else result
+        if result not in (sp.true, sp.false):
+            raise ValueError(f"cannot decide {result} exactly.")
+        return bool(result)
+
+
+def _exact(value) -> sp.Expr:
+    """A rational (or exact SymPy number) from an int, float, Fraction, or numeric string."""
+    if isinstance(value, sp.Basic):
+        if not value.is_number:
+            raise ValueError(f"{value} is not a number.")
+        return value
+    if isinstance(value, str):
+        try:
+            return sp.Rational(value)
+        except (TypeError, ValueError) as error:
+            raise ValueError(f"'{value}' is not a number; give e.g. '3/4' or '0.75'.") from error
+    if isinstance(value, float):
+        if not np.isfinite(value):
+            raise ValueError(f"{value} is not finite.")
+        return sp.Rational(value)
+    return sp.Rational(value)

@@ -1,0 +1,320 @@
+"""Stability of an equilibrium of the fast subsystem, and its robustness to the law.
+
+``hurwitz`` holds the expressions that must all be positive for asymptotic stability
+of (4.5) (Liénard–Chipart form of (4.7)). The robustness classification follows the
+paper:
+
+- k = 1: Proposition 3 (f'(u*) > 0 stable, < 0 unstable, for every law),
+  Proposition 4 (every piece has f' > 0: a unique stable reaction for every load),
+  Proposition 5 (constant Phi, Psi: no cycles);
+- k = 2: Proposition 6 with Remarks 1-2: stable for every law, unstable for every law,
+  or law-dependent (a Hopf bifurcation is possible);
+- k >= 3: Propositions 7 (A symmetric positive definite) and 8 (det A < 0 or all
+  a_ss < 0), widened by the closed-form certificates of :mod:`contactsym.robustness.classify`
+  (some p_s <= 0 for every law; law-dependent where a nested sequence of positive
+  principal minors gives a stable law and a negative principal minor an unstable one).
+  For a numeric A, ``robustness`` holds the point decision with its certificate or
+  witness laws, and ``undecided`` is True only where neither decides.
+"""
+
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass
+from functools import cached_property
+from typing import TYPE_CHECKING
+
+import sympy as sp
+
+from ..algebra.basic import normalize
+from ..algebra.hurwitz import Hurwitz, hurwitz_minors
+from ..errors import SingularJacobianError
+from ..hopf.lyapunov import fast_first_lyapunov
+from ..printing.latex_output import Formula, Numbering, _repr_latex, tex
+from .linear import lam
+
+if TYPE_CHECKING:
+    from ..robustness.classify import Robustness
+
+__all__ = ["Stability", "generic_minors", "hurwitz_names", "robustness_formulas"]
+
+#: The general theory's numbers and propositions, for k = 1, k = 2 and k >= 3 contacts.
+NUMBERS = Numbering(
+    {
+        "coefficient": ((), ("4.6",), ("4.6",)),
+        "hurwitz": (("3.2",), ("4.7",), ("4.7",)),
+        "stable for every law": (("3.2",), ("4.4",), ("4.4",)),
+        "unstable for every law": (("3.2",), (), ()),
+        "Hopf line": ((), ("4.7",), ("4.7",)),
+        "unique for every load": (("3.3",),) * 3,
+    },
+    {
+        "stable for every law": ("Proposition 3", "Proposition 6", "Proposition 7"),
+        "unstable for every law": ("Proposition 3", "Proposition 6", "Proposition 8"),
+        "law-dependent": ("", "Remarks 1-2: Hopf bifurcation possible", ""),
+        "Hopf line": ("", "Delta_3 = 0: Remarks 1-2", ""),
+        "unique for every load": ("Proposition 4", "", ""),
+    },
+)
+
+#: The robustness statements that :meth:`Stability.formulas` prints, with their attributes.
+_STATEMENTS = (
+    ("stable for every law", "robustly_stable"),
+    ("unstable for every law", "robustly_unstable"),
+    ("law-dependent", "law_dependent"),
+    ("Hopf line", "hopf"),
+)
+
+
+def robustness_regions(A: sp.Matrix) -> dict:
+    """:func:`contactsym.robustness.classify.regions`, imported when first needed (k >= 3): it brings
+    scipy.optimize, a second of import time that scenes with k <= 2 never pay."""
+    from ..robustness.classify import regions  # scipy.optimize: imported for k >= 3 only
+
+    return regions(A)
+
+
+def _gt(expr) -> sp.Basic:
+    return sp.Gt(expr, 0)
+
+
+@dataclass(frozen=True, eq=False)
+class Stability:
+    """Stability conditions of one sign pattern (or all, with sign symbols).
+
+    Attributes
+    ----------
+    hurwitz : list
+        Expressions that are all > 0 exactly when (4.5) is asymptotically stable.
+    robustly_stable, robustly_unstable : sympy Boolean
+        Stable (unstable) for every admissible law (1.5).
+    law_dependent : sympy Boolean
+        Stable for some laws and unstable for others (for k >= 3 a sufficient region).
+    robustness : Robustness or None
+        For a numeric A and k >= 3: the point decision with its certificate or witness laws.
+    undecided : sympy Boolean
+        Where the propositions say nothing (det A = 0 for k <= 2).
+    hopf : sympy Boolean
+        Delta_(n-1) = 0 with the other Hurwitz conditions positive.
+    hopf_frequency : sympy expression or None
+        omega on the Hopf set, in the stretched time tau.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> st = cs.scene("sliding-point").stability()
+    >>> st.robustly_stable
+    True
+    """
+
+    linearization: object
+
+    @cached_property
+    def A(self) -> sp.Matrix:
+        return self.linearization.A
+
+    @cached_property
+    def k(self) -> int:
+        return self.A.rows
+
+    @cached_property
+    def poly(self) -> Hurwitz:
+        """Hurwitz data of the characteristic polynomial (4.6)."""
+        if sp.expand(self.linearization.det_A) == 0:
+            raise SingularJacobianError(
+                f"det A = 0 identically for A = {self.A.tolist()}: the equilibrium is not isolated and has a "
+                "zero eigenvalue for every law; the propositions need det A != 0. Check the scene's reactions."
+            )
+        return Hurwitz(self.linearization.charpoly)
+
+    @cached_property
+    def hurwitz(self) -> list[sp.Expr]:
+        logging.getLogger("contactsym").info("Hurwitz conditions (4.7) of a degree-%d polynomial", 2 * self.k)
+        return self.poly.conditions
+
+    @cached_property
+    def _classification(self) -> tuple:
+        A, det = self.A, self.linearization.det_A
+        diagonal = [A[i, i] for i in range(self.k)]
+        if self.k == 1:
+            return _gt(A[0]), sp.Lt(A[0], 0), sp.false
+        if self.k == 2:
+            # Prop. 6, with its boundary: a11, a22 <= 0 (not both 0 when det A > 0) makes p_3 <= 0
+            unstable = sp.Or(sp.Lt(det, 0), sp.And(*[sp.Le(a, 0) for a in diagonal]))
+            coupling = normalize(A[0, 1] * A[1, 0])
+            stable = sp.And(*[_gt(a) for a in diagonal], _gt(det), sp.Ge(coupling, 0))
+            not_unstable = sp.Or(*[_gt(a) for a in diagonal])
+            not_stable = sp.Or(*[sp.Le(a, 0) for a in diagonal], sp.Lt(coupling, 0))
+            return stable, unstable, sp.And(_gt(det), not_unstable, not_stable)
+        closed = robustness_regions(A)
+        unstable = sp.Or(sp.Lt(det, 0), sp.And(*[sp.Lt(a, 0) for a in diagonal]), closed["unstable for every law"])
+        symmetric = [sp.Eq(A[i, j], A[j, i]) for i in range(self.k) for j in range(i) if sp.expand(A[i, j] - A[j, i])]
+        leading = [_gt(normalize(A[:m, :m].det(method="berkowitz"))) for m in range(1, self.k + 1)]
+        return sp.And(*symmetric, *leading), unstable, closed["law-dependent"]
+
+    @cached_property
+    def robustly_stable(self) -> sp.Basic:
+        return self._classification[0]
+
+    @cached_property
+    def robustly_unstable(self) -> sp.Basic:
+        return self._classification[1]
+
+    @cached_property
+    def law_dependent(self) -> sp.Basic | None:
+        return self._classification[2]
+
+    @cached_property
+    def robustness(self) -> Robustness | None:
+        """The point decision of :func:`contactsym.robustness.classify.decide` for a numeric A (k >= 3), else None."""
+        if self.k < 3 or self.A.free_symbols or self.linearization.det_A == 0:
+            return None
+        from ..robustness.classify import decide  # see robustness_regions: imported for k >= 3 only
+
+        return decide(self.A)
+
+    @cached_property
+    def undecided(self) -> sp.Basic:
+        decided = [self.robustly_stable, self.robustly_unstable]
+        if self.law_dependent is not None:
+            decided.append(self.law_dependent)
+        if self.robustness is not None and self.robustness.verdict != "undecided":
+            return sp.false
+        return sp.Not(sp.Or(*decided))
+
+    @cached_property
+    def hopf(self) -> sp.Basic:
+        if self.k == 1:
+            return sp.false  # p_1 = -a Psi and p_0 = -a Phi vanish together: no Hopf point
+        return self.poly.hopf_set
+
+    @cached_property
+    def hopf_frequency(self) -> sp.Expr | None:
+        if self.k == 1 or self.poly.omega_squared is None:
+            return None
+        return sp.sqrt(self.poly.omega_squared)
+
+    @cached_property
+    def first_lyapunov(self) -> sp.Expr | None:
+        """The first Lyapunov coefficient l1 of (2.1) at the equilibrium, valid on the Hopf set.
+
+        l1 < 0: supercritical (a small stable cycle past the line, amplitude ~ sqrt(distance));
+        l1 > 0: subcritical (a jump and hysteresis). Normalization ``<q, q> = <p, q> = 1`` in
+        (u, v); only the sign is invariant. A generic law contributes its derivatives at
+        (u*, 0) as symbols (``Phi_1_u`` = dPhi_1/du_1, ...). None where there is no Hopf set.
+        See :mod:`contactsym.hopf.lyapunov`.
+        """
+        return fast_first_lyapunov(self)
+
+    # --- k = 1: Propositions 3, 4, 5 ------------------------------------------------
+
+    @cached_property
+    def propositions(self) -> dict[str, sp.Basic]:
+        """The propositions that apply, by name, each with its condition."""
+        if self.k == 1:
+            return {
+                "Proposition 3 (stable)": self.robustly_stable,
+                "Proposition 3 (unstable)": self.robustly_unstable,
+                "Proposition 4 (unique stable reaction for every load)": self.unique_for_every_load,
+                "Proposition 5 (no cycles)": sp.true if self.no_cycles else sp.false,
+            }
+        if self.k == 2:
+            return {
+                "Proposition 6 (stable for every law)": self.robustly_stable,
+                "Proposition 6 (unstable for every law)": self.robustly_unstable,
+                "Remarks 1-2 (law-dependent, Hopf possible)": self.law_dependent,
+            }
+        closed = robustness_regions(self.A)
+        return {
+            "Proposition 7 (stable for every law)": self.robustly_stable,
+            "Proposition 8 (unstable for every law)": self.robustly_unstable,
+            "some p_s <= 0 for every law (unstable for every law)": closed["unstable for every law"],
+            "nested positive principal minors (a stable law exists)": closed["stable law exists"],
+            "a negative principal minor (an unstable law exists)": closed["unstable law exists"],
+        }
+
+    @cached_property
+    def unique_for_every_load(self) -> sp.Basic:
+        """Proposition 4: f' > 0 on every piece of f (k = 1 only)."""
+        fast = self.linearization.fast
+        slopes = []
+        for pattern in fast.sign_patterns():
+            slope = fast.piece(pattern).jacobian(fast.u)[0]
+            slopes.append(_gt(normalize(slope)))
+        return sp.And(*slopes)
+
+    @cached_property
+    def no_cycles(self) -> bool:
+        """Proposition 5: constant Phi and Psi exclude periodic solutions (k = 1)."""
+        return self.k == 1 and self.linearization.fast.constant_laws
+
+    # --- formulas -------------------------------------------------------------------
+
+    def formulas(self, present: bool = False) -> tuple[Formula, ...]:
+        """The conditions (4.7) by name, the robustness statements, omega and the point decision."""
+        fast = self.linearization.fast
+        show = fast.present if present else (lambda expr: expr)
+
+        def row(key, lhs, rhs, relation="="):
+            return NUMBERS.formula(key, lhs, rhs, k=self.k, own=fast.paper_equations, relation=relation)
+
+        names = hurwitz_names(self)
+        generic = generic_minors(self.linearization.charpoly.degree())
+        rows = []
+        for name, (kind, index), condition in zip(names, self.poly.labels, self.hurwitz):
+            if kind == "Delta":
+                rows += [row("hurwitz", name, generic[index]), row("hurwitz", "", show(condition))]
+            else:
+                rows.append(row("coefficient", name, show(condition)))
+        rows.append(row("hurwitz", ", ".join(names), sp.S.Zero, ">"))
+        for key, attribute in _STATEMENTS:
+            value = getattr(self, attribute)
+            if value is not None:
+                rows.append(row(key, r"\text{" + key + "}", show(value), ":"))
+        if self.hopf_frequency is not None:
+            rows.append(row("hopf frequency", r"\omega", show(self.hopf_frequency)))
+        return tuple(rows) + robustness_formulas(self.robustness)
+
+    def _repr_latex_(self) -> str:
+        return _repr_latex(self)
+
+
+def hurwitz_names(stability) -> list[str]:
+    r"""LaTeX names of ``stability.hurwitz``: coefficients ``p_s`` of (4.6), minors ``Delta_m`` of (4.7).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> hurwitz_names(cs.scene("brake").stability())
+    ['p_{3}', 'p_{2}', 'p_{1}', 'p_{0}', '\\Delta_{3}']
+    """
+    letters = {"p": "p", "Delta": r"\Delta"}
+    return [f"{letters[kind]}_{{{index}}}" for kind, index in stability.poly.labels]
+
+
+def generic_minors(n: int) -> dict[int, sp.Expr]:
+    """Delta_m in the coefficients p_n, ..., p_0 (symbols) of a degree-n polynomial, for m = 1..n.
+
+    Examples
+    --------
+    >>> generic_minors(2)[2]
+    p_0*p_1
+    """
+    p = [sp.Symbol(f"p_{s}") for s in range(n + 1)]
+    minors = hurwitz_minors(sp.Poly(sum(p[s] * lam**s for s in range(n + 1)), lam))
+    return {m: sp.expand(minor) for m, minor in enumerate(minors, 1)}
+
+
+def robustness_formulas(robustness) -> tuple[Formula, ...]:
+    """The point decision of :func:`contactsym.robustness.classify.decide`: verdict, certificate, witness laws."""
+    if robustness is None:
+        return ()
+    rows = [Formula("robustness", r"\text{robustness}", r"\text{" + robustness.verdict + "}", ":")]
+    if robustness.certificate is not None:
+        statement = robustness.certificate.statement.replace("_", r"\_")
+        rows.append(Formula("certificate", r"\text{certificate}", r"\text{" + statement + "}", ":"))
+    for name, law in (("stable", robustness.stable_law), ("unstable", robustness.unstable_law)):
+        if law is not None:
+            values = r",\ ".join([tex(sp.Tuple(*law.Phi)), tex(sp.Tuple(*law.Psi))])
+            rows.append(Formula("witness", r"(\Phi, \Psi)_{\text{" + name + "}}", values))
+    return tuple(rows)
