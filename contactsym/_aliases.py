@@ -49,8 +49,7 @@ MOVED = {
     "law_polynomials": "robustness.law_polynomials",
     "laws": "laws",
     "linear": "stages.linear",
-    "lyapunov": "hopf.lyapunov",
-    "lyapunov_form": "hopf.lyapunov_form",
+    "lyapunov_form": "lyapunov.polynomial",
     "mechanics": "mechanism.contact_space",
     "one_sided": "counts.one_sided",
     "orthants": "counts.orthants",
@@ -100,6 +99,12 @@ class _Package(types.ModuleType):
         if name in _FUNCTIONS and isinstance(value, types.ModuleType):
             return
         super().__setattr__(name, value)
+
+    def __getattr__(self, name):
+        # 0.1's ``cs.regions.closed_form``: an old module reached as an attribute of the package
+        if name in MOVED and name not in _FUNCTIONS:
+            return importlib.import_module("contactsym." + MOVED[name])
+        raise AttributeError(f"module 'contactsym' has no attribute {name!r}")
 
 
 def install(package: types.ModuleType) -> None:

@@ -10,7 +10,7 @@ deformations ``Q_j = q_j/eps**2`` and their rates ``V_j = q_j'/eps``,
 which is (2.1) in other coordinates (``u_j = N_j(Q_j, V_j)``, ``v_j = V_j``): it needs no
 inverse of the law. The sign of l1 does not depend on the coordinates, and neither does
 the predicted cycle, whose reaction amplitudes are reported. l1 itself is given in the
-normalization ``<q, q> = 1`` of the state (Q, V) (see :mod:`contactsym.hopf.lyapunov`).
+normalization ``<q, q> = 1`` of the state (Q, V) (see :mod:`contactsym.lyapunov.coefficient`).
 """
 
 from __future__ import annotations
@@ -23,7 +23,7 @@ import numpy as np
 import sympy as sp
 
 from ..errors import ComplianceError, HopfError, NumericsError
-from ..hopf.lyapunov import HopfVectors, lyapunov_numeric
+from ..lyapunov.coefficient import HopfVectors, lyapunov_numeric
 from .codegen import _cached, lambdify_cse
 from .reduced import _branch_at
 from .systems import _contact_law, _index, _laws_key

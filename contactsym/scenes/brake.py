@@ -16,8 +16,8 @@ from sympy.physics.mechanics import Lagrangian as lagrangian_of
 from sympy.physics.mechanics import RigidBody, dynamicsymbols, inertia
 
 from ..errors import SceneError
-from ..hopf.lyapunov_form import first_lyapunov_polynomial
 from ..laws import Coulomb
+from ..lyapunov.polynomial import first_lyapunov_polynomial
 from ..mechanism.scene import Contact, Scene
 from ..plotting import brake_hopf_data, brake_hopf_plot, brake_map_data, brake_map_plot, save_figure
 from ..printing.latex_output import tex
@@ -164,7 +164,7 @@ def squeal_direction(scene, derivatives=LAW_DERIVATIVES) -> tuple[sp.Expr, sp.Ex
     for both pads (``Phi_u`` = dPhi/du, ``Psi_uv`` = d^2 Psi/du dv, ...; those not in
     ``derivatives`` are 0). Phi* is the Hopf line of :func:`special_cases`; l1 is
     :attr:`Stability.first_lyapunov` on that line, reduced by
-    :func:`contactsym.hopf.lyapunov_form.first_lyapunov_polynomial` to a quadratic polynomial in the
+    :func:`contactsym.lyapunov.polynomial.first_lyapunov_polynomial` to a quadratic polynomial in the
     derivatives with coefficients rational in m, mu, Psi. The normalization (``<q, q> = 1`` in
     (u, v)) only adds a positive factor: l1 < 0 is a soft squeal (supercritical), l1 > 0 a jump
     with hysteresis (subcritical). About 15 s for all ten derivatives.

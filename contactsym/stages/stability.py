@@ -29,7 +29,7 @@ import sympy as sp
 from ..algebra.basic import normalize
 from ..algebra.hurwitz import Hurwitz, hurwitz_minors
 from ..errors import SingularJacobianError
-from ..hopf.lyapunov import fast_first_lyapunov
+from ..lyapunov.coefficient import fast_first_lyapunov
 from ..printing.latex_output import Formula, Numbering, _repr_latex, tex
 from .linear import lam
 
@@ -202,7 +202,7 @@ class Stability:
         l1 > 0: subcritical (a jump and hysteresis). Normalization ``<q, q> = <p, q> = 1`` in
         (u, v); only the sign is invariant. A generic law contributes its derivatives at
         (u*, 0) as symbols (``Phi_1_u`` = dPhi_1/du_1, ...). None where there is no Hopf set.
-        See :mod:`contactsym.hopf.lyapunov`.
+        See :mod:`contactsym.lyapunov.coefficient`.
         """
         return fast_first_lyapunov(self)
 

@@ -9,8 +9,8 @@ import sympy as sp
 import contactsym as cs
 from contactsym import numerics
 from contactsym.errors import ComplianceError, HopfError
-from contactsym.hopf.lyapunov import fast_first_lyapunov
 from contactsym.laws.library import Hertz
+from contactsym.lyapunov.coefficient import fast_first_lyapunov
 from contactsym.numerics.hopf import full_cycle_start
 
 q, qd = sp.symbols("q qdot", real=True)

@@ -340,7 +340,7 @@ def load_scene(path) -> Scene:
     Examples
     --------
     >>> from pathlib import Path
-    >>> load_scene(Path(__file__).parent.parent / "examples" / "brake.toml")
+    >>> load_scene(Path(__file__).parents[3] / "examples" / "brake.toml")
     <Scene 'brake-file': 3 coordinates, k = 2 contacts>
     """
     path = Path(path)

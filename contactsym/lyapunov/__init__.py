@@ -2,8 +2,8 @@
 symbolically, and as an explicit polynomial in the law's derivatives.
 """
 
-from .lyapunov import HopfVectors, hopf_vectors_45, lyapunov_numeric, lyapunov_symbolic
-from .lyapunov_form import first_lyapunov_polynomial
+from .coefficient import HopfVectors, hopf_vectors_45, lyapunov_numeric, lyapunov_symbolic
+from .polynomial import first_lyapunov_polynomial
 
 __all__ = [
     "HopfVectors",

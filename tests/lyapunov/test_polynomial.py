@@ -10,8 +10,8 @@ from hypothesis import strategies as st
 
 import contactsym as cs
 from contactsym import numerics
-from contactsym.hopf.lyapunov import fast_hopf_forms, lyapunov_numeric
 from contactsym.laws.library import Hertz
+from contactsym.lyapunov.coefficient import fast_hopf_forms, lyapunov_numeric
 from contactsym.scenes.brake import squeal_direction
 
 # Hertz's nonzero derivatives (Psi = -d is constant) and the weakening damper's Psi_vv: both routes of g21,

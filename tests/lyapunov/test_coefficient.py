@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 
 from contactsym.errors import HopfError
-from contactsym.hopf.lyapunov import derivative_tensors, lyapunov_numeric, lyapunov_symbolic, multilinear
+from contactsym.lyapunov.coefficient import derivative_tensors, lyapunov_numeric, lyapunov_symbolic, multilinear
 
 x, y = sp.symbols("x y", real=True)
 
