@@ -25,8 +25,9 @@ def _expand_normalize(expr):
 def _use_the_naive_way() -> None:
     """Accelerations by LU solve + expand, and expand-based normalization in every stage."""
     import contactsym as cs
-    from contactsym import equilibria, fast, linear, mechanics, regions, regularize, stability
+    from contactsym.mechanism import contact_space as mechanics
     from contactsym.mechanism.scene import Contact, Scene
+    from contactsym.stages import equilibria, fast, linear, regions, regularize, stability
 
     for module in (fast, linear, stability, equilibria, regions, regularize):
         module.normalize = _expand_normalize

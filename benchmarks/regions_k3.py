@@ -40,7 +40,7 @@ def run(quick: bool, out_dir) -> list[dict]:
 def _main(mode: str) -> None:
     started = time.perf_counter()
     from benchmarks._derive_worker import generic_scene
-    from contactsym import regions
+    from contactsym.stages import regions
 
     if mode == "old":
         regions.RAW_OPS = regions.FACTOR_TERMS = float("inf")

@@ -51,6 +51,7 @@ MOVED = {
     "linear": "stages.linear",
     "lyapunov_form": "lyapunov.polynomial",
     "mechanics": "mechanism.contact_space",
+    "numerics.integrate": "numerics.integration",
     "one_sided": "counts.one_sided",
     "orthants": "counts.orthants",
     "plmap": "counts.plmap",
@@ -60,7 +61,7 @@ MOVED = {
     "robust_certificates": "robustness.certificates",
     "robustness": "robustness.classify",
     "scene": "mechanism.scene",
-    "scenefigures": "plotting.scene_figures",
+    "scenefigures": "plotting.plan_figures",
     "scenefile": "mechanism.files.reader",
     "sceneinput": "mechanism.checks",
     "stability": "stages.stability",
@@ -68,10 +69,6 @@ MOVED = {
     "tomlsource": "mechanism.files.toml_source",
     "unicodemath": "printing.unicode_math",
 }
-
-# 0.1's ``contactsym.scene`` and ``contactsym.latex`` were functions shadowing their modules;
-# they stay the functions when the old module path is imported.
-_FUNCTIONS = ("scene", "latex")
 
 
 class _OldPathFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
@@ -84,6 +81,9 @@ class _OldPathFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
         return importlib.util.spec_from_loader(fullname, self)
 
     def create_module(self, spec):
+        parent = sys.modules[spec.name.rpartition(".")[0]]
+        if type(parent) is types.ModuleType:
+            parent.__class__ = _Package  # so that the import below cannot replace a function
         module = importlib.import_module("contactsym." + MOVED[spec.name.partition(".")[2]])
         self._spec = module.__spec__
         return module
@@ -93,18 +93,26 @@ class _OldPathFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
 
 
 class _Package(types.ModuleType):
-    """The ``contactsym`` package: importing an old module path never replaces a function."""
+    """A package in which importing an old module path never replaces a function.
+
+    0.1's ``contactsym.scene``, ``contactsym.latex`` and ``contactsym.numerics.integrate`` were
+    functions shadowing their modules; they stay the functions when the old path is imported.
+    """
 
     def __setattr__(self, name, value):
-        if name in _FUNCTIONS and isinstance(value, types.ModuleType):
-            return
+        current = self.__dict__.get(name)
+        old_path = f"{self.__name__}.{name}".partition(".")[2] in MOVED
+        if old_path and isinstance(value, types.ModuleType) and current is not None:
+            if not isinstance(current, types.ModuleType):
+                return
         super().__setattr__(name, value)
 
     def __getattr__(self, name):
-        # 0.1's ``cs.regions.closed_form``: an old module reached as an attribute of the package
-        if name in MOVED and name not in _FUNCTIONS:
-            return importlib.import_module("contactsym." + MOVED[name])
-        raise AttributeError(f"module 'contactsym' has no attribute {name!r}")
+        # 0.1's ``cs.regions.closed_form``: an old module reached as an attribute of its package
+        old = f"{self.__name__}.{name}".partition(".")[2]
+        if old in MOVED:
+            return importlib.import_module("contactsym." + MOVED[old])
+        raise AttributeError(f"module {self.__name__!r} has no attribute {name!r}")
 
 
 def install(package: types.ModuleType) -> None:

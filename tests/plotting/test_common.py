@@ -13,10 +13,12 @@ import pytest  # noqa: E402
 import sympy as sp  # noqa: E402
 
 import contactsym as cs  # noqa: E402
-from contactsym import hopf_plots, plotting, scenefigures  # noqa: E402
+from contactsym import plotting  # noqa: E402
 from contactsym.atlas import plot as atlas_plot_module  # noqa: E402
 from contactsym.errors import SceneError  # noqa: E402
 from contactsym.plotting import ContactPlot  # noqa: E402
+from contactsym.plotting import hopf as hopf_plots  # noqa: E402
+from contactsym.plotting import plan_figures as scenefigures  # noqa: E402
 from contactsym.stages.regions import Region  # noqa: E402
 
 

@@ -6,7 +6,7 @@ import numpy as np
 import sympy as sp
 
 from benchmarks._derive_worker import generic_scene
-from contactsym import regions
+from contactsym.stages import regions
 
 
 def _samples(found: dict, n: int = 2000) -> dict:
