@@ -56,7 +56,7 @@ def region_map_data(scene, plan, *, resolution: int = 200) -> RegionMapData:
     --------
     >>> from pathlib import Path
     >>> from contactsym.mechanism.files.reader import load_scene
-    >>> brake = load_scene(Path(__file__).parent.parent / "examples" / "brake.toml")
+    >>> brake = load_scene(Path(__file__).parents[2] / "examples" / "brake.toml")
     >>> data = region_map_data(brake, brake.figure_plan, resolution=20)
     >>> sorted(data.grids), sorted(data.curves), data.x, data.y
     (['law-dependent', 'stable for every law'], ['Hopf line'], 'alpha', 'mu')
@@ -101,7 +101,7 @@ def region_map_plot(data: RegionMapData, ax=None, *, legend: bool = True) -> Con
     >>> import matplotlib.pyplot as plt
     >>> from pathlib import Path
     >>> from contactsym.mechanism.files.reader import load_scene
-    >>> brake = load_scene(Path(__file__).parent.parent / "examples" / "brake.toml")
+    >>> brake = load_scene(Path(__file__).parents[2] / "examples" / "brake.toml")
     >>> fig, ax = plt.subplots()
     >>> artists = region_map_plot(region_map_data(brake, brake.figure_plan, resolution=20), ax=ax)
     >>> ax.get_xlabel(), len(ax.get_legend_handles_labels()[1])

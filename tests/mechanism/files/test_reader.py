@@ -11,7 +11,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import contactsym as cs
-from contactsym.mechanism.files.reader import _positive_on, load_scene, read_scene, scene_or_file
+from contactsym.mechanism.files.declarations import positive_on
+from contactsym.mechanism.files.reader import load_scene, read_scene, scene_or_file
 from contactsym.mechanism.files.toml_source import SceneFileError
 from contactsym.parse import ParseError
 
@@ -154,7 +155,7 @@ def test_interval_positivity_holds_at_sampled_points(low, width, denominator):
     """sin/cos declared positive on an interval are positive at many points of it; the others change sign."""
     phi = sp.Symbol("phi", real=True)
     a, b = sp.pi * sp.Rational(low, denominator), sp.pi * sp.Rational(low + width, denominator)
-    declared = _positive_on(phi, a, b)
+    declared = positive_on(phi, a, b)
     inside = np.linspace(float(a), float(b), 401)[1:-1]
     for function, numeric in ((sp.sin, np.sin), (sp.cos, np.cos)):
         values = numeric(inside)
