@@ -274,11 +274,12 @@ def _read_regular_file(path: Path, limits: Limits) -> str:
         descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
     except OSError as error:
         raise SceneFileError(f"{path}: cannot read the scene file ({error.strerror or error}).") from None
+    mode = os.fstat(descriptor).st_mode
+    if not stat.S_ISREG(mode):
+        os.close(descriptor)
+        kind = "a directory" if stat.S_ISDIR(mode) else "a pipe" if stat.S_ISFIFO(mode) else "not a regular file"
+        raise SceneFileError(f"{path}: {kind}; a scene file must be a regular file (a .toml text).")
     with os.fdopen(descriptor, "rb") as file:
-        mode = os.fstat(file.fileno()).st_mode
-        if not stat.S_ISREG(mode):
-            kind = "a directory" if stat.S_ISDIR(mode) else "a pipe" if stat.S_ISFIFO(mode) else "not a regular file"
-            raise SceneFileError(f"{path}: {kind}; a scene file must be a regular file (a .toml text).")
         data = file.read(limits.max_bytes + 1)
     if len(data) > limits.max_bytes:
         size = path.stat().st_size
