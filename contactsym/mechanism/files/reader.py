@@ -98,31 +98,30 @@ def _beyond(source: str, line: int, count: int, what: str, cap: str, limits: Lim
 
 
 def _sized(doc: TomlSource, limits: Limits) -> None:
-    """Refuse a scene beyond the caps before any formula is read."""
-    data = doc.data
+    """Refuse a scene beyond the caps before any formula is read (a table of the wrong kind counts 0 here)."""
+
+    def count(*path) -> int:
+        value = doc.data
+        for step in path:
+            value = value.get(step) if isinstance(value, dict) else None
+        return len(value) if isinstance(value, (list, dict)) else 0
+
     sizes = (
-        ("coordinates", "scene", "coordinates", "max_coordinates", data.get("scene", {}).get("coordinates", ())),
-        ("contacts", "contacts", None, "max_contacts", data.get("contacts", ())),
-        ("points", "points", None, "max_points", data.get("points", ())),
-        (
-            "masses, bodies and loads",
-            "",
-            None,
-            "max_items",
-            [*data.get("masses", ()), *data.get("bodies", ()), *data.get("loads", ())],
-        ),  # noqa: E501
+        ("coordinates", "scene", "coordinates", "max_coordinates", count("scene", "coordinates")),
+        ("contacts", "contacts", None, "max_contacts", count("contacts")),
+        ("points", "points", None, "max_points", count("points")),
+        ("masses, bodies and loads", "", None, "max_items", count("masses") + count("bodies") + count("loads")),
         (
             "parameters, functions and intervals",
             "parameters",
             None,
             "max_names",
-            [*data.get("parameters", ()), *data.get("functions", ()), *data.get("intervals", ())],
+            count("parameters") + count("functions") + count("intervals"),
         ),  # noqa: E501
     )
-    for what, table, key, cap, items in sizes:
-        count = len(items) if isinstance(items, (list, dict, tuple)) else 0
-        if count > getattr(limits, cap):
-            _beyond(doc.source, doc.line(table, key), count, what, cap, limits)
+    for what, table, key, cap, size in sizes:
+        if size > getattr(limits, cap):
+            _beyond(doc.source, doc.line(table, key), size, what, cap, limits)
 
 
 def _switching(contacts, formulas) -> int:

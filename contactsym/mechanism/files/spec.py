@@ -63,8 +63,10 @@ class TableSchema:
     ``keys`` maps a fixed key to its kind; a table of free names (``[parameters]``) has
     ``keys = None`` and gives the kind of every entry as ``entries``. Kinds: ``formula``
     (text in quotes or a number), ``names`` (a list of names), ``pair`` (two formulas),
-    ``bool``, ``text``, ``name``, ``table`` (a table, read by its own schema), ``law``,
-    ``number``, ``numbers`` (a pair of numbers), ``entry`` (read by the table's own rules).
+    ``bool``, ``text``, ``label`` (the scene's name), ``name`` (a name declared elsewhere in
+    the file), ``new name`` (a name this key declares), ``table`` and ``tables`` (a table, an
+    array of tables), ``law``, ``number``, ``numbers`` (a pair of numbers), ``entry`` (read
+    by the table's own rules).
     """
 
     keys: MappingProxyType | None
@@ -105,7 +107,7 @@ SCHEMA = MappingProxyType(
             count_presentation="table",
             figures="table",
         ),
-        "scene": _table(("coordinates",), name="name", description="text", coordinates="names", solve_for="formula"),
+        "scene": _table(("coordinates",), name="label", description="text", coordinates="names", solve_for="formula"),
         "parameters": _free("entry"),
         "parameters.entry": _table((), assume="text", symbol="text", interval="pair"),
         "intervals": _free("pair"),
@@ -120,7 +122,7 @@ SCHEMA = MappingProxyType(
         ),
         "loads": _table((), point="name", force="pair", angle="formula", moment="formula"),
         "contacts": _table(
-            ("gap", "reaction"), gap="formula", reaction="name", unilateral="bool", law="law", friction="table"
+            ("gap", "reaction"), gap="formula", reaction="new name", unilateral="bool", law="law", friction="table"
         ),
         "contacts.friction": _table(("direction",), mu="formula", viscous="formula", point="name", direction="entry"),
         "at": _free("formula"),
