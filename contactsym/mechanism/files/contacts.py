@@ -66,10 +66,11 @@ COMPLIANCE_LAWS = {
 
 def _law(reader: FormulaReader, entry, where: str, eps: sp.Symbol) -> LawSpec:
     table = {"name": entry} if isinstance(entry, str) else entry
+    contact, where = where, f"{where}.law"  # the law's keys are found on the line of law = {...}
     name = table.get("name") if isinstance(table, dict) else None
     if not isinstance(name, str) or name not in COMPLIANCE_LAWS:
         reader.doc.fail(
-            where,
+            contact,
             "law",
             f"unknown law {shown(name if isinstance(table, dict) else entry)}; use one of {', '.join(COMPLIANCE_LAWS)} "
             "(a table {name = ..., ...} for laws with parameters)",
@@ -106,7 +107,7 @@ def _gap(reader: FormulaReader, entry: dict, where: str, coordinates, lagrangian
 def _friction(reader: FormulaReader, entry, where: str, lagrangian: bool, points) -> FrictionSpec:
     if not isinstance(entry, dict):
         reader.doc.fail(where, "friction", "friction must be a table {mu = ..., direction = ...}")
-    reader.checked(entry, where, "contacts.friction")
+    reader.checked(entry, f"{where}.friction", "contacts.friction")
     if ("mu" in entry) == ("viscous" in entry):
         reader.doc.fail(where, "friction", "give friction either mu = ... (Coulomb) or viscous = ... (viscous)")
     kind, key = ("coulomb", "mu") if "mu" in entry else ("viscous", "viscous")

@@ -143,6 +143,10 @@ def read_spec(
     >>> spec.accelerations, spec.contacts[0].reaction, spec.contacts[0].law.name
     ((N - 1,), N, 'generic')
     """
+    if not isinstance(source, str) or not isinstance(default_name, str):
+        raise SceneFileError(f"source and default_name must be text, not {shown(source)} and {shown(default_name)}.")
+    if not isinstance(text, str):
+        raise SceneFileError(f"{source}: a scene file's text must be a str, not {type(text).__name__}.")
     if not isinstance(limits, Limits):
         raise SceneFileError(f"{source}: limits must be a contactsym.mechanism.files.Limits, not {shown(limits)}.")
     if len(text) > limits.max_bytes:  # the characters of a text; load_scene counts bytes before it decodes
