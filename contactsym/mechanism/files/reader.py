@@ -54,7 +54,6 @@ from __future__ import annotations
 import os
 import re
 import stat
-from dataclasses import fields
 from pathlib import Path
 
 import sympy as sp
@@ -320,9 +319,9 @@ def scene_or_file(argument: str) -> Scene:
     >>> scene_or_file("brake")
     <Scene 'brake': 3 coordinates, k = 2 contacts>
     """
+    if not isinstance(argument, (str, os.PathLike)):
+        raise SceneFileError(f"give a scene's name or a scene file's path, not {shown(argument)}.")
+    argument = os.fspath(argument)
     if argument.endswith(".toml") or (argument not in scene_names() and Path(argument).is_file()):
         return load_scene(argument)
     return scene(argument)
-
-
-assert {f.name for f in fields(Limits)} >= {"max_bytes", "max_contacts"}  # the names the messages cite

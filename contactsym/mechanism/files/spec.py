@@ -9,7 +9,7 @@ the spec alone. Every spec item keeps the line it was read from, for messages.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from types import MappingProxyType
 
 import sympy as sp
@@ -157,6 +157,12 @@ class Limits:
     max_items: int = 64
     #: Most declared names (parameters, functions, intervals).
     max_names: int = 200
+
+    def __post_init__(self):
+        for cap in fields(self):
+            value = getattr(self, cap.name)
+            if isinstance(value, bool) or not isinstance(value, int) or value < 1:
+                raise SceneError(f"Limits({cap.name}={value!r}): a cap is a whole number >= 1.")
 
 
 @dataclass(frozen=True)

@@ -356,3 +356,16 @@ def test_numbers_written_as_toml_numbers_meet_the_same_caps():
     assert read_scene(BASE + law, "a.toml").contacts[0].compliance.phi_psi(None, None, None)[0] == -(10**300)
     with pytest.raises(ParseError, match="MAX_EXPONENT"):
         read_scene(BASE + law.replace("1e-300", "5e-324"), "a.toml")
+
+
+@pytest.mark.parametrize("value", [0, -1, 1.5, "10", True, None])
+def test_a_cap_is_a_whole_number(value):
+    with pytest.raises(cs.SceneError, match=r"Limits\(max_contacts=.*a cap is a whole number >= 1"):
+        Limits(max_contacts=value)
+    assert Limits(max_contacts=7).max_contacts == 7
+
+
+@pytest.mark.parametrize("argument", [None, 3, ["brake"]])
+def test_scene_or_file_refuses_what_is_neither_a_name_nor_a_path(argument):
+    with pytest.raises(SceneFileError, match="give a scene's name or a scene file's path"):
+        scene_or_file(argument)
