@@ -199,17 +199,24 @@ class _Parser:
             if max(abs(expr.p), expr.q) >= 10**MAX_DIGITS:
                 self.cap(column, _shown(expr), "MAX_DIGITS", "use smaller numbers")
         elif expr.is_number:
+            if expr.has(sp.zoo, sp.nan, sp.oo, sp.S.NegativeInfinity):
+                self.fail(column, f"{_short(str(expr))} is not finite; check for a division by zero")
             try:
-                size = abs(expr.evalf(15))
-                beyond = size.is_Number and bool(size > sp.Integer(10) ** MAX_EXPONENT)
+                real, imaginary = expr.evalf(15).as_real_imag()
+                beyond = real.is_Number and bool(abs(real) > sp.Integer(10) ** MAX_EXPONENT)
             except (ArithmeticError, ValueError, TypeError, RecursionError):  # mpmath beyond its range
-                beyond = True
+                real, imaginary, beyond = None, sp.S.Zero, True
             if beyond:
                 self.cap(
                     column,
                     f"the number {_short(str(expr))} is larger than 1e{MAX_EXPONENT}",
                     "MAX_EXPONENT",
                     "use smaller numbers",
+                )
+            if imaginary.is_Number and imaginary != 0:
+                self.fail(
+                    column,
+                    f"{_short(str(expr))} is not a real number (its value is {_short(str(real + sp.I * imaginary))})",
                 )
         return expr
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+import re
 
 import numpy as np
 import pytest
@@ -267,3 +268,24 @@ def test_a_cap_is_raised_by_its_module_constant(monkeypatch):
     assert parse_expression("N*(1+Y)^3000", {"N": N, "Y": Y}) == N * (1 + Y) ** 3000
     monkeypatch.setattr(parse, "MAX_EXPONENT", 10_000)
     assert parse_expression("exp(exp(5))^10", {}) == sp.exp(10 * sp.exp(5))
+
+
+@pytest.mark.parametrize(
+    "text, words",
+    [
+        ("atan2(0, 0)", "nan is not finite"),
+        ("a + log(0)", "zoo is not finite"),
+        ("tan(pi/2)*a", "zoo is not finite"),
+        ("asin(2) + a", "asin(2) is not a real number"),
+        ("(-8)^(1/3)", "is not a real number (its value is 1.0 + 1.73205080756888*I)"),
+    ],
+)
+def test_a_number_that_is_not_finite_or_not_real_is_refused_where_it_is_made(text, words):
+    with pytest.raises(ParseError, match=re.escape(words)):
+        parse_expression(text, NAMES)
+
+
+def test_real_numbers_made_by_functions_still_parse_and_agree_with_floats():
+    value = parse_expression("acos(1/2) + sqrt(2) - asin(1) + exp(-1000) + atan2(1, 1)", NAMES)
+    assert value == sp.pi / 3 + sp.sqrt(2) - sp.pi / 2 + sp.exp(-1000) + sp.pi / 4
+    assert abs(float(value) - (np.arccos(0.5) + np.sqrt(2) - np.pi / 2 + np.pi / 4)) < 1e-14
