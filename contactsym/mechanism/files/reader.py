@@ -92,7 +92,7 @@ _LAGRANGIAN_TABLES = ("energy", "points", "masses", "bodies", "loads")
 def _beyond(source: str, line: int, count: int, what: str, cap: str, limits: Limits):
     raise SceneFileError(
         f"{source}:{line}: {count} {what}, more than the cap of {getattr(limits, cap)} (Limits.{cap}); "
-        f"to read it anyway, pass limits=Limits({cap}={count}) to load_scene or read_scene."
+        f"to read it anyway, pass limits=Limits({cap}={count}) (contactsym.mechanism.files.Limits) to load_scene."
     )
 
 
