@@ -113,3 +113,15 @@ def test_a_range_is_accepted_exactly_within_the_declared_interval(low, width, st
 def test_pipeline_names_follow_the_contacts_and_switching_functions():
     assert pipeline_names(1, 0) == {"Phi": "law", "Psi": "law"}
     assert set(pipeline_names(3, 2)) == {f"{n}_{j}" for n in ("Phi", "Psi") for j in (1, 2, 3)} | {"s", "s_1", "s_2"}
+
+
+def test_the_example_plans_use_the_printed_names_and_match_the_built_in_plan():
+    from pathlib import Path
+
+    import contactsym as cs
+
+    examples = Path(__file__).resolve().parents[3] / "examples"
+    rod = read_spec((examples / "painleve-klein-rod.toml").read_text(), "rod.toml").figures
+    assert (rod.x, rod.y) == ("mu_+", "mu_-") and {"X^*", "Y^*_1", "Y^*_2", "Phi", "Psi"} <= set(rod.values)
+    tip = read_spec((examples / "double-pendulum-tip.toml").read_text(), "tip.toml").figures
+    assert tip == cs.scene("double-pendulum-tip").figure_plan  # the built-in passes its plan to the constructor
