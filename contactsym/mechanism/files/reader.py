@@ -116,7 +116,7 @@ def _sized(doc: TomlSource, limits: Limits) -> None:
             None,
             "max_names",
             count("parameters") + count("functions") + count("intervals"),
-        ),  # noqa: E501
+        ),
     )
     for what, table, key, cap, size in sizes:
         if size > getattr(limits, cap):
