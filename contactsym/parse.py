@@ -15,8 +15,21 @@ the SymPy expression directly:
 
 Names resolve only to the symbols the caller declares (so a typo is an error, not a new
 symbol) and to the functions of :data:`FUNCTIONS` and the constant ``pi``. Decimal
-numbers become exact rationals (0.1 is 1/10). Input longer than :data:`MAX_LENGTH`
-characters or nested deeper than :data:`MAX_DEPTH` is refused before any work.
+numbers become exact rationals (0.1 is 1/10).
+
+A formula is text a user writes, so its size is capped before it can cost minutes or
+memory later in the pipeline; each refusal is a :class:`ParseError` that names the cap.
+The caps are module constants, read at each call: raise one (e.g.
+``contactsym.parse.MAX_DEGREE = 100``) to read a formula beyond it.
+
+- :data:`MAX_LENGTH` characters, nested at most :data:`MAX_DEPTH` deep (refused before
+  any work), with at most :data:`MAX_CALL_DEPTH` function calls inside one another;
+- numbers, written or made by the arithmetic, below ``10**MAX_DIGITS`` (numerator and
+  denominator), and a number's power at most :data:`MAX_EXPONENT`;
+- a power of anything that is not a number (``(1 + Y)^n``) at most :data:`MAX_DEGREE`,
+  also where SymPy combines powers (``((1 + Y)^30)^30`` is a power 900);
+- the value of a number built from functions and powers (``exp(exp(10))``) at most
+  ``10**MAX_EXPONENT`` in size, so that it is still a floating-point number.
 
 The Python API takes SymPy objects and numbers only: :func:`sympy_only` is the check
 that its entry points run on their inputs, and a string there is an error that points
@@ -34,7 +47,18 @@ import sympy as sp
 
 from .errors import ContactsymError
 
-__all__ = ["FUNCTIONS", "MAX_DEPTH", "MAX_LENGTH", "ParseError", "parse_expression", "sympy_only"]
+__all__ = [
+    "FUNCTIONS",
+    "MAX_CALL_DEPTH",
+    "MAX_DEGREE",
+    "MAX_DEPTH",
+    "MAX_DIGITS",
+    "MAX_EXPONENT",
+    "MAX_LENGTH",
+    "ParseError",
+    "parse_expression",
+    "sympy_only",
+]
 
 #: The functions a formula may call, by name, with their number of arguments.
 FUNCTIONS = {
@@ -65,6 +89,12 @@ MAX_LENGTH = 10_000
 MAX_DEPTH = 100
 #: Largest power of ten in a number, and largest exponent of a number's power.
 MAX_EXPONENT = 300
+#: Most decimal digits of a number (numerator or denominator), written or computed: 1e300 has 301.
+MAX_DIGITS = 301
+#: Largest exponent (numerator or denominator) of a power whose base is not a number.
+MAX_DEGREE = 32
+#: Most function calls nested inside one another.
+MAX_CALL_DEPTH = 8
 
 _TOKEN = re.compile(
     r"(?P<space>\s+)|(?P<number>(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)|(?P<name>[A-Za-z][A-Za-z0-9_]*'*)"
@@ -89,6 +119,20 @@ def _where(source: str, line: int, column: int) -> str:
 
 def _short(text: str, limit: int = 40) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def _digits(n: int) -> int:
+    """Decimal digits of n, without printing it (Python refuses to print ints of over 4300 digits)."""
+    n = abs(n)
+    estimate = max(1, int(n.bit_length() * 0.30102999566398120))
+    return estimate + (n >= 10**estimate)
+
+
+def _shown(expr: sp.Basic) -> str:
+    """An expression for a message, cut short; a huge number by its number of digits."""
+    if expr.is_Rational and max(abs(expr.p), expr.q).bit_length() > 300:
+        return f"a number of {_digits(max(abs(expr.p), expr.q))} digits"
+    return _short(str(expr))
 
 
 def _tokens(text: str, fail) -> list[_Token]:
@@ -116,6 +160,7 @@ class _Parser:
         self.tokens = _tokens(text, self.fail)
         self.position = 0
         self.depth = 0
+        self.calls = 0  # function calls open around the current token
 
     def fail(self, column: int, message: str):
         raise ParseError(f"{_where(self.source, self.line, self.column + column)}: {message}.")
@@ -142,12 +187,60 @@ class _Parser:
         if self.depth > MAX_DEPTH:
             self.fail(self.token.column, f"nested more than {MAX_DEPTH} deep; write the formula in simpler parts")
 
+    # --- caps on what a formula may cost (see the module's documentation) ------------
+
+    def cap(self, column: int, what: str, name: str, fix: str):
+        value = globals()[name]
+        self.fail(column, f"{what}: more than contactsym.parse.{name} = {value} allows; {fix}, or raise that cap")
+
+    def bounded(self, expr: sp.Expr, column: int) -> sp.Expr:
+        """``expr``, checked where numbers are made: digits of a rational, size of any other number."""
+        if expr.is_Rational:
+            if max(abs(expr.p), expr.q) >= 10**MAX_DIGITS:
+                self.cap(column, _shown(expr), "MAX_DIGITS", "use smaller numbers")
+        elif expr.is_number:
+            if expr.has(sp.zoo, sp.nan, sp.oo, sp.S.NegativeInfinity):
+                self.fail(column, f"{_short(str(expr))} is not finite; check for a division by zero")
+            try:
+                real, imaginary = expr.evalf(15).as_real_imag()
+                beyond = real.is_Number and bool(abs(real) > sp.Integer(10) ** MAX_EXPONENT)
+            except (ArithmeticError, ValueError, TypeError, RecursionError):  # mpmath beyond its range
+                real, imaginary, beyond = None, sp.S.Zero, True
+            if beyond:
+                self.cap(
+                    column,
+                    f"the number {_short(str(expr))} is larger than 1e{MAX_EXPONENT}",
+                    "MAX_EXPONENT",
+                    "use smaller numbers",
+                )
+            if imaginary.is_Number and imaginary != 0:
+                self.fail(
+                    column,
+                    f"{_short(str(expr))} is not a real number (its value is {_short(str(real + sp.I * imaginary))})",
+                )
+        return expr
+
+    def degrees_bounded(self, expr: sp.Expr) -> None:
+        """No power of a non-number above MAX_DEGREE, also where SymPy combined two powers."""
+        for node in sp.preorder_traversal(expr):
+            if node.is_Pow and node.exp.is_Rational and not node.base.is_number:
+                if max(abs(node.exp.p), node.exp.q) > MAX_DEGREE:
+                    self.cap(
+                        0,
+                        f"the power {_shown(node.exp)} of {_short(str(node.base))} (powers combined)",
+                        "MAX_DEGREE",
+                        "write a lower power",
+                    )
+            elif node.is_Rational:
+                self.bounded(node, 0)
+
     def parse(self) -> sp.Expr:
         if self.token.kind == "end":
             self.fail(0, "empty formula; expected a number, a name or '('")
         expr = self.expression()
         if self.token.kind != "end":
             self.fail(self.token.column, f"expected an operator or the end of the formula, found {self._found()}")
+        self.degrees_bounded(expr)
         if expr.has(sp.zoo, sp.nan, sp.oo, sp.S.NegativeInfinity):
             self.fail(
                 0, f"the formula evaluates to {_short(str(expr))}, which is not finite; check for a division by zero"
@@ -159,6 +252,7 @@ class _Parser:
         return expr
 
     def expression(self) -> sp.Expr:
+        column = self.token.column
         terms = [self.term()]  # summed once at the end: adding term by term is quadratic
         while True:
             if self.take("+"):
@@ -166,9 +260,10 @@ class _Parser:
             elif self.take("-"):
                 terms.append(-self.term())
             else:
-                return sp.Add(*terms)
+                return self.bounded(sp.Add(*terms), column)
 
     def term(self) -> sp.Expr:
+        start = self.token.column
         factors = [self.unary()]
         while True:
             if self.take("*"):
@@ -180,7 +275,7 @@ class _Parser:
                     self.fail(column, "division by zero")
                 factors.append(1 / divisor)
             else:
-                return sp.Mul(*factors)
+                return self.bounded(sp.Mul(*factors), start)
 
     def unary(self) -> sp.Expr:
         self.nest()
@@ -198,21 +293,37 @@ class _Parser:
         if self.take("^", "**"):
             column = self.token.column
             exponent = self.unary()
-            # a number to a huge power would be computed in full (9^9^9): refuse it instead
-            if exponent.is_Rational and base.is_Rational:
-                bits = (base.p.bit_length() + base.q.bit_length()) * abs(exponent)
-                if abs(exponent) > MAX_EXPONENT or bits > 64 * MAX_EXPONENT:
-                    self.fail(column, f"the power {_short(str(exponent))} of {_short(str(base))} is too large")
-            return base**exponent
+            if exponent.is_Rational:
+                self.power_bounded(base, exponent, column)
+            return self.bounded(base**exponent, column)
         return base
+
+    def power_bounded(self, base: sp.Expr, exponent: sp.Rational, column: int) -> None:
+        """Refuse a power before SymPy computes it: a number's in full (9^9^9), a symbol's later, in the pipeline."""
+        size = max(abs(exponent.p), exponent.q)
+        power = f"the power {_shown(exponent)} of {_short(str(base))}"
+        if base.is_Rational:
+            bits = (base.p.bit_length() + base.q.bit_length()) * abs(exponent)
+            if abs(exponent) > MAX_EXPONENT or bits > 64 * MAX_EXPONENT:
+                self.cap(column, power, "MAX_EXPONENT", "write a smaller power")
+        elif base.is_number:
+            if size > MAX_EXPONENT:
+                self.cap(column, power, "MAX_EXPONENT", "write a smaller power")
+        elif size > MAX_DEGREE:
+            self.cap(column, power, "MAX_DEGREE", "write a lower power")
 
     def atom(self) -> sp.Expr:
         token = self.token
         if token.kind == "number":
             self.position += 1
             mantissa, _, exponent = token.text.lower().partition("e")
-            if abs(int(exponent or 0)) > MAX_EXPONENT or len(mantissa) > MAX_EXPONENT:
-                self.fail(token.column, f"the number {_short(token.text)} is out of range (at most 1e{MAX_EXPONENT})")
+            if len(exponent) > 6 or abs(int(exponent or 0)) > MAX_EXPONENT or len(mantissa) > MAX_EXPONENT:
+                self.cap(
+                    token.column,
+                    f"the number {_short(token.text)} is out of range",
+                    "MAX_EXPONENT",
+                    "use smaller numbers",
+                )
             return sp.Integer(token.text) if token.text.isdigit() else sp.Rational(token.text)
         if token.kind == "name":
             self.position += 1
@@ -231,14 +342,18 @@ class _Parser:
         function, arity = FUNCTIONS[token.text]
         self.expect("(", "'('")
         self.nest()
+        self.calls += 1
+        if self.calls > MAX_CALL_DEPTH:
+            self.cap(token.column, "function calls nested too deep", "MAX_CALL_DEPTH", "name a part")
         arguments = [self.expression()]
         while self.take(","):
             arguments.append(self.expression())
         self.expect(")", f"',' or ')' to close {token.text}(")
         self.depth -= 1
+        self.calls -= 1
         if len(arguments) != arity:
             self.fail(token.column, f"{token.text} takes {arity} argument(s), got {len(arguments)}")
-        return function(*arguments)
+        return self.bounded(function(*arguments), token.column)
 
     def name(self, token: _Token) -> sp.Expr:
         if token.text in self.names:

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import functools
+import re
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -10,6 +13,7 @@ from hypothesis import strategies as st
 from sympy.physics.mechanics import dynamicsymbols
 
 import contactsym as cs
+from contactsym import parse
 from contactsym.numerics import PointClassifier, certified_sign, decide
 from contactsym.parse import MAX_DEPTH, MAX_LENGTH, ParseError, parse_expression, sympy_only
 
@@ -145,12 +149,11 @@ def test_parser_refuses_long_and_deep_input_quickly():
     with pytest.raises(ParseError, match="more than"):
         parse_expression("a+" * MAX_LENGTH + "a", NAMES)
     for deep in ("(" * 3000 + "a" + ")" * 3000, "-" * 5000 + "a", "a^" * 3000 + "a", "sin(" * 1000 + "a" + ")" * 1000):
-        with pytest.raises(ParseError, match="nested more than"):
+        with pytest.raises(ParseError, match="nested (more than|too deep)"):
             parse_expression(deep, NAMES)
     for huge in ("9^9^9^9", "2**100000", "1e100000", "10^(-400)", "((2^300)^300)^300"):
-        with pytest.raises(ParseError, match="too large|out of range"):
+        with pytest.raises(ParseError, match="MAX_EXPONENT|MAX_DIGITS"):
             parse_expression(huge, NAMES)
-    assert parse_expression("a^1000", NAMES) == a**1000  # a symbol's power costs nothing
     depth = MAX_DEPTH // 2 - 1
     assert parse_expression("(" * depth + "a" + ")" * depth, NAMES) == a
 
@@ -199,3 +202,90 @@ def test_api_accepts_sympy_objects_and_numbers():
     assert cs.KelvinVoigt(2, sp.Rational(1, 2)).phi_psi(None, None, None) == (-2, -sp.Rational(1, 2))
     with pytest.raises(ParseError, match="neither a SymPy object nor a number"):
         sympy_only(object(), "eps")
+
+
+# --- caps on what a formula may cost -----------------------------------------------------------------
+
+BOMBS = [
+    ("N*(1+Y)^3000", "MAX_DEGREE"),
+    ("(N+Y)^(10^9)", "MAX_DEGREE"),
+    ("((N+1)^30)^30", "MAX_DEGREE"),
+    ("(N+1)^20*(N+1)^20", "MAX_DEGREE"),
+    ("N^(1/1000)", "MAX_DEGREE"),
+    ("*".join(["1e300"] * 30), "MAX_DIGITS"),
+    ("1e300*10*N", "MAX_DIGITS"),
+    ("N*(1e300*1e300*Y + 1)", "MAX_DIGITS"),
+    ("exp(exp(exp(exp(10))))", "MAX_EXPONENT"),
+    ("exp(1000)*N", "MAX_EXPONENT"),
+    ("sqrt(2)^(10^9)", "MAX_EXPONENT"),
+    ("1e" + "9" * 5000, "MAX_EXPONENT"),
+    ("sin(" * 9 + "N" + ")" * 9, "MAX_CALL_DEPTH"),
+]
+
+
+@pytest.mark.parametrize("text, cap", BOMBS)
+def test_formulas_beyond_a_cap_are_refused_naming_the_cap(text, cap):
+    N, Y = sp.symbols("N Y", real=True)
+    with pytest.raises(ParseError) as raised:
+        parse_expression(text, {"N": N, "Y": Y}, source="f.toml", line=3)
+    message = str(raised.value)
+    assert message.startswith("f.toml:3:") and f"contactsym.parse.{cap} = " in message and "raise that cap" in message
+    assert "\n" not in message and len(message) < 300
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("N*(1+Y)^32", lambda N, Y: N * (1 + Y) ** 32),
+        ("((N+1)^4)^8", lambda N, Y: (N + 1) ** 32),
+        ("N^(-32) + N^(1/32)", lambda N, Y: N**-32 + N ** sp.Rational(1, 32)),
+        ("1e300*N/1e300", lambda N, Y: N),
+        ("exp(exp(5))*N", lambda N, Y: sp.exp(sp.exp(5)) * N),
+        ("2^300*N", lambda N, Y: 2**300 * N),
+        ("sin(" * 8 + "N" + ")" * 8, lambda N, Y: functools.reduce(lambda e, _: sp.sin(e), range(8), N)),
+    ],
+)
+def test_formulas_within_the_caps_still_parse(text, expected):
+    N, Y = sp.symbols("N Y", real=True)
+    assert parse_expression(text, {"N": N, "Y": Y}) == expected(N, Y)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(-80, 80), st.integers(1, 3))
+def test_a_symbols_power_is_refused_exactly_above_the_cap(numerator, denominator):
+    exponent = sp.Rational(numerator, denominator)
+    text = f"(a + 1)^({numerator}/{denominator})"
+    if max(abs(exponent.p), exponent.q) > parse.MAX_DEGREE:
+        with pytest.raises(ParseError, match="MAX_DEGREE"):
+            parse_expression(text, NAMES)
+    else:
+        assert parse_expression(text, NAMES) == (a + 1) ** exponent
+
+
+def test_a_cap_is_raised_by_its_module_constant(monkeypatch):
+    N, Y = sp.symbols("N Y", real=True)
+    monkeypatch.setattr(parse, "MAX_DEGREE", 3000)
+    assert parse_expression("N*(1+Y)^3000", {"N": N, "Y": Y}) == N * (1 + Y) ** 3000
+    monkeypatch.setattr(parse, "MAX_EXPONENT", 10_000)
+    assert parse_expression("exp(exp(5))^10", {}) == sp.exp(10 * sp.exp(5))
+
+
+@pytest.mark.parametrize(
+    "text, words",
+    [
+        ("atan2(0, 0)", "nan is not finite"),
+        ("a + log(0)", "zoo is not finite"),
+        ("tan(pi/2)*a", "zoo is not finite"),
+        ("asin(2) + a", "asin(2) is not a real number"),
+        ("(-8)^(1/3)", "is not a real number (its value is 1.0 + 1.73205080756888*I)"),
+    ],
+)
+def test_a_number_that_is_not_finite_or_not_real_is_refused_where_it_is_made(text, words):
+    with pytest.raises(ParseError, match=re.escape(words)):
+        parse_expression(text, NAMES)
+
+
+def test_real_numbers_made_by_functions_still_parse_and_agree_with_floats():
+    value = parse_expression("acos(1/2) + sqrt(2) - asin(1) + exp(-1000) + atan2(1, 1)", NAMES)
+    assert value == sp.pi / 3 + sp.sqrt(2) - sp.pi / 2 + sp.exp(-1000) + sp.pi / 4
+    assert abs(float(value) - (np.arccos(0.5) + np.sqrt(2) - np.pi / 2 + np.pi / 4)) < 1e-14

@@ -7,9 +7,7 @@ from .contact import Contact, contact_manifold, plain_symbol, solve_linear
 from .contact_space import ContactSpace, lagrangian_accelerations, mass_determinant, mass_determinant_is_zero, t
 from .files import (
     COMPLIANCE_LAWS,
-    ContactsMixin,
     FigurePlan,
-    PlaneMixin,
     SceneFileError,
     TomlSource,
     load_scene,
@@ -23,9 +21,7 @@ __all__ = [
     "COMPLIANCE_LAWS",
     "Contact",
     "ContactSpace",
-    "ContactsMixin",
     "FigurePlan",
-    "PlaneMixin",
     "Scene",
     "SceneFileError",
     "TomlSource",

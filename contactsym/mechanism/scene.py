@@ -17,7 +17,7 @@ import sympy as sp
 from ..algebra.basic import known_sign, present
 from ..algebra.canonical_form import present_factor
 from ..counts.regions import count_regions
-from ..errors import SignPatternError
+from ..errors import SceneError, SignPatternError
 from ..parse import sympy_only
 from ..printing.latex_output import Formula, Numbering, _repr_latex, tex
 from ..stages import equilibria as _equilibria
@@ -98,6 +98,12 @@ class Scene:
     equations : dict, optional
         The paper's equation numbers of the example the scene reproduces,
         ``{formula key: (numbers, note)}`` (a built-in scene passes its module's ``EQUATIONS``).
+    count_presentation : dict, optional
+        The presentation the equilibrium counts use instead of ``presentation`` (e.g.
+        ``mu_j = |v_j|/kappa`` where the counts do not depend on the signs).
+    figure_plan : FigurePlan, optional
+        What the report draws (a scene file's ``[figures]``,
+        :class:`contactsym.mechanism.files.FigurePlan`).
 
     Examples
     --------
@@ -128,6 +134,8 @@ class Scene:
         eps: sp.Symbol | None = None,
         contact_space=None,
         equations: dict | None = None,
+        count_presentation: dict | None = None,
+        figure_plan=None,
     ):
         derived = contact_space is not None
         coordinates, accelerations, contacts = scene_parts(coordinates, accelerations, contacts, derived=derived)
@@ -146,6 +154,25 @@ class Scene:
             sympy_only(k, "a presentation key"): sympy_only(v, "a presentation value")
             for k, v in (presentation or {}).items()
         }
+        #: The presentation of the equilibrium counts, or None for ``presentation``.
+        self.count_presentation = None
+        if count_presentation is not None:
+            if not isinstance(count_presentation, dict):
+                raise SceneError(
+                    f"count_presentation must be a dict {{symbol: expression}}, not {shorten(count_presentation)}."
+                )
+            self.count_presentation = {
+                sympy_only(k, "a count_presentation key"): sympy_only(v, "a count_presentation value")
+                for k, v in count_presentation.items()
+            }
+        if figure_plan is not None and not all(
+            hasattr(figure_plan, k) for k in ("x", "y", "x_range", "y_range", "values")
+        ):
+            raise SceneError(
+                f"figure_plan = {shorten(figure_plan)} must be a FigurePlan (contactsym.FigurePlan) or None."
+            )
+        #: What a report draws for this scene (region maps, phase portrait), or None.
+        self.figure_plan = figure_plan
         self._declared_positive = tuple(self.plain(e) for e in positive)
         #: The paper's own equation numbers of this scene, {formula key: (numbers, note)}.
         self.equations = check_equations(equations)

@@ -2,7 +2,10 @@
 
 A scene file's ``[figures]`` table gives the plan (:class:`contactsym.mechanism.files.reader.FigurePlan`):
 the two parameters of the plane, their ranges and numbers for the other symbols. The
-figures are decided by the Scene object and its plan, never by the scene's name.
+figures are decided by the Scene object and its plan, never by the scene's name. The reader
+checks the plan against the scene's declarations; whether its values are complete depends on
+the derived regions, so a figure that lacks values is skipped with a note that names them all
+(:func:`missing_values`).
 """
 
 from __future__ import annotations
@@ -29,7 +32,7 @@ from . import (
     save_figure,
 )
 
-__all__ = ["RegionMapData", "plan_figures", "region_map_data", "region_map_plot"]
+__all__ = ["RegionMapData", "missing_values", "plan_figures", "region_map_data", "region_map_plot"]
 
 _HATCHES = {"stable for every law": (STABLE_HATCH, "tab:blue"), "unstable for every law": (UNSTABLE_HATCH, "tab:red")}
 _OTHER_HATCHES = [("\\\\\\", "tab:green"), ("...", "tab:purple"), ("++", "tab:orange"), ("--", "tab:brown")]
@@ -45,6 +48,25 @@ class RegionMapData:
     grids: dict  # region name -> plotting.RegionData
     curves: dict  # name of a region that is a curve (the Hopf line) -> (X, Y, [fields whose zero sets draw it])
     skipped: dict  # region name -> why it is not drawn
+
+
+def _named(expr) -> sp.Expr:
+    """A load such as Y(x, xdot) takes one number by its function's name, arguments and all."""
+    return expr.xreplace({a: sp.Symbol(a.func.__name__) for a in expr.atoms(sp.core.function.AppliedUndef)})
+
+
+def missing_values(expr, plan) -> list[str]:
+    """The names of ``expr``'s symbols that the plan neither puts on an axis nor gives a value for.
+
+    Examples
+    --------
+    >>> from contactsym.mechanism.files.spec import FigurePlan
+    >>> a, mu, m = sp.symbols("alpha mu m", positive=True)
+    >>> missing_values(sp.Lt(mu * m, sp.cot(a) + sp.Symbol("Phi_1")), FigurePlan("alpha", "mu", (0, 1), (0, 1), {"m": 1}))
+    ['Phi_1']
+    """
+    given = {plan.x, plan.y, *plan.values}
+    return sorted({str(s) for s in _named(expr).free_symbols} - given)
 
 
 def region_map_data(scene, plan, *, resolution: int = 200) -> RegionMapData:
@@ -66,6 +88,10 @@ def region_map_data(scene, plan, *, resolution: int = 200) -> RegionMapData:
     for name, region in scene.regions().items():
         if region.condition in (sp.true, sp.false):
             skipped[name] = f"it is {region.condition} throughout"
+            continue
+        missing = missing_values(region.condition, plan)
+        if missing:  # every missing name at once, in the names the plan uses
+            skipped[name] = f"give [figures] values for {', '.join(missing)}"
             continue
         if isinstance(region.condition, sp.Equality):  # a curve: drawn as the zero set of lhs - rhs
             try:
@@ -131,9 +157,7 @@ def _portrait_needs(scene) -> set[str]:
     fast = scene.fast_subsystem()
     rhs = sp.Matrix(scene.present(fast.rhs))
     laws = {s for s in (fast.Phi[0], fast.Psi[0]) if isinstance(s, sp.Symbol)}
-    # a load such as Y(x, xdot) takes one number by its function's name, arguments and all
-    applied = {a: sp.Symbol(a.func.__name__) for a in rhs.atoms(sp.core.function.AppliedUndef)}
-    symbols = rhs.xreplace(applied).free_symbols - set(fast.u) - set(fast.v) - laws
+    symbols = _named(rhs).free_symbols - set(fast.u) - set(fast.v) - laws
     return {str(s) for s in symbols}
 
 

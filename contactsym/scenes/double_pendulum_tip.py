@@ -13,7 +13,6 @@ from .link_chain import build_chain
 
 
 def build() -> Scene:
-    scene = build_chain(2, name="double-pendulum-tip")
     # the report's region map: the arm's angles at equal masses, mu = 0.8, the tip pressed (s = sign N = 1)
-    scene.figure_plan = FigurePlan("q1", "q2", (-1.5, 1.5), (-1.5, 1.5), {"m1": 1, "m2": 1, "mu": 0.8, "s": 1})
-    return scene
+    plan = FigurePlan("q1", "q2", (-1.5, 1.5), (-1.5, 1.5), {"m1": 1, "m2": 1, "mu": 0.8, "s": 1})
+    return build_chain(2, name="double-pendulum-tip", figure_plan=plan)

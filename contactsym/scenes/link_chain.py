@@ -16,7 +16,7 @@ from ..laws import Coulomb
 from ..mechanism.scene import Contact, Scene
 
 
-def build_chain(n: int, name: str | None = None) -> Scene:
+def build_chain(n: int, name: str | None = None, **options) -> Scene:
     """The n-link chain with a frictional tip contact.
 
     Examples
@@ -51,4 +51,5 @@ def build_chain(n: int, name: str | None = None) -> Scene:
         name=name or f"chain-{n}",
         solve_for=mu,
         description=f"a {n}-link chain whose tip slides on a rough floor",
+        **options,  # e.g. a figure_plan
     )

@@ -61,7 +61,7 @@ def build() -> Scene:
         sp.sin(phi_): 1 / sp.sqrt(1 + kappa**2),  # kappa = cot(phi), 0 < phi < pi/2
         sp.cos(phi_): kappa / sp.sqrt(1 + kappa**2),
     }
-    scene = Scene.from_lagrangian(
+    return Scene.from_lagrangian(
         L,
         [x, y, phi],
         contacts,
@@ -73,10 +73,9 @@ def build() -> Scene:
         presentation=presentation,
         positive=(sp.sin(phi), sp.cos(phi)),  # 0 < phi < pi/2
         description="(5.1)-(5.10): Painleve-Klein system, rigid rod, deformable guides",
+        # counts of (5.3) do not depend on the signs s_j: the paper writes them with mu_j = |v_j|/kappa
+        count_presentation={**presentation, mu1: sp.Abs(v1) / kappa, mu2: sp.Abs(v2) / kappa},
     )
-    # counts of (5.3) do not depend on the signs s_j: the paper writes them with mu_j = |v_j|/kappa
-    scene.count_presentation = {**presentation, mu1: sp.Abs(v1) / kappa, mu2: sp.Abs(v2) / kappa}
-    return scene
 
 
 #: Paper numbers of the count regions, by a word in the region's name.

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import json
 from pathlib import Path
@@ -13,7 +14,7 @@ import pytest
 import contactsym as cs
 from contactsym.cli import main
 from contactsym.mechanism.files.reader import load_scene
-from contactsym.plotting.plan_figures import region_map_data
+from contactsym.plotting.plan_figures import missing_values, region_map_data
 
 matplotlib.use("Agg")
 
@@ -105,3 +106,16 @@ def test_hopf_line_on_the_map_crosses_alpha_90_at_the_special_case_root():
     crossing = Y[np.nonzero(signs[1:] != signs[:-1])[0], column]
     step = Y[1, 0] - Y[0, 0]
     assert len(crossing) == 1 and abs(crossing[0] - 1 / np.sqrt(3)) <= step
+
+
+def test_a_plan_without_some_values_skips_a_region_naming_every_missing_value():
+    scene = _brake()
+    plan = scene.figure_plan
+    hopf = scene.regions()["Hopf line"].condition
+    assert missing_values(hopf, plan) == []  # the example's plan is complete
+    short = dataclasses.replace(plan, values={k: v for k, v in plan.values.items() if k not in ("Phi_1", "m")})
+    data = region_map_data(scene, short, resolution=10)
+    # the Hopf line (4.7) holds Phi_1 and m; the closed-form stability regions need neither
+    assert data.skipped["Hopf line"] == "give [figures] values for Phi_1, m"
+    assert {str(s) for s in hopf.free_symbols} >= {"Phi_1", "m"}
+    assert sorted(data.grids) == ["law-dependent", "stable for every law"]

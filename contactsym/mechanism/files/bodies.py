@@ -1,8 +1,9 @@
-"""Scene files, the mechanics: points, bodies and loads in the plane, and the table of laws.
+"""Scene files, the mechanics: points, masses, bodies and loads in the plane.
 
-:class:`PlaneMixin` gives the reader of :mod:`contactsym.mechanism.files.reader` the methods that build
-what ``Scene.from_lagrangian`` needs (``sympy.physics.mechanics`` Points, frames,
-Particles, RigidBodies) from positions written as (x(q), y(q)).
+:func:`read_points` and :func:`read_motion` read the tables into spec items
+(:mod:`contactsym.mechanism.files.spec`); :class:`Plane` builds from those items what
+``Scene.from_lagrangian`` needs (``sympy.physics.mechanics`` Points, frames, Particles,
+RigidBodies), from positions written as (x(q), y(q)).
 """
 
 from __future__ import annotations
@@ -10,110 +11,125 @@ from __future__ import annotations
 import sympy as sp
 from sympy.physics.mechanics import Lagrangian, Particle, Point, ReferenceFrame, RigidBody, inertia
 
-from ...laws import Generic, KelvinVoigt, Law
-from .toml_source import shown
+from .contacts import COMPLIANCE_LAWS  # noqa: F401  (0.1's path of the table of laws)
+from .declarations import FormulaReader
+from .spec import BodySpec, LoadSpec, MassSpec, PointSpec, SceneSpec, removed_mixin
+from .toml_source import SceneFileError
 
-__all__ = ["COMPLIANCE_LAWS", "PlaneMixin"]
-
-
-def _generic(reader, table, where):
-    reader.doc.keys(table, where, ("name",))
-    return Generic()
+__all__ = ["Plane", "read_motion", "read_points"]
 
 
-def _kelvin_voigt(reader, table, where):
-    reader.doc.keys(table, where, ("name", "stiffness", "damping"))
-    return KelvinVoigt(*(reader.formula(table.get(k, 1), where, k) for k in ("stiffness", "damping")))
+def read_points(reader: FormulaReader) -> tuple[PointSpec, ...]:
+    """``[points]``: ``P = [x, y]`` or ``P = {position = [x, y], body = "C", angle = "theta"}``."""
+    points: dict[str, PointSpec] = {}
+    for name, entry in reader.section("points").items():
+        body = angle = None
+        if isinstance(entry, dict):
+            reader.checked(entry, "points", "points.entry")
+            if "body" in entry:
+                body = reader.reference(entry, "body", "points", list(points), "points declared above it")
+            angle = reader.formula(entry["angle"], "points", name) if "angle" in entry else None
+            if (body is None) != (angle is None):
+                reader.doc.fail("points", name, "a material point needs both body = ... and angle = ...")
+            entry = entry["position"]
+        position = reader.pair(entry, "points", name)
+        points[name] = PointSpec(name, position, body, angle, reader.doc.line("points", name))
+    return tuple(points.values())
 
 
-def _user_law(reader, table, where):
-    """``N = "-k*q/eps^2 - d*q'/eps"``: q the deformation, q' its rate, eps the small parameter.
+def read_motion(reader: FormulaReader, points: tuple[PointSpec, ...]) -> dict:
+    """``[[masses]]``, ``[[bodies]]``, ``[energy]`` and ``[[loads]]``: the SceneSpec fields of a Lagrangian."""
+    known = [p.name for p in points]
+    masses, bodies, loads = [], [], []
+    for index, entry in enumerate(reader.section("masses", kind=list)):
+        where = f"masses.{index}"
+        reader.checked(entry, where, "masses")
+        point = reader.reference(entry, "point", where, known, "[points]")
+        masses.append(MassSpec(point, reader.formula(entry["mass"], where, "mass")))
+    for index, entry in enumerate(reader.section("bodies", kind=list)):
+        where = f"bodies.{index}"
+        reader.checked(entry, where, "bodies")
+        angle = reader.formula(entry["angle"], where, "angle")
+        point = reader.reference(entry, "point", where, known, "[points]")
+        mass, moment = (reader.formula(entry[k], where, k) for k in ("mass", "inertia"))
+        bodies.append(BodySpec(point, angle, mass, moment))
+    energy = reader.checked(reader.section("energy"), "energy", "energy")
+    kinetic, potential = (reader.formula(energy.get(k, 0), "energy", k) for k in ("kinetic", "potential"))
+    for index, entry in enumerate(reader.section("loads", kind=list)):
+        where = f"loads.{index}"
+        reader.checked(entry, where, "loads")
+        if set(entry) == {"point", "force"}:
+            point = reader.reference(entry, "point", where, known, "[points]")
+            loads.append(LoadSpec(point=point, force=reader.pair(entry["force"], where, "force")))
+        elif set(entry) == {"angle", "moment"}:
+            angle, moment = (reader.formula(entry[k], where, k) for k in ("angle", "moment"))
+            loads.append(LoadSpec(angle=angle, moment=moment))
+        else:
+            reader.doc.fail(where, None, "a load is point = ... with force = [Fx, Fy], or angle = ... with moment")
+    return dict(masses=tuple(masses), bodies=tuple(bodies), loads=tuple(loads), kinetic=kinetic, potential=potential)
 
-    Inside the law these three names mean only that, whatever else the file calls q or eps.
+
+class Plane:
+    """The inertial frame O, the points of a spec and the frames of the angles they turn with.
+
+    Examples
+    --------
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> x, theta = dynamicsymbols("x theta")
+    >>> plane = Plane((PointSpec("C", (x, sp.S.Zero), None, None, 1),
+    ...                PointSpec("P", (x, sp.S.One), "C", theta, 2)))
+    >>> plane.points["P"].vel(plane.frame)
+    (-Derivative(theta(t), t) + Derivative(x(t), t))*O.x
     """
-    reader.doc.keys(table, where, ("name", "N", "check"), required=("N",))
-    q, qdot = sp.symbols("q qdot", real=True)
-    local = {"q": q, "q'": qdot, "eps": reader.eps}
-    expr = reader.formula(table["N"], where, "N", {**reader.names, **local})
-    return Law(expr, q, qdot, reader.eps, check=bool(table.get("check", True)))
 
-
-#: Compliance laws by their name in a file; each reads its table into a Compliance.
-#: Add an entry to make a new law available to scene files.
-COMPLIANCE_LAWS = {"generic": _generic, "kelvin-voigt": _kelvin_voigt, "law": _user_law}
-
-
-class PlaneMixin:
-    """Planar mechanics for the scene-file reader (which supplies ``doc``, ``data`` and ``formula``)."""
-
-    def plane(self) -> None:
-        """The inertial frame O, the [points] and the frames of the angles they turn with."""
-        self.frame, self.origin, self.points, self.frames = ReferenceFrame("O"), Point("O"), {}, {}
+    def __init__(self, points: tuple[PointSpec, ...]):
+        self.frame, self.origin = ReferenceFrame("O"), Point("O")
         self.origin.set_vel(self.frame, 0)
-        for name, spec in self.doc.table(self.data, "points", "").items():
-            body = angle = None
-            if isinstance(spec, dict):
-                self.doc.keys(spec, "points", ("position", "body", "angle"), ("position",))
-                body, angle, spec = spec.get("body"), spec.get("angle"), spec["position"]
-            px, py = self.pair(spec, "points", name)
-            if body is None:
-                point = self.origin.locatenew(name, px * self.frame.x + py * self.frame.y)
+        self.points: dict[str, Point] = {}
+        self.frames: dict = {}
+        for spec in points:
+            px, py = spec.position
+            if spec.body is None:
+                point = self.origin.locatenew(spec.name, px * self.frame.x + py * self.frame.y)
                 point.set_vel(self.frame, point.pos_from(self.origin).dt(self.frame))
             else:
-                if body not in self.points:
-                    self.doc.fail("points", name, f"body = {shown(body)} must name a point declared above it")
-                base = self.points[body]
-                offset = self.origin.locatenew(name, px * self.frame.x + py * self.frame.y).pos_from(base)
-                point = base.locatenew(name, offset)
-                point.v2pt_theory(base, self.frame, self.turning(angle, "points", name))
-            self.points[name] = point
+                base = self.points[spec.body]
+                offset = self.origin.locatenew(spec.name, px * self.frame.x + py * self.frame.y).pos_from(base)
+                point = base.locatenew(spec.name, offset)
+                point.v2pt_theory(base, self.frame, self.turning(spec.angle))
+            self.points[spec.name] = point
 
-    def turning(self, angle, where: str, key: str) -> ReferenceFrame:
-        expr = self.formula(angle, where, key)
-        if expr not in self.frames:
-            self.frames[expr] = self.frame.orientnew(f"B{len(self.frames) + 1}", "Axis", [expr, self.frame.z])
-        return self.frames[expr]
+    def turning(self, angle: sp.Expr) -> ReferenceFrame:
+        """The frame turning with ``angle`` about the z axis (one per distinct angle, B1, B2, ...)."""
+        if angle not in self.frames:
+            self.frames[angle] = self.frame.orientnew(f"B{len(self.frames) + 1}", "Axis", [angle, self.frame.z])
+        return self.frames[angle]
 
-    def lagrangian(self) -> tuple:
-        items = []
-        for index, spec in enumerate(self.doc.table(self.data, "masses", "", kind=list)):
-            where = f"masses.{index}"
-            self.doc.keys(spec, where, ("point", "mass"), ("point", "mass"))
-            items.append(Particle(f"m{index}", self.point(spec, where), self.formula(spec["mass"], where, "mass")))
-        for index, spec in enumerate(self.doc.table(self.data, "bodies", "", kind=list)):
-            where = f"bodies.{index}"
-            self.doc.keys(spec, where, ("point", "angle", "mass", "inertia"), ("point", "angle", "mass", "inertia"))
-            frame = self.turning(spec["angle"], where, "angle")
-            point, mass = self.point(spec, where), self.formula(spec["mass"], where, "mass")
-            central = (inertia(frame, 0, 0, self.formula(spec["inertia"], where, "inertia")), point)
-            items.append(RigidBody(f"body{index}", point, frame, mass, central))
-        energy = self.doc.table(self.data, "energy", "")
-        self.doc.keys(energy, "energy", ("kinetic", "potential"))
+    def vector(self, pair) -> object:
+        return pair[0] * self.frame.x + pair[1] * self.frame.y
+
+    def lagrangian(self, spec: SceneSpec) -> tuple:
+        """The Lagrangian of the spec's masses, bodies and energy, and its loads as (Point or frame, Vector)."""
+        items = [Particle(f"m{i}", self.points[m.point], m.mass) for i, m in enumerate(spec.masses)]
+        for index, body in enumerate(spec.bodies):
+            frame, point = self.turning(body.angle), self.points[body.point]
+            central = (inertia(frame, 0, 0, body.inertia), point)
+            items.append(RigidBody(f"body{index}", point, frame, body.mass, central))
         L = Lagrangian(self.frame, *items) if items else sp.S.Zero
-        L += self.formula(energy.get("kinetic", 0), "energy", "kinetic")
-        L -= self.formula(energy.get("potential", 0), "energy", "potential")
+        L += spec.kinetic
+        L -= spec.potential
         if L == 0:
-            self.doc.fail(
-                "", None, "no motion: give [accelerations], or [energy] kinetic = ..., [[masses]], [[bodies]]"
+            raise SceneFileError(
+                f"{spec.source}:1: no motion: give [accelerations], or [energy] kinetic = ..., [[masses]], [[bodies]]."
             )
-        return L, self.loads()
-
-    def point(self, spec, where: str):
-        if spec["point"] not in self.points:
-            self.doc.fail(where, "point", f"point = {shown(spec['point'])} is not among the [points]")
-        return self.points[spec["point"]]
-
-    def loads(self) -> list:
         loads = []
-        for index, spec in enumerate(self.doc.table(self.data, "loads", "", kind=list)):
-            where = f"loads.{index}"
-            self.doc.keys(spec, where, ("point", "force", "angle", "moment"))
-            if set(spec) == {"point", "force"}:
-                fx, fy = self.pair(spec["force"], where, "force")
-                loads.append((self.point(spec, where), fx * self.frame.x + fy * self.frame.y))
-            elif set(spec) == {"angle", "moment"}:
-                moment = self.formula(spec["moment"], where, "moment")
-                loads.append((self.turning(spec["angle"], where, "angle"), moment * self.frame.z))
+        for load in spec.loads:
+            if load.point is not None:
+                loads.append((self.points[load.point], self.vector(load.force)))
             else:
-                self.doc.fail(where, None, "a load is point = ... with force = [Fx, Fy], or angle = ... with moment")
-        return loads
+                loads.append((self.turning(load.angle), load.moment * self.frame.z))
+        return L, loads
+
+
+#: 0.1's mixin of the reader (removed: see :class:`Plane`).
+PlaneMixin = removed_mixin("PlaneMixin")

@@ -1,92 +1,174 @@
 """Scene files, the contacts: gaps, reactions, compliance laws and friction.
 
-:class:`ContactsMixin` gives the reader of :mod:`contactsym.mechanism.files.reader` the methods that
-read the ``[[contacts]]`` tables into :class:`contactsym.mechanism.contact.Contact` objects, each
-error placed at its table and key.
+:func:`read_contacts` reads the ``[[contacts]]`` tables into
+:class:`~contactsym.mechanism.files.spec.ContactSpec` items, each error placed at its table
+and key; :func:`build_contact` makes a :class:`contactsym.mechanism.contact.Contact` of one,
+with its law from :data:`COMPLIANCE_LAWS`.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+
 import sympy as sp
 
 from ...errors import ContactsymError
-from ...laws import Coulomb, Viscous
+from ...laws import Coulomb, Generic, KelvinVoigt, Law, Viscous
 from ...parse import ParseError
 from ..contact import Contact
-from .bodies import COMPLIANCE_LAWS
+from .declarations import FormulaReader
+from .spec import ContactSpec, FrictionSpec, LawSpec, removed_mixin
 from .toml_source import SceneFileError, shown
 
-__all__ = ["ContactsMixin"]
+__all__ = ["COMPLIANCE_LAWS", "LawKind", "build_contact", "read_contacts"]
+
+#: The deformation q and its rate q' inside a law written as a formula.
+_Q, _QDOT = sp.symbols("q qdot", real=True)
 
 
-class ContactsMixin:
-    """Reading ``[[contacts]]``; the reader supplies ``doc``, ``data``, ``names``, ``formula``,
-    ``declare``, ``pair`` and, for a Lagrangian, ``points`` and ``frame``."""
+@dataclass(frozen=True)
+class LawKind:
+    """How a law is written in a file and built: its formulas (with defaults, None for
+    required), its true/false flags, and ``build(formulas, flags, eps)``.
 
-    def compliance(self, spec, where: str):
-        spec = {"name": spec} if isinstance(spec, str) else spec
-        if not isinstance(spec, dict) or spec.get("name") not in COMPLIANCE_LAWS:
-            self.doc.fail(
-                where,
-                "law",
-                f"unknown law {shown(spec.get('name') if isinstance(spec, dict) else spec)}; use one of {', '.join(COMPLIANCE_LAWS)} "
-                "(a table {name = ..., ...} for laws with parameters)",
-            )
-        return COMPLIANCE_LAWS[spec["name"]](self, spec, where)
+    With ``local``, its formulas may use ``q`` (the deformation), ``q'`` (its rate) and
+    ``eps`` (the small parameter), which inside the law mean only that.
+    """
 
-    def check_gap(self, gap, coordinates, lagrangian: bool, where: str) -> None:
-        listed = ", ".join(q.func.__name__ for q in coordinates)
-        if lagrangian and not gap.has(*coordinates):
-            self.doc.fail(where, "gap", f"the gap {gap} does not depend on the coordinates {listed}; write it in them")
-        if not lagrangian and gap not in coordinates:
-            self.doc.fail(
-                where,
-                "gap",
-                f"with [accelerations] the gap must be one of the coordinates {listed}, not {gap}; "
-                "for a gap function give the motion by a Lagrangian ([energy], [[masses]], [[bodies]])",
-            )
+    build: Callable
+    formulas: Mapping = field(default_factory=dict)
+    flags: Mapping = field(default_factory=dict)
+    local: bool = False
 
-    def contacts(self, coordinates, lagrangian: bool) -> list:
-        contacts = []
-        for index, spec in enumerate(self.doc.table(self.data, "contacts", "", required=True, kind=list)):
-            where = f"contacts.{index}"
-            self.doc.keys(spec, where, ("gap", "reaction", "unilateral", "law", "friction"), ("gap", "reaction"))
-            gap = self.formula(spec["gap"], where, "gap")
-            self.check_gap(gap, coordinates, lagrangian, where)
-            reaction = sp.Symbol(str(spec["reaction"]), real=True)
-            self.declare(spec["reaction"], reaction, where, "reaction")
-            unilateral = spec.get("unilateral", False)
-            if not isinstance(unilateral, bool):
-                self.doc.fail(where, "unilateral", "unilateral must be true or false")
-            friction = self.friction(spec["friction"], where, lagrangian) if "friction" in spec else None
-            try:
-                law = self.compliance(spec.get("law", "generic"), where)
-                contacts.append(Contact(gap, reaction, law, friction, unilateral))
-            except (SceneFileError, ParseError):
-                raise
-            except ContactsymError as error:  # the API's own message, placed at the contact's law
-                self.doc.fail(where, "law", str(error).rstrip("."))
-        if not contacts:
-            self.doc.fail("", None, "no [[contacts]]; add one with gap = ... and reaction = ...")
-        return contacts
+    @property
+    def keys(self) -> tuple[str, ...]:
+        return ("name", *self.formulas, *self.flags)
 
-    def friction(self, spec, where: str, lagrangian: bool):
-        if not isinstance(spec, dict):
-            self.doc.fail(where, "friction", "friction must be a table {mu = ..., direction = ...}")
-        self.doc.keys(spec, where, ("mu", "viscous", "point", "direction"), ("direction",))
-        if ("mu" in spec) == ("viscous" in spec):
-            self.doc.fail(where, "friction", "give friction either mu = ... (Coulomb) or viscous = ... (viscous)")
-        law, key = (Coulomb, "mu") if "mu" in spec else (Viscous, "viscous")
-        coefficient = self.formula(spec[key], where, "friction")
-        direction = spec["direction"]
-        if not lagrangian:
-            if not isinstance(direction, dict):
-                self.doc.fail(where, "friction", "with [accelerations], give direction = {coordinate = coefficient}")
-            coordinates = {n: self.names.get(n) for n in direction}
-            if not all(isinstance(q, sp.core.function.AppliedUndef) for q in coordinates.values()):
-                self.doc.fail(where, "friction", f"direction names {list(direction)} must be coordinates")
-            return law(coefficient, {coordinates[n]: self.formula(v, where, "friction") for n, v in direction.items()})
-        if spec.get("point") not in self.points:
-            self.doc.fail(where, "friction", f"friction needs point = one of the [points] {sorted(self.points)}")
-        dx, dy = self.pair(direction, where, "friction")
-        return law(coefficient, dx * self.frame.x + dy * self.frame.y, self.points[spec["point"]])
+
+#: Compliance laws by their name in a file. Add an entry to make a new law available to scene files.
+COMPLIANCE_LAWS = {
+    "generic": LawKind(lambda formulas, flags, eps: Generic()),
+    "kelvin-voigt": LawKind(
+        lambda formulas, flags, eps: KelvinVoigt(formulas["stiffness"], formulas["damping"]),
+        {"stiffness": 1, "damping": 1},
+    ),
+    # N = "-k*q/eps^2 - d*q'/eps": q the deformation, q' its rate, eps the small parameter
+    "law": LawKind(
+        lambda formulas, flags, eps: Law(formulas["N"], _Q, _QDOT, eps, check=flags["check"]),
+        {"N": None},
+        {"check": True},
+        local=True,
+    ),
+}
+
+
+def _law(reader: FormulaReader, entry, where: str, eps: sp.Symbol) -> LawSpec:
+    table = {"name": entry} if isinstance(entry, str) else entry
+    contact, where = where, f"{where}.law"  # the law's keys are found on the line of law = {...}
+    name = table.get("name") if isinstance(table, dict) else None
+    if not isinstance(name, str) or name not in COMPLIANCE_LAWS:
+        reader.doc.fail(
+            contact,
+            "law",
+            f"unknown law {shown(name if isinstance(table, dict) else entry)}; use one of {', '.join(COMPLIANCE_LAWS)} "
+            "(a table {name = ..., ...} for laws with parameters)",
+        )
+    kind = COMPLIANCE_LAWS[name]
+    required = tuple(k for k, default in kind.formulas.items() if default is None)
+    reader.doc.keys(table, where, kind.keys, required)
+    names = {**reader.names, "q": _Q, "q'": _QDOT, "eps": eps} if kind.local else None
+    formulas = {k: reader.formula(table.get(k, d), where, k, names) for k, d in kind.formulas.items()}
+    flags = {}
+    for key, default in kind.flags.items():
+        flags[key] = table.get(key, default)
+        if not isinstance(flags[key], bool):
+            reader.doc.fail(where, key, f"{key} must be true or false, not {shown(flags[key])}")
+    return LawSpec(name, MappingProxyType(formulas), MappingProxyType(flags))
+
+
+def _gap(reader: FormulaReader, entry: dict, where: str, coordinates, lagrangian: bool) -> sp.Expr:
+    gap = reader.formula(entry["gap"], where, "gap")
+    symbols = [c.symbol for c in coordinates]
+    listed = ", ".join(c.name for c in coordinates)
+    if lagrangian and not gap.has(*symbols):
+        reader.doc.fail(where, "gap", f"the gap {gap} does not depend on the coordinates {listed}; write it in them")
+    if not lagrangian and gap not in symbols:
+        reader.doc.fail(
+            where,
+            "gap",
+            f"with [accelerations] the gap must be one of the coordinates {listed}, not {gap}; "
+            "for a gap function give the motion by a Lagrangian ([energy], [[masses]], [[bodies]])",
+        )
+    return gap
+
+
+def _friction(reader: FormulaReader, entry, where: str, lagrangian: bool, points) -> FrictionSpec:
+    if not isinstance(entry, dict):
+        reader.doc.fail(where, "friction", "friction must be a table {mu = ..., direction = ...}")
+    reader.checked(entry, f"{where}.friction", "contacts.friction")
+    if ("mu" in entry) == ("viscous" in entry):
+        reader.doc.fail(where, "friction", "give friction either mu = ... (Coulomb) or viscous = ... (viscous)")
+    kind, key = ("coulomb", "mu") if "mu" in entry else ("viscous", "viscous")
+    coefficient = reader.formula(entry[key], where, "friction")
+    direction = entry["direction"]
+    line = reader.doc.line(where, "friction")
+    if not lagrangian:
+        if not isinstance(direction, dict):
+            reader.doc.fail(where, "friction", "with [accelerations], give direction = {coordinate = coefficient}")
+        if not all(reader.kinds.get(n) == "coordinate" for n in direction):
+            reader.doc.fail(where, "friction", f"direction names {list(direction)} must be coordinates")
+        pairs = tuple((reader.names[n], reader.formula(v, where, "friction")) for n, v in direction.items())
+        return FrictionSpec(kind, coefficient, pairs, None, line)
+    if entry.get("point") not in points:
+        reader.doc.fail(where, "friction", f"friction needs point = one of the [points] {sorted(points)}")
+    return FrictionSpec(kind, coefficient, reader.pair(direction, where, "friction"), entry["point"], line)
+
+
+def read_contacts(reader: FormulaReader, coordinates, lagrangian: bool, points, eps) -> tuple[ContactSpec, ...]:
+    """The ``[[contacts]]``: each declares its reaction's name; ``points`` are the names of [points]."""
+    contacts = []
+    for index, entry in enumerate(reader.section("contacts", required=True, kind=list)):
+        where = f"contacts.{index}"
+        reader.checked(entry, where, "contacts")
+        gap = _gap(reader, entry, where, coordinates, lagrangian)
+        name = entry["reaction"]
+        reader.declare(
+            name, sp.Symbol(name, real=True) if isinstance(name, str) else None, "reaction", where, "reaction"
+        )
+        unilateral = entry.get("unilateral", False)
+        if not isinstance(unilateral, bool):
+            reader.doc.fail(where, "unilateral", "unilateral must be true or false")
+        friction = _friction(reader, entry["friction"], where, lagrangian, points) if "friction" in entry else None
+        law = _law(reader, entry.get("law", "generic"), where, eps)
+        line = reader.doc.line(where, "law")
+        contacts.append(ContactSpec(gap, reader.names[name], unilateral, law, friction, line))
+    if not contacts:
+        reader.doc.fail("", None, "no [[contacts]]; add one with gap = ... and reaction = ...")
+    return tuple(contacts)
+
+
+def build_contact(spec: ContactSpec, plane, source: str, eps: sp.Symbol) -> Contact:
+    """The Contact of a spec; ``plane`` (a :class:`~contactsym.mechanism.files.bodies.Plane`) for a Lagrangian."""
+    friction, line = spec.friction, spec.line
+    try:
+        if friction is not None:
+            line = friction.line
+            law = Coulomb if friction.kind == "coulomb" else Viscous
+            if plane is None:
+                friction = law(friction.coefficient, dict(friction.direction))
+            else:
+                friction = law(friction.coefficient, plane.vector(friction.direction), plane.points[friction.point])
+        line = spec.line
+        kind = COMPLIANCE_LAWS[spec.law.name]
+        compliance = kind.build(spec.law.formulas, spec.law.flags, eps)
+        return Contact(spec.gap, spec.reaction, compliance, friction, spec.unilateral)
+    except (SceneFileError, ParseError):
+        raise
+    except ContactsymError as error:  # the API's own message, placed at the contact's law or friction
+        raise SceneFileError(f"{source}:{line}: {str(error).rstrip('.')}.") from None
+
+
+#: 0.1's mixin of the reader (removed: see :func:`read_contacts` and :func:`build_contact`).
+ContactsMixin = removed_mixin("ContactsMixin")

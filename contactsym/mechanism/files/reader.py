@@ -2,7 +2,11 @@ r"""Scene files: a mechanical system written in TOML as on paper, read into a :c
 
 Every formula is read by the safe parser :func:`contactsym.parse.parse_expression` with
 the names the file declares; nothing in a file is evaluated as Python. The examples in
-``examples/`` state the paper's four scenes this way. The tables:
+``examples/`` state the paper's four scenes this way. Reading has two steps:
+:func:`read_spec` checks the file against its schema
+(:data:`contactsym.mechanism.files.spec.SCHEMA`) into a frozen
+:class:`~contactsym.mechanism.files.spec.SceneSpec`, and :func:`build_scene` builds the Scene
+from that spec alone. The tables:
 
 ``[scene]``
     ``coordinates = ["x", "y", "theta"]`` (required); ``name``, ``description``,
@@ -34,277 +38,209 @@ or a Lagrangian from any of:
 ``[at]``, ``[presentation]``, ``[count_presentation]``
     As the Scene options of the same names; presentation keys are formulas in quotes.
 ``[figures]``
-    ``x``, ``y`` (two parameters), ``x_range``, ``y_range`` and ``values`` (numbers for
-    the other symbols, by their names in the file, or for symbols the pipeline adds, such
-    as the laws' ``Phi_1``, ``Psi_1`` and the sign symbols ``s_1``) for the report's region
-    maps and phase portrait.
+    ``x``, ``y`` (two parameters or coordinates), ``x_range``, ``y_range`` (within the
+    axes' declared signs and intervals) and ``values`` (numbers for the other symbols, by
+    their names in the file, or for symbols the pipeline adds, such as the laws' ``Phi_1``,
+    ``Psi_1`` and the sign symbols ``s_1``; each admissible for its symbol) for the
+    report's region maps and phase portrait. See :mod:`contactsym.mechanism.files.figures`.
+
+A file is refused, with the cap named, beyond the sizes of :class:`Limits` (bytes,
+coordinates, contacts, points, ...; pass ``limits=Limits(...)`` to read a larger one) and
+the caps on formulas of :mod:`contactsym.parse`. Only regular files are read.
 """
 
 from __future__ import annotations
 
-import math
+import os
 import re
-from dataclasses import dataclass, field
+import stat
 from pathlib import Path
 
 import sympy as sp
-from sympy.physics.mechanics import dynamicsymbols
 
-from ...algebra.basic import SignSymbol
 from ...errors import ContactsymError
-from ...parse import CONSTANTS, FUNCTIONS, ParseError, parse_expression
+from ...parse import ParseError
 from ...scenes import scene, scene_names
-from ..contact import plain_symbol
-from ..contact_space import t
 from ..scene import Scene
-from .bodies import COMPLIANCE_LAWS, PlaneMixin
-from .contacts import ContactsMixin
+from .bodies import Plane, read_motion, read_points
+from .contacts import COMPLIANCE_LAWS, build_contact, read_contacts
+from .declarations import FormulaReader, read_declarations
+from .figures import pipeline_names, read_figures
+from .spec import FigurePlan, Limits, SceneSpec
 from .toml_source import SceneFileError, TomlSource, shown
 
-__all__ = ["COMPLIANCE_LAWS", "FigurePlan", "SceneFileError", "load_scene", "read_scene", "scene_or_file"]
+__all__ = [
+    "COMPLIANCE_LAWS",
+    "LIMITS",
+    "FigurePlan",
+    "Limits",
+    "SceneFileError",
+    "build_scene",
+    "load_scene",
+    "read_scene",
+    "read_spec",
+    "scene_or_file",
+]
 
-_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
-_PRINTED = re.compile(r"[A-Za-z][A-Za-z0-9_^*+\-]{0,31}\Z")  # printed in LaTeX: no backslash, no braces
+#: The default caps on a scene file's size.
+LIMITS = Limits()
+
 _SCENE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.\-]{0,63}\Z")  # it names the report's directory
-_ASSUMPTIONS = {"positive": {"positive": True}, "negative": {"negative": True}, "real": {"real": True}}
-_ASSUMPTIONS["nonnegative"] = {"nonnegative": True}
-_TABLES = (
-    "scene parameters intervals functions accelerations energy points masses bodies loads contacts at "
-    "presentation count_presentation figures"
-).split()
+_LAGRANGIAN_TABLES = ("energy", "points", "masses", "bodies", "loads")
 
 
-@dataclass(frozen=True)
-class FigurePlan:
-    """What a scene file asks to draw: region maps over (x, y) at fixed values."""
-
-    x: str
-    y: str
-    x_range: tuple[float, float]
-    y_range: tuple[float, float]
-    values: dict = field(default_factory=dict)
+def _beyond(source: str, line: int, count: int, what: str, cap: str, limits: Limits):
+    raise SceneFileError(
+        f"{source}:{line}: {count} {what}, more than the cap of {getattr(limits, cap)} (Limits.{cap}); "
+        f"to read it anyway, pass limits=Limits({cap}={count}) (contactsym.mechanism.files.Limits) to load_scene."
+    )
 
 
-class _Reader(PlaneMixin, ContactsMixin):
-    """Reads one document; ``names`` grows as declarations are read, so use follows declaration."""
+def _sized(doc: TomlSource, limits: Limits) -> None:
+    """Refuse a scene beyond the caps before any formula is read (a table of the wrong kind counts 0 here)."""
 
-    def __init__(self, doc: TomlSource, default_name: str):
-        self.doc, self.data = doc, doc.data
-        doc.keys(self.data, "", _TABLES, required=("scene",))
-        self.head = doc.table(self.data, "scene", "", required=True)
-        doc.keys(self.head, "scene", ("name", "description", "coordinates", "solve_for"), required=("coordinates",))
-        self.default_name = default_name
-        self.names: dict = {}
-        self.eps = sp.Symbol("epsilon", positive=True)
-        self.positive: list = []
+    def count(*path) -> int:
+        value = doc.data
+        for step in path:
+            value = value.get(step) if isinstance(value, dict) else None
+        return len(value) if isinstance(value, (list, dict)) else 0
 
-    # --- names and formulas -------------------------------------------------------
+    sizes = (
+        ("coordinates", "scene", "coordinates", "max_coordinates", count("scene", "coordinates")),
+        ("contacts", "contacts", None, "max_contacts", count("contacts")),
+        ("points", "points", None, "max_points", count("points")),
+        ("masses, bodies and loads", "", None, "max_items", count("masses") + count("bodies") + count("loads")),
+        (
+            "parameters, functions and intervals",
+            "parameters",
+            None,
+            "max_names",
+            count("parameters") + count("functions") + count("intervals"),
+        ),
+    )
+    for what, table, key, cap, size in sizes:
+        if size > getattr(limits, cap):
+            _beyond(doc.source, doc.line(table, key), size, what, cap, limits)
 
-    def declare(self, name, value, where: str, key: str | None = None) -> None:
-        if not isinstance(name, str) or not _NAME.match(name):
-            self.doc.fail(where, key, f"{shown(name)} is not a name; use letters, digits and _ (e.g. mu_1)")
-        if name in FUNCTIONS or name in CONSTANTS:
-            self.doc.fail(where, key, f"'{name}' is the name of a function or a constant; rename it")
-        if name in self.names or name + "'" in self.names:
-            self.doc.fail(where, key, f"the name '{name}' is declared twice; give each symbol one name")
-        self.names[name] = value
 
-    def formula(self, value, where: str, key: str, names: dict | None = None) -> sp.Expr:
-        if isinstance(value, bool) or not isinstance(value, (str, int, float)):
-            self.doc.fail(where, key, f"'{key}' must be a formula in quotes or a number, not {shown(value)}")
-        if isinstance(value, int):
-            return sp.Integer(value)
-        if isinstance(value, float):
-            if not math.isfinite(value):
-                self.doc.fail(where, key, f"'{key}' = {value} is not finite")
-            return sp.Rational(repr(value))
-        line, column = self.doc.position(where, key, value)
-        return parse_expression(
-            value, self.names if names is None else names, source=self.doc.source, line=line, column=column
-        )
+def _switching(contacts, formulas) -> int:
+    """At most how many switching functions (Abs, sign) the pipeline finds: one per frictional
+    contact, one per distinct Abs or sign written in the motion."""
+    written = {a.args[0] for f in formulas for a in f.atoms(sp.Abs, sp.sign)}
+    return len(written) + sum(c.friction is not None for c in contacts)
 
-    def name_list(self, value, where: str, key: str) -> list:
-        if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
-            self.doc.fail(where, key, f'\'{key}\' must be a list of names in quotes, e.g. ["x", "y"]')
-        return value
 
-    def interval(self, value, where: str, key: str) -> tuple:
-        low, high = self.pair(value, where, key, {})
-        if not (low.is_real and high.is_real and bool(low < high)):
-            self.doc.fail(where, key, f"the interval ({low}, {high}) is empty; give [low, high] with low < high")
-        return low, high
+def read_spec(
+    text: str, source: str = "<scene file>", default_name: str = "user", *, limits: Limits = LIMITS
+) -> SceneSpec:
+    """The checked, frozen content of a scene file (see the module's documentation for the format).
 
-    def pair(self, value, where: str, key: str, names=None) -> tuple:
-        if not isinstance(value, list) or len(value) != 2:
-            self.doc.fail(where, key, f'\'{key}\' must be a pair [first, second], e.g. ["x", "y"]')
-        return tuple(self.formula(v, where, key, names) for v in value)
-
-    # --- declarations -------------------------------------------------------------
-
-    def coordinates(self) -> list:
-        coordinates = []
-        for name in self.name_list(self.head["coordinates"], "scene", "coordinates"):
-            q = dynamicsymbols(name) if _NAME.match(name) else None
-            self.declare(name, q, "scene", "coordinates")
-            self.names[name + "'"] = q.diff(t)
-            coordinates.append(q)
-        if not coordinates:
-            self.doc.fail("scene", "coordinates", 'no coordinates; list them, e.g. coordinates = ["x", "y"]')
-        return coordinates
-
-    def parameters(self) -> None:
-        for name, spec in self.doc.table(self.data, "parameters", "").items():
-            symbol_name, interval = name, None
-            if isinstance(spec, dict):
-                self.doc.keys(spec, "parameters", ("assume", "symbol", "interval"))
-                symbol_name, interval = spec.get("symbol", name), spec.get("interval")
-                if not isinstance(symbol_name, str) or not _PRINTED.match(symbol_name):
-                    self.doc.fail("parameters", name, f"symbol = {shown(symbol_name)} must be e.g. mu_+ or X^*_1")
-                spec = spec.get("assume", "real" if interval is None else None)
-            elif isinstance(spec, list):
-                spec, interval = None, spec
-            if interval is not None:
-                low, high = self.interval(interval, "parameters", name)
-                spec = spec or ("positive" if low >= 0 else "real")
-            if spec == "sign":
-                symbol = SignSymbol(symbol_name)
-            elif spec in _ASSUMPTIONS:
-                symbol = sp.Symbol(symbol_name, **_ASSUMPTIONS[spec])
-            else:
-                self.doc.fail(
-                    "parameters",
-                    name,
-                    f"unknown assumption {shown(spec)}; use one of "
-                    f"{', '.join(_ASSUMPTIONS)}, sign, or an interval [low, high]",
-                )
-            self.declare(name, symbol, "parameters", name)
-            if interval is not None:
-                self.positive += _positive_on(symbol, low, high)
-
-    def intervals(self) -> None:
-        for name, interval in self.doc.table(self.data, "intervals", "").items():
-            if not isinstance(self.names.get(name), sp.core.function.AppliedUndef):
-                self.doc.fail(
-                    "intervals",
-                    name,
-                    f"'{name}' is not a coordinate; give parameters' intervals in "
-                    '[parameters], e.g. alpha = [0, "pi"]',
-                )
-            self.positive += _positive_on(self.names[name], *self.interval(interval, "intervals", name))
-
-    def functions(self) -> None:
-        for name, arguments in self.doc.table(self.data, "functions", "").items():
-            arguments = [self.formula(a, "functions", name) for a in self.name_list(arguments, "functions", name)]
-            self.declare(name, sp.Function(name)(*arguments), "functions", name)
-
-    # --- motion -------------------------------------------------------------------
-
-    def accelerations(self, coordinates) -> list:
-        table = self.doc.table(self.data, "accelerations", "")
-        self.doc.keys(table, "accelerations", [str(q.func.__name__) for q in coordinates])
-        missing = [q for q in coordinates if q.func.__name__ not in table]
+    Examples
+    --------
+    >>> spec = read_spec('[scene]\\ncoordinates = ["y"]\\n[accelerations]\\ny = "N - 1"\\n'
+    ...                  '[[contacts]]\\ngap = "y"\\nreaction = "N"\\n', "a.toml")
+    >>> spec.accelerations, spec.contacts[0].reaction, spec.contacts[0].law.name
+    ((N - 1,), N, 'generic')
+    """
+    if not isinstance(source, str) or not isinstance(default_name, str):
+        raise SceneFileError(f"source and default_name must be text, not {shown(source)} and {shown(default_name)}.")
+    if not isinstance(text, str):
+        raise SceneFileError(f"{source}: a scene file's text must be a str, not {type(text).__name__}.")
+    if not isinstance(limits, Limits):
+        raise SceneFileError(f"{source}: limits must be a contactsym.mechanism.files.Limits, not {shown(limits)}.")
+    if len(text) > limits.max_bytes:  # the characters of a text; load_scene counts bytes before it decodes
+        _beyond(source, 1, len(text), "characters", "max_bytes", limits)
+    doc = TomlSource(text, source)
+    _sized(doc, limits)
+    reader = FormulaReader(doc)
+    reader.checked(doc.data, "", "")
+    head = reader.checked(reader.section("scene", required=True), "scene", "scene")
+    coordinates, parameters, positive = read_declarations(reader, head)
+    lagrangian = "accelerations" not in doc.data
+    if not lagrangian and any(t in doc.data for t in _LAGRANGIAN_TABLES):
+        used = next(t for t in _LAGRANGIAN_TABLES if t in doc.data)
+        doc.fail(used, None, f"[{used}] is for a Lagrangian, but the file gives [accelerations]; remove one of them")
+    points = read_points(reader) if lagrangian else ()
+    eps = SceneSpec.eps
+    contacts = read_contacts(reader, coordinates, lagrangian, [p.name for p in points], eps)
+    solve_for = reader.formula(head["solve_for"], "scene", "solve_for") if "solve_for" in head else None
+    if solve_for is not None and not isinstance(solve_for, sp.Symbol):
+        doc.fail("scene", "solve_for", f"solve_for = {shown(head['solve_for'])} must name a parameter")
+    name = head.get("name", default_name)
+    if not isinstance(name, str) or not _SCENE_NAME.match(name):
+        doc.fail("scene", "name", f"the name {shown(name)} must be letters, digits, '-', '_' or '.'")
+    options = dict(
+        source=source,
+        name=name,
+        description=reader.text(head, "description", "scene"),
+        coordinates=coordinates,
+        parameters=parameters,
+        contacts=contacts,
+        at=reader.substitutions("at", plain=False),
+        presentation=reader.substitutions("presentation", plain=True),
+        positive=positive,
+        solve_for=solve_for,
+        eps=eps,
+    )
+    if lagrangian:
+        options.update(points=points, **read_motion(reader, points))
+        written = [
+            options["kinetic"],
+            options["potential"],
+            *(m for load in options["loads"] for m in (load.force or ())),
+        ]
+    else:
+        table = reader.checked(reader.section("accelerations"), "accelerations", "accelerations")
+        doc.keys(table, "accelerations", [c.name for c in coordinates])
+        missing = [c.name for c in coordinates if c.name not in table]
         if missing:
-            self.doc.fail("accelerations", None, f"no acceleration for {missing[0].func.__name__}; add it")
-        return [self.formula(table[q.func.__name__], "accelerations", q.func.__name__) for q in coordinates]
-
-    # --- options ----------------------------------------------------------------
-
-    def substitutions(self, name: str, plain: bool) -> dict:
-        names = dict(self.names)
-        if plain:  # presentations act on the frozen state: coordinates as plain real symbols
-            for key, value in self.names.items():
-                if isinstance(value, (sp.core.function.AppliedUndef, sp.Derivative)):
-                    base = key.rstrip("'")
-                    names[key] = sp.Symbol(base + ("dot" if key.endswith("'") else ""), real=True)
-        out = {}
-        for key, value in self.doc.table(self.data, name, "").items():
-            line, column = self.doc.position(name, key, key)
-            lhs = parse_expression(key, names, source=self.doc.source, line=line, column=column)
-            out[lhs] = self.formula(value, name, key, names)
-        return out
-
-    def figures(self) -> FigurePlan | None:
-        spec = self.doc.table(self.data, "figures", "")
-        if not spec:
-            return None
-        self.doc.keys(spec, "figures", ("x", "y", "x_range", "y_range", "values"), ("x", "y", "x_range", "y_range"))
-        ranges = {}
-        for key in ("x_range", "y_range"):
-            low, high = (float(v) for v in self.pair(spec[key], "figures", key, {}))
-            if not (math.isfinite(low) and math.isfinite(high) and low < high):
-                self.doc.fail("figures", key, f"{key} must be [low, high] with low < high")
-            ranges[key] = (low, high)
-        values = {}
-        for key, value in self.doc.table(spec, "values", "figures").items():
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-                self.doc.fail("figures.values", key, f"the value of {key} must be a finite number")
-            values[self.printed(key)] = float(value)
-        for key in ("x", "y"):
-            if not isinstance(spec[key], str) or spec[key] not in self.names:
-                self.doc.fail("figures", key, f"{key} must name a declared parameter, not {shown(spec[key])}")
-        symbol_of = {key: self.printed(spec[key]) for key in ("x", "y")}
-        return FigurePlan(symbol_of["x"], symbol_of["y"], ranges["x_range"], ranges["y_range"], values)
-
-    def printed(self, name: str) -> str:
-        """The name of a declared symbol as the pipeline prints it (mu_p -> mu_+; a function by its name)."""
-        value = self.names.get(name)
-        if isinstance(value, sp.Derivative):  # a rate x' is frozen as xdot
-            return plain_symbol(value.expr, "dot").name
-        if isinstance(value, sp.core.function.AppliedUndef):
-            return value.func.__name__
-        return str(value) if isinstance(value, sp.Symbol) else name
-
-    def build(self) -> Scene:
-        coordinates = self.coordinates()
-        self.parameters()
-        self.intervals()
-        self.functions()
-        lagrangian = "accelerations" not in self.data
-        if lagrangian:
-            self.plane()
-        contacts = self.contacts(coordinates, lagrangian)
-        head = self.head
-        solve_for = self.formula(head["solve_for"], "scene", "solve_for") if "solve_for" in head else None
-        name = head.get("name", self.default_name)
-        if not isinstance(name, str) or not _SCENE_NAME.match(name):
-            self.doc.fail("scene", "name", f"the name {shown(name)} must be letters, digits, '-', '_' or '.'")
-        options = dict(
-            name=name,
-            description=str(head.get("description", "")),
-            at=self.substitutions("at", plain=False),
-            presentation=self.substitutions("presentation", plain=True),
-            positive=tuple(self.positive),
-            solve_for=solve_for,
+            doc.fail("accelerations", None, f"no acceleration for {missing[0]}; add it")
+        options["accelerations"] = written = tuple(
+            reader.formula(table[c.name], "accelerations", c.name) for c in coordinates
         )
-        try:
-            if lagrangian:
-                L, loads = self.lagrangian()
-                scene = Scene.from_lagrangian(L, coordinates, contacts, loads=loads, frame=self.frame, **options)
-            else:
-                scene = Scene.from_accelerations(coordinates, self.accelerations(coordinates), contacts, **options)
-        except (SceneFileError, ParseError):
-            raise
-        except ContactsymError as error:  # the API's own message, from the file
-            raise type(error)(f"{self.doc.source}: {error}") from None
-        if "count_presentation" in self.data:
-            scene.count_presentation = {**scene.presentation, **self.substitutions("count_presentation", True)}
-        scene.figure_plan = self.figures()
-        return scene
+    if "count_presentation" in doc.data:
+        options["count_presentation"] = reader.substitutions("count_presentation", plain=True)
+    extra = pipeline_names(len(contacts), _switching(contacts, written))
+    options["figures"] = read_figures(reader, parameters, coordinates, extra)
+    return SceneSpec(**options)
 
 
-def _positive_on(symbol, low, high) -> list:
-    """sin and cos of ``symbol`` where positive throughout the open interval (low, high)."""
-    positive = []
-    for function, zero in ((sp.sin, sp.S.Zero), (sp.cos, sp.pi / 2)):
-        # the zeros are zero + k*pi; with none strictly inside, the sign at the midpoint holds throughout
-        first = zero + (sp.floor((low - zero) / sp.pi) + 1) * sp.pi
-        if bool(first >= high) and bool(function((low + high) / 2) > 0):
-            positive.append(function(symbol))
-    return positive
+def build_scene(spec: SceneSpec) -> Scene:
+    """The Scene of a spec: the mechanics, the contacts and every option, in one constructor call."""
+    if not isinstance(spec, SceneSpec):
+        raise SceneFileError(f"build_scene takes a SceneSpec (from read_spec), not {shown(spec)}.")
+    plane = Plane(spec.points) if spec.lagrangian else None
+    contacts = [build_contact(c, plane, spec.source, spec.eps) for c in spec.contacts]
+    presentation = dict(spec.presentation)
+    count_presentation = None
+    if spec.count_presentation is not None:
+        count_presentation = {**presentation, **dict(spec.count_presentation)}
+    options = dict(
+        name=spec.name,
+        description=spec.description,
+        at=dict(spec.at),
+        presentation=presentation,
+        positive=spec.positive,
+        solve_for=spec.solve_for,
+        count_presentation=count_presentation,
+        figure_plan=spec.figures,
+    )
+    coordinates = [c.symbol for c in spec.coordinates]
+    try:
+        if spec.lagrangian:
+            L, loads = plane.lagrangian(spec)
+            return Scene.from_lagrangian(L, coordinates, contacts, loads=loads, frame=plane.frame, **options)
+        return Scene.from_accelerations(coordinates, list(spec.accelerations), contacts, **options)
+    except (SceneFileError, ParseError):
+        raise
+    except ContactsymError as error:  # the API's own message, from the file
+        raise type(error)(f"{spec.source}: {error}") from None
 
 
-def read_scene(text: str, source: str = "<scene file>", default_name: str = "user") -> Scene:
-    """A Scene from the text of a scene file (see the module's documentation for the format).
+def read_scene(
+    text: str, source: str = "<scene file>", default_name: str = "user", *, limits: Limits = LIMITS
+) -> Scene:
+    """A Scene from the text of a scene file: :func:`build_scene` of :func:`read_spec`.
 
     Examples
     --------
@@ -329,12 +265,34 @@ def read_scene(text: str, source: str = "<scene file>", default_name: str = "use
     contactsym.mechanism.files.toml_source.SceneFileError: a.toml:6: unknown key 'laww' in [contacts.0]; did you mean 'law'? allowed: gap, reaction, unilateral, law, friction.
     """
     try:
-        return _Reader(TomlSource(text, source), default_name).build()
+        return build_scene(read_spec(text, source, default_name, limits=limits))
     except RecursionError:
         raise SceneFileError(f"{source}: the file nests too deeply to read.") from None
 
 
-def load_scene(path) -> Scene:
+def _read_regular_file(path: Path, limits: Limits) -> str:
+    """The text of a regular file of at most ``limits.max_bytes`` bytes; a FIFO or a device is never opened for a read that waits."""
+    try:
+        descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    except OSError as error:
+        raise SceneFileError(f"{path}: cannot read the scene file ({error.strerror or error}).") from None
+    mode = os.fstat(descriptor).st_mode
+    if not stat.S_ISREG(mode):
+        os.close(descriptor)
+        kind = "a directory" if stat.S_ISDIR(mode) else "a pipe" if stat.S_ISFIFO(mode) else "not a regular file"
+        raise SceneFileError(f"{path}: {kind}; a scene file must be a regular file (a .toml text).")
+    with os.fdopen(descriptor, "rb") as file:
+        data = file.read(limits.max_bytes + 1)
+    if len(data) > limits.max_bytes:
+        size = path.stat().st_size
+        _beyond(str(path), 1, size, "bytes", "max_bytes", limits)
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as error:
+        raise SceneFileError(f"{path}: cannot read the scene file (not UTF-8 text: {error.reason}).") from None
+
+
+def load_scene(path, *, limits: Limits = LIMITS) -> Scene:
     """A Scene from a scene file (TOML). Its name defaults to the file's stem.
 
     Examples
@@ -343,14 +301,14 @@ def load_scene(path) -> Scene:
     >>> load_scene(Path(__file__).parents[3] / "examples" / "brake.toml")
     <Scene 'brake-file': 3 coordinates, k = 2 contacts>
     """
+    if not isinstance(path, (str, os.PathLike)):
+        raise SceneFileError(f"load_scene takes a path (str or pathlib.Path), not {shown(path)}.")
+    if not isinstance(limits, Limits):
+        raise SceneFileError(f"limits must be a contactsym.mechanism.files.Limits, not {shown(limits)}.")
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as error:
-        raise SceneFileError(
-            f"{path}: cannot read the scene file ({getattr(error, 'strerror', None) or error})."
-        ) from None
-    return read_scene(text, str(path), re.sub(r"[^A-Za-z0-9_.\-]", "-", path.stem)[:64] or "user")
+    text = _read_regular_file(path, limits)
+    default = re.sub(r"[^A-Za-z0-9_.\-]", "-", path.stem)[:64] or "user"
+    return read_scene(text, str(path), default, limits=limits)
 
 
 def scene_or_file(argument: str) -> Scene:
@@ -361,6 +319,9 @@ def scene_or_file(argument: str) -> Scene:
     >>> scene_or_file("brake")
     <Scene 'brake': 3 coordinates, k = 2 contacts>
     """
+    if not isinstance(argument, (str, os.PathLike)):
+        raise SceneFileError(f"give a scene's name or a scene file's path, not {shown(argument)}.")
+    argument = os.fspath(argument)
     if argument.endswith(".toml") or (argument not in scene_names() and Path(argument).is_file()):
         return load_scene(argument)
     return scene(argument)

@@ -83,7 +83,8 @@ class TomlSource:
     def line(self, table: str, key: str | None = None) -> int:
         """1-based line of ``key`` in ``table`` (of the table's header without a key; 1 if unknown)."""
         nested = f"{table}.{key}" if table else key
-        for probe in ((table, key), (nested, None), (f"{nested}.0", None), (table, None)):
+        parent = tuple(table.rsplit(".", 1)) if "." in table else (table, None)  # an inline table: its key's line
+        for probe in ((table, key), (nested, None), (f"{nested}.0", None), (table, None), parent):
             if probe in self._keys:
                 return self._keys[probe] + 1
         return 1

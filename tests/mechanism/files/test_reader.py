@@ -2,6 +2,11 @@
 
 from __future__ import annotations
 
+import contextlib
+import dataclasses
+import os
+import threading
+import time
 from pathlib import Path
 
 import numpy as np
@@ -11,7 +16,16 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import contactsym as cs
-from contactsym.mechanism.files.reader import _positive_on, load_scene, read_scene, scene_or_file
+from contactsym.mechanism.files.declarations import positive_on
+from contactsym.mechanism.files.reader import (
+    LIMITS,
+    Limits,
+    build_scene,
+    load_scene,
+    read_scene,
+    read_spec,
+    scene_or_file,
+)
 from contactsym.mechanism.files.toml_source import SceneFileError
 from contactsym.parse import ParseError
 
@@ -154,7 +168,7 @@ def test_interval_positivity_holds_at_sampled_points(low, width, denominator):
     """sin/cos declared positive on an interval are positive at many points of it; the others change sign."""
     phi = sp.Symbol("phi", real=True)
     a, b = sp.pi * sp.Rational(low, denominator), sp.pi * sp.Rational(low + width, denominator)
-    declared = _positive_on(phi, a, b)
+    declared = positive_on(phi, a, b)
     inside = np.linspace(float(a), float(b), 401)[1:-1]
     for function, numeric in ((sp.sin, np.sin), (sp.cos, np.cos)):
         values = numeric(inside)
@@ -221,3 +235,137 @@ def test_user_law_in_a_file_matches_the_python_law_and_shadows_q():
     assert scene.contacts[0].compliance.phi_psi(u, v, None) == law.phi_psi(u, v, None) == (-k, -3 * v**2 - 1)
     with pytest.raises(SceneFileError, match=r"^a.toml:4: the interval \(2, 1\) is empty"):
         read_scene(BASE.replace('mu = "positive"', "mu = [2, 1]"), "a.toml")
+
+
+# --- the spec: data first, then the Scene --------------------------------------------------------------
+
+
+def test_a_file_is_read_into_a_frozen_spec_and_built_from_it_alone():
+    text = (EXAMPLES / "painleve-klein-guides.toml").read_text()
+    spec = read_spec(text, "guides.toml")
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        spec.name = "other"
+    assert [c.name for c in spec.coordinates] == ["x", "y", "phi"] and len(spec.contacts) == 2
+    assert spec.lagrangian and [p.name for p in spec.points] == ["C", "P_1", "P_2"]
+    scene = build_scene(spec)
+    built_in = cs.scene("painleve-klein-guides")
+    assert scene.count_presentation == built_in.count_presentation  # a constructor argument, as for the built-in
+    assert scene.figure_plan is spec.figures and scene.figure_plan.x == "v_1"
+
+
+def test_count_presentation_and_figure_plan_are_scene_arguments():
+    x, y = sp.symbols("x y", cls=sp.Function)
+    t = sp.Symbol("t")
+    N, mu, kappa = sp.Symbol("N", real=True), sp.Symbol("mu", positive=True), sp.Symbol("kappa", positive=True)
+    contact = cs.Contact(coordinate=y(t), reaction=N)
+    plan = cs.FigurePlan("mu", "kappa", (0, 1), (0, 1), {})
+    scene = cs.Scene.from_accelerations(
+        [x(t), y(t)], [0, N - 1], [contact], count_presentation={mu: kappa}, figure_plan=plan
+    )
+    assert scene.count_presentation == {mu: kappa} and scene.figure_plan is plan
+    assert cs.Scene.from_accelerations([x(t), y(t)], [0, N - 1], [contact]).count_presentation is None
+    for options, words in (
+        ({"count_presentation": [mu]}, "count_presentation must be a dict"),
+        ({"figure_plan": 3}, "FigurePlan"),
+    ):
+        with pytest.raises(cs.SceneError, match=words):
+            cs.Scene.from_accelerations([x(t), y(t)], [0, N - 1], [contact], **options)
+
+
+def test_with_accelerations_the_tables_of_a_lagrangian_are_refused():
+    with pytest.raises(SceneFileError, match=r"^a.toml:12: \[energy\] is for a Lagrangian"):
+        read_scene(BASE + '[energy]\nkinetic = "x\'^2"\n', "a.toml")
+
+
+# --- limits: files and scenes beyond a cap are refused at once, naming the cap --------------------------
+
+
+def test_a_fifo_is_refused_without_waiting(tmp_path):
+    fifo = tmp_path / "scene.toml"
+    os.mkfifo(fifo)
+
+    def unblock():  # should the reader wait for a writer, this ends the wait, and the test fails instead of hanging
+        time.sleep(5)
+        with contextlib.suppress(OSError):  # no reader waiting (ENXIO): nothing to end
+            os.close(os.open(fifo, os.O_WRONLY | os.O_NONBLOCK))
+
+    threading.Thread(target=unblock, daemon=True).start()
+    with pytest.raises(SceneFileError, match=r"a pipe; a scene file must be a regular file"):
+        load_scene(fifo)
+    with pytest.raises(SceneFileError, match=r"a directory; a scene file must be a regular file"):
+        load_scene(tmp_path)
+
+
+def test_a_file_beyond_the_size_cap_is_refused_and_the_cap_can_be_raised(tmp_path):
+    path = tmp_path / "big.toml"
+    path.write_text(BASE + "# " + "x" * 2000 + "\n")
+    with pytest.raises(SceneFileError, match=r"bytes, more than the cap of 1000 \(Limits.max_bytes\).*limits=Limits"):
+        load_scene(path, limits=Limits(max_bytes=1000))
+    assert load_scene(path, limits=Limits(max_bytes=3000)).k == 1
+    path.write_bytes(b"\xff\xfe" + BASE.encode())
+    with pytest.raises(SceneFileError, match="not UTF-8 text"):
+        load_scene(path)
+
+
+@pytest.mark.parametrize(
+    "what, cap, edit",
+    [
+        ("coordinates", "max_coordinates", lambda n: BASE.replace('["x", "y"]', str([f"q{i}" for i in range(n)]))),
+        ("contacts", "max_contacts", lambda n: BASE + '[[contacts]]\ngap = "x"\nreaction = "R"\n' * n),
+        ("points", "max_points", lambda n: BASE + "[points]\n" + "".join(f'P{i} = ["x", "y"]\n' for i in range(n))),
+        (
+            "parameters, functions and intervals",
+            "max_names",
+            lambda n: BASE.replace("[parameters]\n", "[parameters]\n" + "".join(f'p{i} = "real"\n' for i in range(n))),
+        ),
+    ],
+)
+def test_a_scene_beyond_a_size_cap_is_refused_naming_the_cap(what, cap, edit):
+    count = getattr(LIMITS, cap) + 3
+    with pytest.raises(SceneFileError) as raised:
+        read_scene(edit(count), "a.toml")
+    message = str(raised.value)
+    assert f"{what}, more than the cap of {getattr(LIMITS, cap)} (Limits.{cap})" in message
+    assert f"limits=Limits({cap}=" in message and "\n" not in message
+
+
+def test_a_larger_scene_is_read_once_its_cap_is_raised():
+    text = BASE + '[[contacts]]\ngap = "x"\nreaction = "R"\n'
+    with pytest.raises(SceneFileError, match="max_contacts"):
+        read_spec(text, "a.toml", limits=Limits(max_contacts=1))
+    assert len(read_spec(text, "a.toml", limits=Limits(max_contacts=2)).contacts) == 2
+
+
+@pytest.mark.parametrize(
+    "formula, cap",
+    [
+        ("N*(1+mu)^3000", "MAX_DEGREE"),
+        ("(N+mu)^(10^9)", "MAX_DEGREE"),
+        ("N - " + "*".join(["1e300"] * 30), "MAX_DIGITS"),
+        ("N - exp(exp(exp(exp(10))))", "MAX_EXPONENT"),
+    ],
+)
+def test_formula_bombs_in_a_file_are_refused_at_their_line(formula, cap):
+    with pytest.raises(ParseError) as raised:
+        read_scene(BASE.replace('y = "N - 1"', f'y = "{formula}"'), "a.toml")
+    assert str(raised.value).startswith("a.toml:8:") and f"contactsym.parse.{cap}" in str(raised.value)
+
+
+def test_numbers_written_as_toml_numbers_meet_the_same_caps():
+    law = 'law = {name = "kelvin-voigt", stiffness = 1e300, damping = 1e-300}\n'
+    assert read_scene(BASE + law, "a.toml").contacts[0].compliance.phi_psi(None, None, None)[0] == -(10**300)
+    with pytest.raises(ParseError, match="MAX_EXPONENT"):
+        read_scene(BASE + law.replace("1e-300", "5e-324"), "a.toml")
+
+
+@pytest.mark.parametrize("value", [0, -1, 1.5, "10", True, None])
+def test_a_cap_is_a_whole_number(value):
+    with pytest.raises(cs.SceneError, match=r"Limits\(max_contacts=.*a cap is a whole number >= 1"):
+        Limits(max_contacts=value)
+    assert Limits(max_contacts=7).max_contacts == 7
+
+
+@pytest.mark.parametrize("argument", [None, 3, ["brake"]])
+def test_scene_or_file_refuses_what_is_neither_a_name_nor_a_path(argument):
+    with pytest.raises(SceneFileError, match="give a scene's name or a scene file's path"):
+        scene_or_file(argument)
