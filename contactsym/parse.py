@@ -33,6 +33,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from .errors import ContactsymError
+from .validate import cut
 
 __all__ = ["FUNCTIONS", "MAX_DEPTH", "MAX_LENGTH", "ParseError", "parse_expression", "sympy_only"]
 
@@ -87,10 +88,6 @@ def _where(source: str, line: int, column: int) -> str:
     return f"{source}:{line}:{column + 1}"
 
 
-def _short(text: str, limit: int = 40) -> str:
-    return text if len(text) <= limit else text[: limit - 3] + "..."
-
-
 def _tokens(text: str, fail) -> list[_Token]:
     tokens, position = [], 0
     while position < len(text):
@@ -135,7 +132,7 @@ class _Parser:
             self.fail(self.token.column, f"expected {what}, found {self._found()}")
 
     def _found(self) -> str:
-        return "the end of the formula" if self.token.kind == "end" else repr(_short(self.token.text))
+        return "the end of the formula" if self.token.kind == "end" else repr(cut(self.token.text))
 
     def nest(self):
         self.depth += 1
@@ -150,12 +147,10 @@ class _Parser:
             self.fail(self.token.column, f"expected an operator or the end of the formula, found {self._found()}")
         if expr.has(sp.zoo, sp.nan, sp.oo, sp.S.NegativeInfinity):
             self.fail(
-                0, f"the formula evaluates to {_short(str(expr))}, which is not finite; check for a division by zero"
+                0, f"the formula evaluates to {cut(str(expr))}, which is not finite; check for a division by zero"
             )
         if expr.has(sp.I):
-            self.fail(
-                0, f"the formula evaluates to {_short(str(expr))}, which is not real (a root of a negative number?)"
-            )
+            self.fail(0, f"the formula evaluates to {cut(str(expr))}, which is not real (a root of a negative number?)")
         return expr
 
     def expression(self) -> sp.Expr:
@@ -202,7 +197,7 @@ class _Parser:
             if exponent.is_Rational and base.is_Rational:
                 bits = (base.p.bit_length() + base.q.bit_length()) * abs(exponent)
                 if abs(exponent) > MAX_EXPONENT or bits > 64 * MAX_EXPONENT:
-                    self.fail(column, f"the power {_short(str(exponent))} of {_short(str(base))} is too large")
+                    self.fail(column, f"the power {cut(str(exponent))} of {cut(str(base))} is too large")
             return base**exponent
         return base
 
@@ -212,7 +207,7 @@ class _Parser:
             self.position += 1
             mantissa, _, exponent = token.text.lower().partition("e")
             if abs(int(exponent or 0)) > MAX_EXPONENT or len(mantissa) > MAX_EXPONENT:
-                self.fail(token.column, f"the number {_short(token.text)} is out of range (at most 1e{MAX_EXPONENT})")
+                self.fail(token.column, f"the number {cut(token.text)} is out of range (at most 1e{MAX_EXPONENT})")
             return sp.Integer(token.text) if token.text.isdigit() else sp.Rational(token.text)
         if token.kind == "name":
             self.position += 1
@@ -250,8 +245,8 @@ class _Parser:
         known = sorted(self.names)
         close = difflib.get_close_matches(token.text, known, n=1)
         hint = f"did you mean {close[0]!r}? " if close else ""
-        listed = ", ".join(_short(n, 20) for n in known[:30]) + (", ..." if len(known) > 30 else "")
-        self.fail(token.column, f"unknown name {_short(token.text)!r}; {hint}declared names: {listed or 'none'}")
+        listed = ", ".join(cut(n, 20) for n in known[:30]) + (", ..." if len(known) > 30 else "")
+        self.fail(token.column, f"unknown name {cut(token.text)!r}; {hint}declared names: {listed or 'none'}")
 
 
 def parse_expression(
@@ -323,7 +318,7 @@ def sympy_only(value, what: str):
     """
     if isinstance(value, (str, bytes)):
         raise ParseError(
-            f"{what} is text ({_short(repr(value))}); contactsym never evaluates text: pass a SymPy expression "
+            f"{what} is text ({cut(repr(value))}); contactsym never evaluates text: pass a SymPy expression "
             "or a number, or parse a formula with contactsym.parse_expression(text, names)."
         )
     if isinstance(value, (sp.Basic, sp.MatrixBase)):
@@ -332,5 +327,5 @@ def sympy_only(value, what: str):
         return sp.sympify(value, strict=True)
     except (sp.SympifyError, TypeError, ValueError) as error:
         raise ParseError(
-            f"{what} = {_short(repr(value))} of type {type(value).__name__} is neither a SymPy object nor a number."
+            f"{what} = {cut(repr(value))} of type {type(value).__name__} is neither a SymPy object nor a number."
         ) from error

@@ -96,9 +96,9 @@ def _inside_on_grid(unique: Region, stable: Region, plane, parameter, value: flo
     grid = np.meshgrid(*axes, indexing="ij")
     arrays = {str(x): g for x, g in zip(plane, grid)}
     arrays[str(parameter)] = np.full(grid[0].shape, value)
-    chosen = unique.evaluate(**{k: v for k, v in arrays.items() if k in unique._by_name})
+    chosen = unique.evaluate(**{k: v for k, v in arrays.items() if k in unique.symbol_names})
     chosen = np.broadcast_to(chosen, grid[0].shape)
-    good = stable.evaluate(**{k: v for k, v in arrays.items() if k in stable._by_name})
+    good = stable.evaluate(**{k: v for k, v in arrays.items() if k in stable.symbol_names})
     return bool(np.all(np.broadcast_to(good, grid[0].shape)[chosen]))
 
 

@@ -19,7 +19,7 @@ from ..algebra.canonical_form import present_factor
 from ..counts.regions import count_regions
 from ..errors import SignPatternError
 from ..parse import sympy_only
-from ..printing.latex_output import Formula, Numbering, _repr_latex, tex
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering, tex
 from ..stages import equilibria as _equilibria
 from ..stages import fast as _fast
 from ..stages import linear as _linear
@@ -64,7 +64,7 @@ def paper_equations(scene, key: str, detail: str | None = None) -> tuple[tuple, 
     return GENERAL_NUMBERS(key, getattr(scene, "k", 2), getattr(scene, "equations", None), detail)
 
 
-class Scene:
+class Scene(LatexReprMixin):
     """A mechanical system with k compliant contacts.
 
     Build one with :meth:`from_accelerations` or :meth:`from_lagrangian`, or take a
@@ -372,6 +372,3 @@ class Scene:
 
     def __repr__(self) -> str:
         return f"<Scene '{self.name}': {len(self.coordinates)} coordinates, k = {self.k} contacts>"
-
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)

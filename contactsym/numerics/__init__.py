@@ -61,33 +61,22 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from ..errors import NumericsError
-
-# private names that tests, contactsym.numerics.hopf and contactsym.atlas import from here are re-exported
-# with redundant aliases, until they import them from their modules
-from ..laws.formula import _in_domain as _in_domain
-from . import hopf as _hopf
+from . import hopf
 from .certified import Classification, certified_sign, classify, decide
 from .classifier import PointClassifier
-from .classifier import _one_signed_form as _one_signed_form
-from .classifier import _one_signed_sums as _one_signed_sums
-from .classifier import _through_tan as _through_tan
 from .codegen import NumericFunction, lambdify_cse, lambdify_stage
-from .codegen import _cached as _cached
 from .cycles import Cycle, fast_cycle, simulate_averaged
 from .fastsystem import fast_system, simulate_fast
 from .integration import Simulation, integrate
-from .reduced import _branch_at as _branch_at
 from .reduced import equilibrium_reactions, reduced_system, simulate_reduced
 from .simulate import simulate_full
 from .systems import OdeSystem, full_system
-from .systems import _contact_law as _contact_law
-from .systems import _laws_key as _laws_key
 from .trajectories import fast_trajectories_data
-from .values import _Values as _Values
-from .values import numeric_values, substitute
+from .values import NumericValues, numeric_values, substitute
 
 __all__ = [
     "NumericsError",
+    "NumericValues",
     "numeric_values",
     "substitute",
     "lambdify_cse",
@@ -122,9 +111,9 @@ __all__ = [
 
 def first_lyapunov(scene, values: Mapping, **options):
     """l1 of the fast subsystem at a point on its Hopf set; see :func:`contactsym.numerics.hopf.first_lyapunov`."""
-    return _hopf.first_lyapunov(scene, values, **options)
+    return hopf.first_lyapunov(scene, values, **options)
 
 
 def hopf_point(scene, values: Mapping, parameter, **options):
     """The Hopf crossing along ``parameter`` and l1 there; see :func:`contactsym.numerics.hopf.hopf_point`."""
-    return _hopf.hopf_point(scene, values, parameter, **options)
+    return hopf.hopf_point(scene, values, parameter, **options)

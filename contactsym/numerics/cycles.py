@@ -15,7 +15,7 @@ from .fastsystem import _equilibrium_state, _fast_form, _fast_scales, fast_syste
 from .integration import Simulation, integrate
 from .reduced import _reaction_scale, _try_branch
 from .systems import OdeSystem, _coordinates, _free_coordinates, _manifold_parameters
-from .values import _check_free, _check_span, _evaluate, _state_values, _Values, _with, numeric_values, substitute
+from .values import NumericValues, _check_free, _check_span, _evaluate, _state_values, _with, numeric_values, substitute
 
 
 @dataclass(frozen=True, eq=False)
@@ -258,7 +258,7 @@ def simulate_averaged(
     return replace(run, extra={**run.extra, "cycle": cache.get(()) if not depends else None})
 
 
-def _averaged_start(scene, vals: _Values, initial) -> tuple[list, np.ndarray, _Values]:
+def _averaged_start(scene, vals: NumericValues, initial) -> tuple[list, np.ndarray, NumericValues]:
     """(the free coordinates and rates, their initial values, the values with the fixed state and parameters)."""
     free = _free_coordinates(scene)
     free_state = [q for q, _ in free] + [r for _, r in free]
@@ -276,7 +276,7 @@ def _averaged_start(scene, vals: _Values, initial) -> tuple[list, np.ndarray, _V
     return free_state, np.array([given[s] for s in free_state], dtype=float), base
 
 
-def _averaged_system(scene, base: _Values, free_state: list, cycle_at) -> OdeSystem:
+def _averaged_system(scene, base: NumericValues, free_state: list, cycle_at) -> OdeSystem:
     """The slow coordinates driven by their accelerations averaged over the cycle ``cycle_at(state)``."""
     m = len(free_state) // 2
     by_plain = {scene.plain(q): q for q in scene.coordinates}

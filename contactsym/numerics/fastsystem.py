@@ -26,7 +26,7 @@ from .systems import (
     _require_coefficients,
     _second_order,
 )
-from .values import _check_free, _check_span, _number, _state_values, _Values, numeric_values, substitute
+from .values import NumericValues, _check_free, _check_span, _number, _state_values, numeric_values, substitute
 
 _TAU = sp.Symbol("tau", real=True)  # the stretched time t/eps
 
@@ -65,7 +65,7 @@ def fast_system(
     return _cached(scene, key, lambda: _build_fast(scene, vals, laws, unilateral, chosen))
 
 
-def _build_fast(scene, vals: _Values, laws, unilateral, form: str) -> OdeSystem:
+def _build_fast(scene, vals: NumericValues, laws, unilateral, form: str) -> OdeSystem:
     fast = scene.fast_subsystem()
     f = [substitute(fj, vals) for fj in fast.f]
     description = f"fast subsystem (2.1) of '{scene.name}' ({form} form)"
@@ -74,7 +74,7 @@ def _build_fast(scene, vals: _Values, laws, unilateral, form: str) -> OdeSystem:
     return _build_fast_deformation(scene, vals, laws, unilateral, f, description)
 
 
-def _build_fast_uv(scene, vals: _Values, laws, f: list, description: str) -> OdeSystem:
+def _build_fast_uv(scene, vals: NumericValues, laws, f: list, description: str) -> OdeSystem:
     """(2.1) as printed: u' = Phi v + Psi f(u), v' = f(u), with each law's Phi, Psi."""
     fast = scene.fast_subsystem()
     Phi, Psi = [], []
@@ -104,7 +104,7 @@ def _build_fast_uv(scene, vals: _Values, laws, f: list, description: str) -> Ode
     )
 
 
-def _build_fast_deformation(scene, vals: _Values, laws, unilateral, f: list, description: str) -> OdeSystem:
+def _build_fast_deformation(scene, vals: NumericValues, laws, unilateral, f: list, description: str) -> OdeSystem:
     """The same system in the scaled deformations: Q' = V, V' = f(N(Q, V)), N = 0 where a contact opens."""
     fast = scene.fast_subsystem()
     suffix = [""] if scene.k == 1 else [f"_{j}" for j in range(1, scene.k + 1)]
@@ -151,7 +151,7 @@ def _fast_scales(scene, system: OdeSystem, z_ref, N_scale: float, form: str) -> 
     return scale
 
 
-def _equilibrium_state(scene, system: OdeSystem, form: str, u_star, vals: _Values, laws) -> np.ndarray:
+def _equilibrium_state(scene, system: OdeSystem, form: str, u_star, vals: NumericValues, laws) -> np.ndarray:
     k = scene.k
     if form == "uv":
         return np.concatenate([np.asarray(u_star, dtype=float), np.zeros(k)])

@@ -27,7 +27,7 @@ from ..lyapunov.coefficient import HopfVectors, lyapunov_numeric
 from .codegen import _cached, lambdify_cse
 from .reduced import _branch_at
 from .systems import _contact_law, _index, _laws_key
-from .values import _Values, numeric_values, substitute
+from .values import NumericValues, numeric_values, substitute
 
 __all__ = ["HopfCoefficient", "first_lyapunov", "full_cycle_start", "hopf_point"]
 
@@ -106,7 +106,7 @@ def _field(scene, signs: tuple, laws, functions: dict) -> dict:
         Q = [sp.Symbol(f"Q_{j + 1}", real=True) for j in range(k)]
         V = [sp.Symbol(f"V_{j + 1}", real=True) for j in range(k)]
         z = Q + V
-        only_functions = _Values({}, functions)
+        only_functions = NumericValues({}, functions)
         law = [_contact_law(scene, j, laws) for j in range(k)]
         N = [substitute(law[j].smooth_scaled(Q[j], V[j], _index(scene, j)), only_functions) for j in range(k)]
         # N_j cut to 0 outside the law's domain, for the inversion at the equilibrium
@@ -133,7 +133,7 @@ def _field(scene, signs: tuple, laws, functions: dict) -> dict:
     return _cached(scene, ("hopf-field", signs, _laws_key(laws), frozenset(functions.items())), build)
 
 
-def _parameter_values(data: dict, vals: _Values) -> list[float]:
+def _parameter_values(data: dict, vals: NumericValues) -> list[float]:
     missing = [str(p) for p in data["params"] if p not in vals.numbers]
     if missing:
         raise NumericsError(f"l1 needs numeric values for {missing}.")
@@ -184,7 +184,7 @@ def _check_damping(data: dict, j: int, Q_star: float, u_star: float, params: lis
         )
 
 
-def _at_point(scene, vals: _Values, laws, signs):
+def _at_point(scene, vals: NumericValues, laws, signs):
     branch = _branch_at(scene, vals, signs)
     data = _field(scene, tuple(branch.signs), laws, vals.functions)
     params = _parameter_values(data, vals)
@@ -262,7 +262,7 @@ def hopf_point(
     start = float(vals.numbers[key])
 
     def alpha(p):
-        point = _Values({**vals.numbers, key: sp.Float(p)}, vals.functions)
+        point = NumericValues({**vals.numbers, key: sp.Float(p)}, vals.functions)
         J = _at_point(scene, point, laws, signs)[1]
         eigenvalues = np.linalg.eigvals(J)
         complex_pairs = eigenvalues[eigenvalues.imag > 1e-12]
@@ -275,7 +275,7 @@ def hopf_point(
     p_star = brentq(alpha, *bracket, xtol=1e-15 * max(abs(start), 1.0), rtol=1e-15)
     h = 1e-6 * max(abs(p_star), 1e-8)
     slope = (alpha(p_star + h) - alpha(p_star - h)) / (2 * h)
-    point = _Values({**vals.numbers, key: sp.Float(p_star)}, vals.functions)
+    point = NumericValues({**vals.numbers, key: sp.Float(p_star)}, vals.functions)
     u_star, J, H, T, dN, z = _at_point(scene, point, laws, signs)
     vectors = lyapunov_numeric(J, H, T, tol=1e-6)
     return _coefficient(vectors, u_star, dN, state=z, parameter=key, value=p_star, dalpha=slope)

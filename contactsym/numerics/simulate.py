@@ -16,12 +16,12 @@ from .reduced import _reaction_scale, _try_branch
 from .systems import _contact_law, _coordinates, _invert_law, _law_scaled, _manifold_parameters, full_system
 from .values import (
     _UNIT,
+    NumericValues,
     _check_span,
     _evaluate,
     _plain_expr,
     _positive,
     _state_values,
-    _Values,
     _with,
     numeric_values,
     substitute,
@@ -150,7 +150,7 @@ def simulate_full(
     return replace(run, extra={**run.extra, **extra})
 
 
-def _rigid_start(scene, vals: _Values, initial) -> tuple[_Values, np.ndarray]:
+def _rigid_start(scene, vals: NumericValues, initial) -> tuple[NumericValues, np.ndarray]:
     """The values with the parameters the contact manifold fixes, and the initial state on the manifold."""
     positions, rates = _coordinates(scene)
     state = positions + rates
@@ -190,7 +190,7 @@ class _Gaps:
     determined: list
 
 
-def _contact_gaps(scene, system, vals: _Values, z0: np.ndarray, eps: float, t0: float) -> _Gaps:
+def _contact_gaps(scene, system, vals: NumericValues, z0: np.ndarray, eps: float, t0: float) -> _Gaps:
     positions, rates = _coordinates(scene)
     determined = [i for i, (q, r) in enumerate(zip(positions, rates)) if q in scene.manifold or r in scene.manifold]
     exprs = [substitute(_plain_expr(scene, c.coordinate), vals) for c in scene.contacts]
@@ -203,7 +203,7 @@ def _contact_gaps(scene, system, vals: _Values, z0: np.ndarray, eps: float, t0: 
     return _Gaps(exprs, function, jacobian, Dg, np.where(S > 0, S, 1.0 / eps**2), determined)
 
 
-def _slow_start(scene, gaps: _Gaps, vals: _Values, laws, u_star, z0: np.ndarray, eps: float) -> np.ndarray:
+def _slow_start(scene, gaps: _Gaps, vals: NumericValues, laws, u_star, z0: np.ndarray, eps: float) -> np.ndarray:
     """The initial state with the contacts deformed so that the reactions start at u*."""
     Qv = sp.Symbol("Q", real=True)
     targets = []

@@ -24,7 +24,7 @@ import sympy as sp
 
 from ..algebra.basic import normalize
 from ..algebra.hurwitz import Hurwitz
-from ..printing.latex_output import Formula, Numbering, _repr_latex, signs_latex, tex
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering, signs_latex, tex
 from .fast import solve_piece
 from .linear import Linearization, charpoly
 from .stability import Stability
@@ -36,7 +36,7 @@ NUMBERS = Numbering({"equilibrium": (("3.2",), ("4.2",), ("4.2",))})
 
 
 @dataclass(frozen=True)
-class Branch:
+class Branch(LatexReprMixin):
     """One equilibrium: its sign pattern, the reactions u* and where it exists.
 
     Examples
@@ -61,9 +61,6 @@ class Branch:
             where = r"\text{where } s = " + signs_latex(self.signs) + r":\ "
             rows.append(Formula("existence", "", where + tex(self.condition), ""))
         return tuple(rows)
-
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)
 
 
 @dataclass(frozen=True)
@@ -129,7 +126,7 @@ def _lift_offs(fast, patterns, stability_of) -> list[LiftOff]:
 
 
 @dataclass(frozen=True, eq=False)
-class Equilibria:
+class Equilibria(LatexReprMixin):
     """All equilibrium branches, one or more per admissible sign pattern.
 
     Examples
@@ -197,6 +194,3 @@ class Equilibria:
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:
         """Every branch's u* and where it exists: see :func:`contactsym.printing.latex_output.formulas`."""
         return tuple(row for branch in self.branches for row in branch.formulas(own=self.fast.paper_equations))
-
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)

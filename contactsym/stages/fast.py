@@ -18,7 +18,7 @@ import sympy as sp
 from ..algebra.basic import normalize, present
 from ..algebra.fraction_free import solve_fraction_free, t
 from ..errors import ContactsymError, SceneError, SingularJacobianError
-from ..printing.latex_output import Formula, Numbering, _repr_latex, prime, tex
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering, prime, tex
 
 __all__ = ["FastSubsystem", "switching_functions", "on_piece", "solve_piece"]
 
@@ -170,7 +170,7 @@ def _no_real_root(f: sp.Matrix, u: tuple) -> bool:
 
 
 @dataclass(frozen=True, eq=False)
-class FastSubsystem:
+class FastSubsystem(LatexReprMixin):
     """The fast subsystem (2.1) of a scene. All attributes are SymPy objects.
 
     Attributes
@@ -361,6 +361,3 @@ class FastSubsystem:
             rows.append(row("fast", prime(self.v[j]), f_of_u[j]))
         rows += [row("f", tex(f_of_u[j]), self.f[j]) for j in range(self.k)]
         return tuple(rows)
-
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)

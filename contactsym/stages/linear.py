@@ -20,7 +20,7 @@ import sympy as sp
 from ..algebra.basic import normalize, sign_symbols
 from ..algebra.canonical_form import to_fraction
 from ..errors import ContactsymError
-from ..printing.latex_output import Formula, Numbering, _repr_latex
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering
 
 __all__ = ["lam", "charpoly", "principal_minors", "Linearization"]
 
@@ -77,7 +77,7 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
 
 
 @dataclass(frozen=True, eq=False)
-class Linearization:
+class Linearization(LatexReprMixin):
     """The linearized fast subsystem on one sign pattern.
 
     With ``signs=None`` each open switching function gets a sign symbol s_i
@@ -183,6 +183,3 @@ class Linearization:
             row("matrix", "J", self.matrix),
             row("charpoly", r"p(\lambda)", self.charpoly.as_expr()),
         )
-
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)

@@ -19,7 +19,7 @@ import sympy as sp
 from ..algebra.basic import normalize
 from ..algebra.fraction_free import t
 from ..errors import ContactsymError
-from ..printing.latex_output import Formula, Numbering, _repr_latex, prime, tex
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering, prime, tex
 from .fast import on_piece
 
 __all__ = ["Regularized", "ReducedSystem"]
@@ -29,7 +29,7 @@ NUMBERS = Numbering({"regularized": (("1.9",),) * 3, "reduced": (("2.2",),) * 3}
 
 
 @dataclass(frozen=True, eq=False)
-class Regularized:
+class Regularized(LatexReprMixin):
     """The system (1.9) of a scene, in stretched time.
 
     Attributes
@@ -122,12 +122,9 @@ class Regularized:
         rows = [row(prime(x), self.eps * X) for x, X in zip(self.x, self.X)]
         return tuple(rows + [row(prime(y), Y) for y, Y in zip(self.y, self.Y)])
 
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)
-
 
 @dataclass(frozen=True, eq=False)
-class ReducedSystem:
+class ReducedSystem(LatexReprMixin):
     """The comparison system (2.2): slow coordinates with the reactions N = u*.
 
     Attributes
@@ -197,6 +194,3 @@ class ReducedSystem:
         if self.branch.signs:
             rows.append(Formula("existence", "", r"\text{where } " + tex(self.condition), ""))
         return tuple(rows)
-
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)

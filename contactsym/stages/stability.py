@@ -30,7 +30,7 @@ from ..algebra.basic import normalize
 from ..algebra.hurwitz import Hurwitz, hurwitz_minors
 from ..errors import SingularJacobianError
 from ..lyapunov.coefficient import fast_first_lyapunov
-from ..printing.latex_output import Formula, Numbering, _repr_latex, tex
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering, tex
 from .linear import lam
 
 if TYPE_CHECKING:
@@ -79,7 +79,7 @@ def _gt(expr) -> sp.Basic:
 
 
 @dataclass(frozen=True, eq=False)
-class Stability:
+class Stability(LatexReprMixin):
     """Stability conditions of one sign pattern (or all, with sign symbols).
 
     Attributes
@@ -274,9 +274,6 @@ class Stability:
         if self.hopf_frequency is not None:
             rows.append(row("hopf frequency", r"\omega", show(self.hopf_frequency)))
         return tuple(rows) + robustness_formulas(self.robustness)
-
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)
 
 
 def hurwitz_names(stability) -> list[str]:

@@ -99,7 +99,7 @@ def test_one_sided_classification_matches_the_classical_table_from_a_hand_deriva
     expected = np.where(b > 0, "consistent", np.where(a > 0, "indeterminate", "inconsistent"))
     found = np.full(n, "", dtype=object)
     for case in cases:
-        inside = case.region.evaluate(**{s: values[s] for s in case.region._by_name})
+        inside = case.region.evaluate(**{s: values[s] for s in case.region.symbol_names})
         assert not np.any(inside & (found != ""))
         found[inside] = case.name
     clear = np.minimum(np.abs(a), np.abs(b)) > 1e-9

@@ -12,7 +12,7 @@ import re
 import sys
 
 from ...errors import SceneError
-from ...parse import _short
+from ...validate import cut, shorten
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -29,8 +29,8 @@ class SceneFileError(SceneError):
 
 
 def shown(value) -> str:
-    """A value as a message shows it: its repr, cut to 40 characters."""
-    return _short(repr(value))
+    """A value as a message shows it: its repr, cut as every message cuts it (:func:`contactsym.validate.shorten`)."""
+    return shorten(value)
 
 
 class TomlSource:
@@ -121,7 +121,7 @@ class TomlSource:
             if key not in allowed:
                 close = difflib.get_close_matches(key, list(allowed), n=1)
                 hint = f"did you mean '{close[0]}'? " if close else ""
-                what = f"key '{_short(key)}' in [{where}]" if where else f"table [{_short(key)}]"
+                what = f"key '{cut(key)}' in [{where}]" if where else f"table [{cut(key)}]"
                 self.fail(where, key, f"unknown {what}; {hint}allowed: {', '.join(allowed)}")
         for key in required:
             if key not in table:
