@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .errors import ContactsymError
+from .errors import ParseError
 from .validate import cut
 
 __all__ = ["FUNCTIONS", "MAX_DEPTH", "MAX_LENGTH", "ParseError", "parse_expression", "sympy_only"]
@@ -71,10 +71,6 @@ _TOKEN = re.compile(
     r"(?P<space>\s+)|(?P<number>(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)|(?P<name>[A-Za-z][A-Za-z0-9_]*'*)"
     r"|(?P<op>\*\*|[-+*/^(),])"
 )
-
-
-class ParseError(ContactsymError):
-    """A formula that is not in the grammar of :mod:`contactsym.parse`, or names an unknown symbol."""
 
 
 @dataclass(frozen=True)
@@ -283,11 +279,11 @@ def parse_expression(
     >>> parse_expression("__import__('os')", {"m": m})
     Traceback (most recent call last):
     ...
-    contactsym.parse.ParseError: <formula>:1:1: unexpected character '_' (attributes, strings, brackets and other Python are not formulas); expected a number, a name, an operator or '('.
+    contactsym.errors.ParseError: <formula>:1:1: unexpected character '_' (attributes, strings, brackets and other Python are not formulas); expected a number, a name, an operator or '('.
     >>> parse_expression("m*gg", {"m": m, "g": g}, source="my.toml", line=7, column=12)
     Traceback (most recent call last):
     ...
-    contactsym.parse.ParseError: my.toml:7:15: unknown name 'gg'; did you mean 'g'? declared names: g, m.
+    contactsym.errors.ParseError: my.toml:7:15: unknown name 'gg'; did you mean 'g'? declared names: g, m.
     """
     names = dict(names or {})
     if not isinstance(text, str):
@@ -314,7 +310,7 @@ def sympy_only(value, what: str):
     >>> sympy_only("__import__('os').system('true')", "eps")
     Traceback (most recent call last):
     ...
-    contactsym.parse.ParseError: eps is text ("__import__('os').system('true')"); contactsym never evaluates text: pass a SymPy expression or a number, or parse a formula with contactsym.parse_expression(text, names).
+    contactsym.errors.ParseError: eps is text ("__import__('os').system('true')"); contactsym never evaluates text: pass a SymPy expression or a number, or parse a formula with contactsym.parse_expression(text, names).
     """
     if isinstance(value, (str, bytes)):
         raise ParseError(

@@ -25,7 +25,7 @@ import sympy as sp
 from ..errors import ComplianceError, HopfError, NumericsError
 from ..lyapunov.coefficient import HopfVectors, lyapunov_numeric
 from .codegen import _cached, lambdify_cse
-from .reduced import _branch_at
+from .fastsystem import FastProblem
 from .systems import _contact_law, _index, _laws_key
 from .values import NumericValues, numeric_values, substitute
 
@@ -184,17 +184,18 @@ def _check_damping(data: dict, j: int, Q_star: float, u_star: float, params: lis
         )
 
 
-def _at_point(scene, vals: NumericValues, laws, signs):
-    branch = _branch_at(scene, vals, signs)
-    data = _field(scene, tuple(branch.signs), laws, vals.functions)
-    params = _parameter_values(data, vals)
-    u_star = np.array([float(substitute(u, vals)) for u in branch.u_star])
+def _at_point(problem: FastProblem):
+    """(u*, J, H, T, dN, (Q*, 0)) of the smooth piece of the equilibrium's branch at the problem's point."""
+    branch = problem.require_branch()
+    data = _field(problem.scene, tuple(branch.signs), problem.laws, problem.values.functions)
+    params = _parameter_values(data, problem.values)
+    u_star = np.array(problem.u_star)
     Q_star = []
-    for j in range(scene.k):
+    for j in range(problem.scene.k):
         Q_j = _invert_on_branch(data, j, u_star[j], params)
         _check_damping(data, j, Q_j, u_star[j], params)
         Q_star.append(Q_j)
-    z = [*Q_star, *([0.0] * scene.k)]
+    z = [*Q_star, *([0.0] * problem.scene.k)]
     J, H, T, dN = (np.asarray(x, dtype=float) for x in data["tensors"](*z, *params))
     return u_star, J, H, T, dN, np.array(z)
 
@@ -217,8 +218,7 @@ def first_lyapunov(
     ...
     contactsym.errors.HopfError: the point is off the Hopf set: the critical eigenvalues are 0.033063 +- 2.08966 i, so Re(lambda)/omega = 0.0158 (tolerance 1e-06); l1 is defined where Re(lambda) = 0: move the point onto the line (e.g. with contactsym.numerics.hopf_point).
     """
-    vals = numeric_values(scene, values)
-    u_star, J, H, T, dN, z = _at_point(scene, vals, laws, signs)
+    u_star, J, H, T, dN, z = _at_point(FastProblem.at(scene, values, laws=laws, signs=signs))
     vectors = lyapunov_numeric(J, H, T, tol=tol)
     return _coefficient(vectors, u_star, dN, state=z)
 
@@ -263,7 +263,7 @@ def hopf_point(
 
     def alpha(p):
         point = NumericValues({**vals.numbers, key: sp.Float(p)}, vals.functions)
-        J = _at_point(scene, point, laws, signs)[1]
+        J = _at_point(FastProblem(scene, point, laws, signs=signs))[1]
         eigenvalues = np.linalg.eigvals(J)
         complex_pairs = eigenvalues[eigenvalues.imag > 1e-12]
         if complex_pairs.size == 0:
@@ -276,7 +276,7 @@ def hopf_point(
     h = 1e-6 * max(abs(p_star), 1e-8)
     slope = (alpha(p_star + h) - alpha(p_star - h)) / (2 * h)
     point = NumericValues({**vals.numbers, key: sp.Float(p_star)}, vals.functions)
-    u_star, J, H, T, dN, z = _at_point(scene, point, laws, signs)
+    u_star, J, H, T, dN, z = _at_point(FastProblem(scene, point, laws, signs=signs))
     vectors = lyapunov_numeric(J, H, T, tol=1e-6)
     return _coefficient(vectors, u_star, dN, state=z, parameter=key, value=p_star, dalpha=slope)
 

@@ -11,7 +11,7 @@ import sympy as sp
 from ..errors import NumericsError
 from ..progress import Progress
 from .codegen import lambdify_cse
-from .integration import Simulation, integrate
+from .integration import Simulation, integrate_with_impact_bound
 from .reduced import _reaction_scale, _try_branch
 from .systems import _contact_law, _coordinates, _invert_law, _law_scaled, _manifold_parameters, full_system
 from .values import (
@@ -122,11 +122,15 @@ def simulate_full(
         atol = np.maximum(
             rtol * scale, _roundoff_floor(gap_noise, len(positions), gaps.determined, gaps.Dg, fast_squared)
         )
-    bound = reaction_bound if reaction_bound is not None else bound_factor * N_scale
-    run = integrate(
+    run = integrate_with_impact_bound(
         system,
         span,
         z0,
+        reaction_scale=N_scale,
+        reaction_bound=reaction_bound,
+        bound_factor=bound_factor,
+        equilibrium=None if branch is None else branch.signs,
+        extra={"eps": eps, "atol": atol},
         method=method,
         jacobian=jacobian,
         rtol=rtol,
@@ -134,20 +138,12 @@ def simulate_full(
         t_eval=t_eval,
         dense_output=dense_output,
         max_rhs=max_rhs,
-        reaction_bound=bound,
         progress=progress,
         max_seconds=max_seconds,
     )
-    extra = {
-        "eps": eps,
-        "reaction_scale": N_scale,
-        "reaction_bound": bound,
-        "atol": atol,
-        "equilibrium": None if branch is None else branch.signs,
-    }
     if branch is None and run.status == "impact":
-        extra["no_equilibrium"] = True
-    return replace(run, extra={**run.extra, **extra})
+        run = replace(run, extra={**run.extra, "no_equilibrium": True})
+    return run
 
 
 def _rigid_start(scene, vals: NumericValues, initial) -> tuple[NumericValues, np.ndarray]:

@@ -326,7 +326,7 @@ def read_scene(text: str, source: str = "<scene file>", default_name: str = "use
     >>> read_scene(\'[scene]\\ncoordinates = ["x"]\\n[[contacts]]\\ngap = "x"\\nreaction = "N"\\nlaww = "generic"\\n\', "a.toml")
     Traceback (most recent call last):
     ...
-    contactsym.mechanism.files.toml_source.SceneFileError: a.toml:6: unknown key 'laww' in [contacts.0]; did you mean 'law'? allowed: gap, reaction, unilateral, law, friction.
+    contactsym.errors.SceneFileError: a.toml:6: unknown key 'laww' in [contacts.0]; did you mean 'law'? allowed: gap, reaction, unilateral, law, friction.
     """
     try:
         return _Reader(TomlSource(text, source), default_name).build()

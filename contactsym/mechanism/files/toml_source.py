@@ -11,7 +11,7 @@ import difflib
 import re
 import sys
 
-from ...errors import SceneError
+from ...errors import SceneFileError
 from ...validate import cut, shorten
 
 if sys.version_info >= (3, 11):
@@ -22,10 +22,6 @@ else:  # pragma: no cover - Python 3.10
 __all__ = ["SceneFileError", "TomlSource", "shown"]
 
 _KEY = re.compile(r"""\s*(?:"([^"]*)"|'([^']*)'|([A-Za-z0-9_\-]+))\s*=""")
-
-
-class SceneFileError(SceneError):
-    """A scene file that cannot be read: bad TOML, an unknown key, a missing table or a bad formula."""
 
 
 def shown(value) -> str:
@@ -47,7 +43,7 @@ class TomlSource:
     >>> doc.fail("contacts.0", "gapp", "unknown key")
     Traceback (most recent call last):
     ...
-    contactsym.mechanism.files.toml_source.SceneFileError: my.toml:3: unknown key.
+    contactsym.errors.SceneFileError: my.toml:3: unknown key.
     """
 
     def __init__(self, text: str, source: str):
