@@ -7,7 +7,9 @@ comment saying why.
 
 import ast
 import pathlib
+import re
 from dataclasses import dataclass
+from pathlib import Path
 
 import pytest
 
@@ -385,3 +387,68 @@ def test_each_subpackage_has_all_and_its_names_exist(package):
     assert isinstance(getattr(module, "__all__", None), (list, tuple)), f"{package} has no __all__"
     missing = [name for name in module.__all__ if not hasattr(module, name)]
     assert not missing, f"{package}.__all__ names what it does not have: {missing}"
+
+
+# --- the page against the tree, beyond the module list ----------------------------------------------
+
+PAGE = (PACKAGE.parent / "docs" / "architecture.md").read_text()
+
+
+def _scene_tags(page: str) -> dict[str, str]:
+    """scene module -> its tag on the page: the registered name, or 'not registered'."""
+    tags = {}
+    for line in page.splitlines():
+        if line.startswith("- `scenes/") and "__init__" not in line and "/_" not in line:
+            module = line.split("`")[1]
+            if "*not registered*" in line:
+                tags[module] = "not registered"
+            else:
+                tags[module] = line.split("`")[3] if line.count("`") >= 4 else "untagged"
+    return tags
+
+
+def test_the_scene_tag_reader_reads_names_and_the_unregistered():
+    page = "- `scenes/brake.py` (`brake`): §6\n- `scenes/stool.py` (*not registered*): k = 3\n- `scenes/_x.py`: a"
+    assert _scene_tags(page) == {"scenes/brake.py": "brake", "scenes/stool.py": "not registered"}
+    assert _scene_tags("- `scenes/stepladder.py`: Beyond the paper") == {"scenes/stepladder.py": "untagged"}
+
+
+def test_every_built_in_scene_the_page_names_is_registered_and_every_registered_one_is_named():
+    tags = _scene_tags(PAGE)
+    assert "untagged" not in tags.values(), (
+        f"scene modules without a tag: {[m for m, t in tags.items() if t == 'untagged']}"
+    )
+    registered = set(contactsym.scene_names())
+    named = {tag for tag in tags.values() if tag != "not registered"}
+    named |= set(re.findall(r"""scene\(["']([a-z-]+)["']\)""", PAGE))
+    assert named <= registered, (
+        f"docs/architecture.md names scenes that are not registered: {sorted(named - registered)}"
+    )
+    assert registered <= named, f"registered scenes the page does not tag: {sorted(registered - named)}"
+    wrong = [m for m, tag in tags.items() if tag == "not registered" and Path(m).stem.replace("_", "-") in registered]
+    assert not wrong, f"tagged not registered, but registered: {wrong}"
+
+
+def _private_scene_reads(tree: ast.AST) -> list[str]:
+    """``scene._x`` or ``self.scene._x``: a private attribute read on something named scene."""
+    found = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Attribute) and _is_private(node.attr):
+            owner = node.value
+            name = owner.id if isinstance(owner, ast.Name) else getattr(owner, "attr", "")
+            if name == "scene":
+                found.append(f"line {node.lineno}: {name}.{node.attr}")
+    return found
+
+
+def test_the_private_scene_read_finder_finds_one():
+    assert _private_scene_reads(ast.parse("x = self.scene._stage(k, f)\ny = scene.cached(k, f)")) == [
+        "line 1: scene._stage"
+    ]
+
+
+@pytest.mark.parametrize("module", sorted(m for m in MODULES if _below_the_scene(m)))
+def test_no_stage_reads_a_private_attribute_of_the_scene(module):
+    """The stages and counts use the scene's public interface (``scene.cached``, ``scene.fast_subsystem()``)."""
+    wrong = _private_scene_reads(ast.parse(MODULES[module].read_text()))
+    assert not wrong, f"{module} reads private attributes of a scene: {wrong}"

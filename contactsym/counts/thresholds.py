@@ -128,7 +128,7 @@ def square_threshold(scene, unique: str = "unique", stable: str = "stable for ev
     >>> th.value, th.angle, th.inside
     (sqrt(2)/2, atan(sqrt(2)), phi >= atan(sqrt(2)))
     """
-    return scene._stage(("square threshold", unique, stable), lambda: _square_threshold(scene, unique, stable))
+    return scene.cached(("square threshold", unique, stable), lambda: _square_threshold(scene, unique, stable))
 
 
 def threshold_angle(scene, unique: str = "unique", stable: str = "stable for every law") -> sp.Expr:

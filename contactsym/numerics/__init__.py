@@ -38,7 +38,7 @@ The modules, each one job, from the bottom up:
 - :mod:`~contactsym.numerics.classifier`: :class:`PointClassifier`, many points at once.
 
 The Hopf bifurcation of the fast subsystem is :mod:`contactsym.numerics.hopf`, which builds on
-these modules; :func:`first_lyapunov` and :func:`hopf_point` are its functions.
+these modules; :func:`first_lyapunov_at` and :func:`hopf_point` are its functions.
 
 Examples
 --------
@@ -58,15 +58,14 @@ True
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-
 from ..errors import NumericsError
-from . import hopf
 from .certified import Classification, certified_sign, classify, decide
 from .classifier import PointClassifier
 from .codegen import NumericFunction, lambdify_cse, lambdify_stage
 from .cycles import Cycle, fast_cycle, simulate_averaged
 from .fastsystem import fast_system, simulate_fast
+from .hopf import first_lyapunov as first_lyapunov  # the name of 0.1, deprecated
+from .hopf import first_lyapunov_at, hopf_point
 from .integration import Simulation, integrate
 from .reduced import equilibrium_reactions, reduced_system, simulate_reduced
 from .simulate import simulate_full
@@ -101,19 +100,6 @@ __all__ = [
     "classify",
     "Classification",
     "PointClassifier",
+    "first_lyapunov_at",
+    "hopf_point",
 ]
-
-
-# --- the Hopf bifurcation of the fast subsystem (contactsym.numerics.hopf) -------------------------
-# contactsym.numerics.hopf builds on the modules above; its module object is bound here even while it is
-# being imported (it may be imported first), and its functions are looked up when called
-
-
-def first_lyapunov(scene, values: Mapping, **options):
-    """l1 of the fast subsystem at a point on its Hopf set; see :func:`contactsym.numerics.hopf.first_lyapunov`."""
-    return hopf.first_lyapunov(scene, values, **options)
-
-
-def hopf_point(scene, values: Mapping, parameter, **options):
-    """The Hopf crossing along ``parameter`` and l1 there; see :func:`contactsym.numerics.hopf.hopf_point`."""
-    return hopf.hopf_point(scene, values, parameter, **options)

@@ -22,14 +22,15 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from ..deprecation import deprecated_alias
 from ..errors import ComplianceError, HopfError, NumericsError
-from ..lyapunov.coefficient import HopfVectors, lyapunov_numeric
+from ..lyapunov.coefficient import HopfVectors, first_lyapunov_from_derivatives
 from .codegen import _cached, lambdify_cse
 from .fastsystem import FastProblem
 from .systems import _contact_law, _index, _laws_key
 from .values import NumericValues, numeric_values, substitute
 
-__all__ = ["HopfCoefficient", "first_lyapunov", "full_cycle_start", "hopf_point"]
+__all__ = ["HopfCoefficient", "first_lyapunov_at", "full_cycle_start", "hopf_point"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -200,10 +201,14 @@ def _at_point(problem: FastProblem):
     return u_star, J, H, T, dN, np.array(z)
 
 
-def first_lyapunov(
+def first_lyapunov_at(
     scene, values: Mapping, *, laws: Mapping | None = None, signs=None, tol: float = 1e-6
 ) -> HopfCoefficient:
-    """l1 of the fast subsystem at a point on its Hopf set (a numeric point).
+    """l1 of the fast subsystem at a numeric point on its Hopf set, with the cycle it predicts.
+
+    The numeric variant of the first Lyapunov coefficient (the symbolic one is
+    :attr:`Stability.first_lyapunov`; see :mod:`contactsym.lyapunov`); ``first_lyapunov`` is its
+    deprecated name.
 
     Raises HopfError off the Hopf set, saying how far (``Re lambda / omega``), and
     ComplianceError when a law is not monotone at the equilibrium.
@@ -213,14 +218,18 @@ def first_lyapunov(
     >>> import contactsym as cs
     >>> from contactsym.laws.library import Hertz
     >>> values = {"m": 1, "mu": 1.2, "alpha": 1.5707963267948966, "F_x": 0, "F_y": -4}
-    >>> first_lyapunov(cs.scene("brake"), values, laws={0: Hertz(), 1: Hertz()})
+    >>> first_lyapunov_at(cs.scene("brake"), values, laws={0: Hertz(), 1: Hertz()})
     Traceback (most recent call last):
     ...
     contactsym.errors.HopfError: the point is off the Hopf set: the critical eigenvalues are 0.033063 +- 2.08966 i, so Re(lambda)/omega = 0.0158 (tolerance 1e-06); l1 is defined where Re(lambda) = 0: move the point onto the line (e.g. with contactsym.numerics.hopf_point).
     """
     u_star, J, H, T, dN, z = _at_point(FastProblem.at(scene, values, laws=laws, signs=signs))
-    vectors = lyapunov_numeric(J, H, T, tol=tol)
+    vectors = first_lyapunov_from_derivatives(J, H, T, tol=tol)
     return _coefficient(vectors, u_star, dN, state=z)
+
+
+# the name of 0.1, kept: it warns
+first_lyapunov = deprecated_alias(first_lyapunov_at, "first_lyapunov")
 
 
 def _coefficient(vectors: HopfVectors, u_star, dN, state, **extra) -> HopfCoefficient:
@@ -277,7 +286,7 @@ def hopf_point(
     slope = (alpha(p_star + h) - alpha(p_star - h)) / (2 * h)
     point = NumericValues({**vals.numbers, key: sp.Float(p_star)}, vals.functions)
     u_star, J, H, T, dN, z = _at_point(FastProblem(scene, point, laws, signs=signs))
-    vectors = lyapunov_numeric(J, H, T, tol=1e-6)
+    vectors = first_lyapunov_from_derivatives(J, H, T, tol=1e-6)
     return _coefficient(vectors, u_star, dN, state=z, parameter=key, value=p_star, dalpha=slope)
 
 

@@ -8,7 +8,7 @@ Regions are hatched (single hatching: stable for every contact law; double hatch
 unstable for every law; none: the stability depends on the law), as in the paper's Fig. 1.
 
 - :mod:`~contactsym.plotting.regionplot`: :func:`region_data`, :func:`region_plot` for any
-  :class:`~contactsym.stages.regions.Region` in a plane of two of its symbols (``Region.plot``);
+  :class:`~contactsym.stages.regions.Region` in a plane of two of its symbols;
 - :mod:`~contactsym.plotting.guides`: :func:`fig1_data`, :func:`fig1_plot`, Fig. 1a/1b;
 - :mod:`~contactsym.plotting.rod`: :func:`rod_f_data`, :func:`rod_f_plot`, f(u) of the rod
   in the three cases of §3;

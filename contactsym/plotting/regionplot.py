@@ -2,7 +2,7 @@
 
 Regions are duck-typed: anything with ``condition``, ``evaluate(**values)`` and the
 ``symbol_names`` mapping of its symbols (a :class:`contactsym.stages.regions.Region`) is drawn.
-This module imports no other part of contactsym, so ``Region.plot`` can use it.
+Draw a region with ``region_plot(region_data(region, ...), ax=ax)``; this module imports no stage.
 """
 
 from __future__ import annotations

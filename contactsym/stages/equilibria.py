@@ -16,7 +16,6 @@ A_S of the closed contacts S, so its Hurwitz conditions are those of charpoly(A_
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -26,8 +25,8 @@ from ..algebra.basic import normalize
 from ..algebra.hurwitz import Hurwitz
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, signs_latex, tex
 from .fast import solve_piece
-from .linear import Linearization, charpoly
-from .stability import Stability
+from .linear import charpoly
+from .stability import Stability, stability_of
 
 __all__ = ["Branch", "Equilibria", "LiftOff"]
 
@@ -136,18 +135,15 @@ class Equilibria(LatexReprMixin):
     >>> len(eq.branches)
     4
 
-    ``stability_of(signs)`` gives the Stability of a sign pattern (the scene passes its
-    cached one); by default it is built here from the fast subsystem.
+    Built from the fast subsystem alone; the Stability of each sign pattern is the one the fast
+    subsystem keeps (:func:`~contactsym.stages.stability.stability_of`), shared with the scene.
     """
 
     fast: object
     signs: tuple | None = None
-    stability_of: Callable | None = None
 
     def _stability(self, signs) -> Stability:
-        if self.stability_of is not None:
-            return self.stability_of(signs)
-        return Stability(Linearization(self.fast, signs))
+        return stability_of(self.fast, signs)
 
     @cached_property
     def patterns(self) -> list[tuple]:

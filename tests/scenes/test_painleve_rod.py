@@ -60,8 +60,8 @@ def test_fast_subsystem_eigenvalues_agree_with_the_hurwitz_verdict():
     scene = cs.scene("painleve-rod")
     lin = scene.linearization(signs=(1,))
     hurwitz = scene.stability((1,)).hurwitz
-    symbols = sorted(lin.matrix.free_symbols | set().union(*(h.free_symbols for h in hurwitz)), key=str)
-    matrix = sp.lambdify(symbols, lin.matrix, "numpy")
+    symbols = sorted(lin.jacobian.free_symbols | set().union(*(h.free_symbols for h in hurwitz)), key=str)
+    matrix = sp.lambdify(symbols, lin.jacobian, "numpy")
     conditions = sp.lambdify(symbols, hurwitz, "numpy")
     rng = np.random.default_rng(7)
     verdicts = set()
