@@ -31,7 +31,7 @@ The modules, each one job, from the bottom up:
 - :mod:`~contactsym.numerics.certified`: certified signs, :func:`decide`, :func:`classify`;
 - :mod:`~contactsym.numerics.integration`: :func:`integrate` and the :class:`Simulation` result;
 - :mod:`~contactsym.numerics.reduced`: equilibrium branches and the reduced system (2.2);
-- :mod:`~contactsym.numerics.fastsystem`: the fast subsystem (2.1), generated and simulated;
+- :mod:`~contactsym.numerics.fastsystem`: the fast subsystem (2.1), generated and simulated; :class:`FastProblem`;
 - :mod:`~contactsym.numerics.simulate`: the full system (1.9) simulated;
 - :mod:`~contactsym.numerics.cycles`: cycles of (2.1) and the averaged system (2.7);
 - :mod:`~contactsym.numerics.trajectories`: trajectories of (2.1) for a phase portrait;
@@ -63,7 +63,7 @@ from .certified import Classification, certified_sign, classify, decide
 from .classifier import PointClassifier
 from .codegen import NumericFunction, lambdify_cse, lambdify_stage
 from .cycles import Cycle, fast_cycle, simulate_averaged
-from .fastsystem import fast_system, simulate_fast
+from .fastsystem import FastProblem, fast_system, simulate_fast
 from .hopf import first_lyapunov as first_lyapunov  # the name of 0.1, deprecated
 from .hopf import first_lyapunov_at, hopf_point
 from .integration import Simulation, integrate
@@ -85,6 +85,7 @@ __all__ = [
     "Simulation",
     "full_system",
     "reduced_system",
+    "FastProblem",
     "fast_system",
     "integrate",
     "simulate_full",
