@@ -54,7 +54,7 @@ def naive(scene) -> dict:
     import sympy as sp
 
     lam = sp.Symbol("lambda")
-    M = scene.linearization().matrix
+    M = scene.linearization().jacobian
     p = sp.expand((lam * sp.eye(M.rows) - M).det())
     coefficients = sp.Poly(p, lam).all_coeffs()
     n = len(coefficients) - 1

@@ -94,7 +94,7 @@ def run(quick: bool, out_dir) -> list[dict]:
     scene = cs.scene("brake")
     st = scene.stability()
     lin = st.linearization
-    by_name = {str(s): s for s in set().union(*[c.free_symbols for c in st.hurwitz]) | lin.matrix.free_symbols}
+    by_name = {str(s): s for s in set().union(*[c.free_symbols for c in st.hurwitz]) | lin.jacobian.free_symbols}
     names = ["alpha", "m", "mu", "Phi_1", "Phi_2", "Psi_1", "Psi_2"]
     parameters = [by_name[n] for n in names]
     rng = np.random.default_rng(2005)
@@ -109,7 +109,7 @@ def run(quick: bool, out_dir) -> list[dict]:
     ours_s, ours = _best_of(3, lambda: classifier(*values))
     sub = 5000 if quick else 50000
     index = rng.choice(n_random, sub, replace=False)
-    per_point, disagreements = _against_eigenvalues(lin.matrix, parameters, values, index, ours)
+    per_point, disagreements = _against_eigenvalues(lin.jacobian, parameters, values, index, ours)
     notes = (
         f"brake, 7 parameters (alpha, m, mu, Phi_j, Psi_j), {n_random} random points; kept factors "
         f"{len(classifier.kept)} ({', '.join(map(str, classifier.kept[:1]))}, ...); band {ours.band:.1e} relative; "
@@ -131,7 +131,7 @@ def run(quick: bool, out_dir) -> list[dict]:
     # adversarial points: on the Hopf line of (6.4), in floats, so inside the band
     line_values = [line[k] for k in names]
     line_s, on_line = _best_of(1, lambda: classifier(*line_values))
-    line_eig = _batched_max_real_part(lin.matrix, parameters, line_values) < 0
+    line_eig = _batched_max_real_part(lin.jacobian, parameters, line_values) < 0
     truth = _exact_stable(conditions64, slice_parameters, [line[k] for k in ("m", "mu", "Phi_1", "Psi_1")])
     wrong = int(np.sum((on_line.stable == 1) != truth))
     eig_wrong = int(np.sum(line_eig != truth))
@@ -152,7 +152,7 @@ def run(quick: bool, out_dir) -> list[dict]:
     classifier64(*[v[:1000] for v in slice_values])
     ours64_s, ours64 = _best_of(3, lambda: classifier64(*slice_values))
     per_point64, disagree64 = _against_eigenvalues(
-        lin.matrix.subs(slice_6_4), slice_parameters, slice_values, index, ours64
+        lin.jacobian.subs(slice_6_4), slice_parameters, slice_values, index, ours64
     )
     notes64 = (
         f"(6.4) slice: alpha = 90 deg, Phi_1 = Phi_2, Psi_1 = Psi_2; kept condition {classifier64.kept}; "

@@ -1,6 +1,6 @@
-"""robustness: undecided fraction and time per point of ``robustness.decide`` against Props 7/8.
+"""robustness: undecided fraction and time per point of ``robustness.decide_robustness`` against Props 7/8.
 
-Ours: :func:`contactsym.robustness.classify.decide` (certificates and exact witness laws), per point.
+Ours: :func:`contactsym.robustness.classify.decide_robustness` (certificates and exact witness laws), per point.
 Baseline: what contactsym had for k >= 3: Proposition 7 (A symmetric positive definite:
 stable for every law) and Proposition 8 (det A < 0 or all a_ss < 0: unstable for every
 law), the rest undecided. Cases: random A with entries uniform in [-2, 2] (k = 3 and 4,
@@ -17,7 +17,7 @@ import time
 import numpy as np
 import sympy as sp
 
-from contactsym.robustness.classify import decide, nested_sequences
+from contactsym.robustness.classify import decide_robustness, nested_sequences
 from contactsym.robustness.law_polynomials import LawPolynomials, fast_spectral_abscissa
 
 from . import record
@@ -80,7 +80,7 @@ def _case(matrices, laws):
     counterexamples = 0
     for i, A in enumerate(matrices):
         t0 = time.process_time()  # CPU seconds: the machine may be shared
-        result = decide(A)
+        result = decide_robustness(A)
         seconds.append(time.process_time() - t0)
         Af = np.array(A.tolist(), dtype=float)
         t0 = time.process_time()
@@ -132,8 +132,8 @@ def run(quick: bool, out) -> list[dict]:
         "random-4x4": _random_matrices(4, sizes["random-4x4"], 12),
         "stool": _stool_matrices(sizes["stool"], 13),
     }
-    decide(cases["random-3x3"][0])  # caches the generic Hurwitz minors (not timed)
-    decide(cases["random-4x4"][0])
+    decide_robustness(cases["random-3x3"][0])  # caches the generic Hurwitz minors (not timed)
+    decide_robustness(cases["random-4x4"][0])
     records, rows = [], []
     print(f"{'case':<12} {'undecided ours':>15} {'Props 7/8':>10} {'ms/point':>9} {'max ms':>8} {'false claims':>12}")
     for name, matrices in cases.items():

@@ -17,35 +17,51 @@ import sys
 from . import _aliases
 from .algebra.basic import SignSymbol
 from .errors import (
+    AtlasError,
     ComplianceError,
     ContactsymError,
+    HopfError,
+    NumericsError,
     SceneError,
     SignPatternError,
     SingularJacobianError,
+    UsageError,
 )
 from .laws import Compliance, Coulomb, Generic, KelvinVoigt, Law, Viscous
+from .laws.library import CubicStiffening, Hertz, HuntCrossley, with_laws
 from .mechanism.files.reader import FigurePlan, SceneFileError, load_scene, read_scene
 from .mechanism.scene import Contact, Scene
 from .parse import ParseError, parse_expression
 from .printing.latex_output import latex
 from .report import ReportError, ReportResult, conditions, report_tex, write_report
 from .scenes import DEFAULT_SCENE, scene, scene_names
+from .stages import Equilibria, FastSubsystem, Linearization, Regularized, Stability
 from .stages.linear import lam
 from .stages.regions import Region, closed_form
 
 __all__ = [
+    "AtlasError",
     "Compliance",
     "ComplianceError",
     "Contact",
     "ContactsymError",
     "Coulomb",
+    "CubicStiffening",
     "DEFAULT_SCENE",
+    "Equilibria",
+    "FastSubsystem",
     "FigurePlan",
     "Generic",
+    "Hertz",
+    "HopfError",
+    "HuntCrossley",
     "KelvinVoigt",
     "Law",
+    "Linearization",
+    "NumericsError",
     "ParseError",
     "Region",
+    "Regularized",
     "ReportError",
     "ReportResult",
     "Scene",
@@ -54,6 +70,8 @@ __all__ = [
     "SignPatternError",
     "SignSymbol",
     "SingularJacobianError",
+    "Stability",
+    "UsageError",
     "Viscous",
     "closed_form",
     "conditions",
@@ -65,6 +83,7 @@ __all__ = [
     "report_tex",
     "scene",
     "scene_names",
+    "with_laws",
     "write_report",
 ]
 

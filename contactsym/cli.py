@@ -8,7 +8,7 @@ The commands::
     contactsym [show] [SCENE]            the derivation chain of a scene, as text
     contactsym list                      the built-in scenes
     contactsym conditions SCENE --format text|latex|json [--signs +1,-1]
-    contactsym report [SCENE ...] --out DIR [--no-pdf] [--force]
+    contactsym report [SCENE ...] --out DIR [--no-pdf] [--force] [--resolution N] [--dpi N]
                                              a LaTeX/PDF report per scene, figures and conditions.json
     contactsym bench [--quick] [--out DIR] [--json FILE] the benchmarks (from a source checkout)
     contactsym atlas SCENE QUANTITY --grid NAME=START:STOP:COUNT [--scheduler ADDRESS] [--out FILE.nc]
@@ -195,6 +195,13 @@ def _parser() -> argparse.ArgumentParser:
     )
     report.add_argument("--no-pdf", action="store_true", help="write report.tex but do not run pdflatex")
     report.add_argument("--force", action="store_true", help="replace scene directories that contactsym did not write")
+    report.add_argument(
+        "--resolution",
+        type=_positive_int,
+        metavar="N",
+        help="grid points per axis of the region maps (default: 400 for the paper's figures, 200 otherwise)",
+    )
+    report.add_argument("--dpi", type=_positive_int, metavar="N", help="dots per inch of the figures (default: 150)")
     bench = sub.add_parser("bench", help="run the benchmarks (source checkout); table and plots in --out")
     bench.add_argument("--quick", action="store_true", help="smaller sweeps, under 3 minutes")
     bench.add_argument("--json", metavar="FILE", type=_path, help="write the records as a JSON list to FILE")
@@ -211,6 +218,16 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _positive_int(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{cut(text)!r} is not a whole number; give e.g. 100") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"{value} is not positive; give e.g. 100")
+    return value
+
+
 def _path(text: str) -> str:
     """A path argument: not empty (an empty --out would mean the current directory)."""
     if not text.strip():
@@ -222,7 +239,9 @@ def _progress(message: str) -> None:
     print(f"contactsym: {message}", file=sys.stderr, flush=True)
 
 
-def _report(names: list[str], out: str, pdf: bool, force: bool = False) -> int:
+def _report(
+    names: list[str], out: str, pdf: bool, force: bool = False, resolution: int | None = None, dpi: int | None = None
+) -> int:
     from .report import FigureSource, ReportError, conditions, summary_text, write_report  # brings matplotlib
 
     names = names or scene_names()
@@ -243,7 +262,7 @@ def _report(names: list[str], out: str, pdf: bool, force: bool = False) -> int:
         raise ReportError(f"cannot write to --out {cut(str(root))}: {cut(str(error.strerror or error))}.") from error
     summaries, started = [], time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="contactsym-figures-") as scratch:
-        figures = FigureSource(Path(scratch))
+        figures = FigureSource(Path(scratch), resolution=resolution, dpi=dpi)
         for index, s in enumerate(scenes, 1):
             clock = time.perf_counter()
 
@@ -351,7 +370,9 @@ def _run(args) -> int:
             print(f"{name:24s}{scene(name).description}")
         return 0
     if args.command == "report":
-        return _report(args.scenes, args.out, pdf=not args.no_pdf, force=args.force)
+        return _report(
+            args.scenes, args.out, pdf=not args.no_pdf, force=args.force, resolution=args.resolution, dpi=args.dpi
+        )
     if args.command == "conditions":
         return _conditions(args.scene, args.format, args.signs)
     if args.command == "bench":

@@ -1,4 +1,8 @@
-"""Errors raised by contactsym. Each message says what is wrong and how to fix it."""
+"""Errors raised by contactsym, all in this one module. Each message says what is wrong and how to fix it.
+
+Every error is a :class:`ContactsymError` (a ``ValueError``); the modules that raise them
+also import them, so the paths of 0.1 (``contactsym.parse.ParseError``, ...) still work.
+"""
 
 from __future__ import annotations
 
@@ -25,6 +29,26 @@ class SignPatternError(ContactsymError):
 
 class HopfError(ContactsymError):
     """A Hopf question asked where it has no answer: off the Hopf set, or no oscillatory pair."""
+
+
+class ParseError(ContactsymError):
+    """A formula that is not in the grammar of :mod:`contactsym.parse`, or names an unknown symbol."""
+
+
+class SceneFileError(SceneError):
+    """A scene file that cannot be read: bad TOML, an unknown key, a missing table or a bad formula."""
+
+
+class ReportError(ContactsymError):
+    """The report could not be written or compiled."""
+
+
+class AtlasError(ContactsymError):
+    """A sweep that cannot start (bad grid, unknown quantity, unreachable scheduler, foreign store)."""
+
+
+class UsageError(AtlasError):
+    """A bad ``contactsym atlas`` command line (exit code 2)."""
 
 
 class NumericsError(ContactsymError):

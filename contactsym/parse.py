@@ -45,7 +45,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .errors import ContactsymError
+from .errors import ParseError
+from .validate import cut
 
 __all__ = [
     "FUNCTIONS",
@@ -102,10 +103,6 @@ _TOKEN = re.compile(
 )
 
 
-class ParseError(ContactsymError):
-    """A formula that is not in the grammar of :mod:`contactsym.parse`, or names an unknown symbol."""
-
-
 @dataclass(frozen=True)
 class _Token:
     kind: str  # 'number', 'name', 'op' or 'end'
@@ -115,10 +112,6 @@ class _Token:
 
 def _where(source: str, line: int, column: int) -> str:
     return f"{source}:{line}:{column + 1}"
-
-
-def _short(text: str, limit: int = 40) -> str:
-    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def _digits(n: int) -> int:
@@ -132,7 +125,7 @@ def _shown(expr: sp.Basic) -> str:
     """An expression for a message, cut short; a huge number by its number of digits."""
     if expr.is_Rational and max(abs(expr.p), expr.q).bit_length() > 300:
         return f"a number of {_digits(max(abs(expr.p), expr.q))} digits"
-    return _short(str(expr))
+    return cut(str(expr))
 
 
 def _tokens(text: str, fail) -> list[_Token]:
@@ -180,7 +173,7 @@ class _Parser:
             self.fail(self.token.column, f"expected {what}, found {self._found()}")
 
     def _found(self) -> str:
-        return "the end of the formula" if self.token.kind == "end" else repr(_short(self.token.text))
+        return "the end of the formula" if self.token.kind == "end" else repr(cut(self.token.text))
 
     def nest(self):
         self.depth += 1
@@ -200,7 +193,7 @@ class _Parser:
                 self.cap(column, _shown(expr), "MAX_DIGITS", "use smaller numbers")
         elif expr.is_number:
             if expr.has(sp.zoo, sp.nan, sp.oo, sp.S.NegativeInfinity):
-                self.fail(column, f"{_short(str(expr))} is not finite; check for a division by zero")
+                self.fail(column, f"{cut(str(expr))} is not finite; check for a division by zero")
             try:
                 real, imaginary = expr.evalf(15).as_real_imag()
                 beyond = real.is_Number and bool(abs(real) > sp.Integer(10) ** MAX_EXPONENT)
@@ -209,14 +202,14 @@ class _Parser:
             if beyond:
                 self.cap(
                     column,
-                    f"the number {_short(str(expr))} is larger than 1e{MAX_EXPONENT}",
+                    f"the number {cut(str(expr))} is larger than 1e{MAX_EXPONENT}",
                     "MAX_EXPONENT",
                     "use smaller numbers",
                 )
             if imaginary.is_Number and imaginary != 0:
                 self.fail(
                     column,
-                    f"{_short(str(expr))} is not a real number (its value is {_short(str(real + sp.I * imaginary))})",
+                    f"{cut(str(expr))} is not a real number (its value is {cut(str(real + sp.I * imaginary))})",
                 )
         return expr
 
@@ -227,7 +220,7 @@ class _Parser:
                 if max(abs(node.exp.p), node.exp.q) > MAX_DEGREE:
                     self.cap(
                         0,
-                        f"the power {_shown(node.exp)} of {_short(str(node.base))} (powers combined)",
+                        f"the power {_shown(node.exp)} of {cut(str(node.base))} (powers combined)",
                         "MAX_DEGREE",
                         "write a lower power",
                     )
@@ -243,12 +236,10 @@ class _Parser:
         self.degrees_bounded(expr)
         if expr.has(sp.zoo, sp.nan, sp.oo, sp.S.NegativeInfinity):
             self.fail(
-                0, f"the formula evaluates to {_short(str(expr))}, which is not finite; check for a division by zero"
+                0, f"the formula evaluates to {cut(str(expr))}, which is not finite; check for a division by zero"
             )
         if expr.has(sp.I):
-            self.fail(
-                0, f"the formula evaluates to {_short(str(expr))}, which is not real (a root of a negative number?)"
-            )
+            self.fail(0, f"the formula evaluates to {cut(str(expr))}, which is not real (a root of a negative number?)")
         return expr
 
     def expression(self) -> sp.Expr:
@@ -301,7 +292,7 @@ class _Parser:
     def power_bounded(self, base: sp.Expr, exponent: sp.Rational, column: int) -> None:
         """Refuse a power before SymPy computes it: a number's in full (9^9^9), a symbol's later, in the pipeline."""
         size = max(abs(exponent.p), exponent.q)
-        power = f"the power {_shown(exponent)} of {_short(str(base))}"
+        power = f"the power {_shown(exponent)} of {cut(str(base))}"
         if base.is_Rational:
             bits = (base.p.bit_length() + base.q.bit_length()) * abs(exponent)
             if abs(exponent) > MAX_EXPONENT or bits > 64 * MAX_EXPONENT:
@@ -320,7 +311,7 @@ class _Parser:
             if len(exponent) > 6 or abs(int(exponent or 0)) > MAX_EXPONENT or len(mantissa) > MAX_EXPONENT:
                 self.cap(
                     token.column,
-                    f"the number {_short(token.text)} is out of range",
+                    f"the number {cut(token.text)} is out of range",
                     "MAX_EXPONENT",
                     "use smaller numbers",
                 )
@@ -365,8 +356,8 @@ class _Parser:
         known = sorted(self.names)
         close = difflib.get_close_matches(token.text, known, n=1)
         hint = f"did you mean {close[0]!r}? " if close else ""
-        listed = ", ".join(_short(n, 20) for n in known[:30]) + (", ..." if len(known) > 30 else "")
-        self.fail(token.column, f"unknown name {_short(token.text)!r}; {hint}declared names: {listed or 'none'}")
+        listed = ", ".join(cut(n, 20) for n in known[:30]) + (", ..." if len(known) > 30 else "")
+        self.fail(token.column, f"unknown name {cut(token.text)!r}; {hint}declared names: {listed or 'none'}")
 
 
 def parse_expression(
@@ -403,11 +394,11 @@ def parse_expression(
     >>> parse_expression("__import__('os')", {"m": m})
     Traceback (most recent call last):
     ...
-    contactsym.parse.ParseError: <formula>:1:1: unexpected character '_' (attributes, strings, brackets and other Python are not formulas); expected a number, a name, an operator or '('.
+    contactsym.errors.ParseError: <formula>:1:1: unexpected character '_' (attributes, strings, brackets and other Python are not formulas); expected a number, a name, an operator or '('.
     >>> parse_expression("m*gg", {"m": m, "g": g}, source="my.toml", line=7, column=12)
     Traceback (most recent call last):
     ...
-    contactsym.parse.ParseError: my.toml:7:15: unknown name 'gg'; did you mean 'g'? declared names: g, m.
+    contactsym.errors.ParseError: my.toml:7:15: unknown name 'gg'; did you mean 'g'? declared names: g, m.
     """
     names = dict(names or {})
     if not isinstance(text, str):
@@ -434,11 +425,11 @@ def sympy_only(value, what: str):
     >>> sympy_only("__import__('os').system('true')", "eps")
     Traceback (most recent call last):
     ...
-    contactsym.parse.ParseError: eps is text ("__import__('os').system('true')"); contactsym never evaluates text: pass a SymPy expression or a number, or parse a formula with contactsym.parse_expression(text, names).
+    contactsym.errors.ParseError: eps is text ("__import__('os').system('true')"); contactsym never evaluates text: pass a SymPy expression or a number, or parse a formula with contactsym.parse_expression(text, names).
     """
     if isinstance(value, (str, bytes)):
         raise ParseError(
-            f"{what} is text ({_short(repr(value))}); contactsym never evaluates text: pass a SymPy expression "
+            f"{what} is text ({cut(repr(value))}); contactsym never evaluates text: pass a SymPy expression "
             "or a number, or parse a formula with contactsym.parse_expression(text, names)."
         )
     if isinstance(value, (sp.Basic, sp.MatrixBase)):
@@ -447,5 +438,5 @@ def sympy_only(value, what: str):
         return sp.sympify(value, strict=True)
     except (sp.SympifyError, TypeError, ValueError) as error:
         raise ParseError(
-            f"{what} = {_short(repr(value))} of type {type(value).__name__} is neither a SymPy object nor a number."
+            f"{what} = {cut(repr(value))} of type {type(value).__name__} is neither a SymPy object nor a number."
         ) from error

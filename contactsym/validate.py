@@ -60,9 +60,23 @@ _NUMBER_TYPES = (int, float, Fraction, np.integer, np.floating)
 _NOT_FINITE = (sp.nan, sp.zoo, sp.oo, sp.S.NegativeInfinity)
 
 
-def cut(text: str, limit: int = SHOWN) -> str:
-    """``text`` cut to ``limit`` characters, saying how long it was."""
-    return text if len(text) <= limit else f"{text[:limit]}... ({len(text)} characters)"
+def cut(text: str, limit: int = SHOWN, *, count: bool = True) -> str:
+    """``text`` cut to ``limit`` characters: the one text-cutting rule of contactsym.
+
+    With ``count`` (messages) the first ``limit`` characters are kept and the message says how
+    long the text was; without it (tables, summaries) the result, ``...`` included, fits in
+    ``limit`` characters.
+
+    Examples
+    --------
+    >>> cut("x" * 70)
+    'xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx... (70 characters)'
+    >>> cut("mu <= Abs(cot(alpha))", 12, count=False)
+    'mu <= Abs...'
+    """
+    if len(text) <= limit:
+        return text
+    return f"{text[:limit]}... ({len(text)} characters)" if count else text[: limit - 3] + "..."
 
 
 def shorten(value, limit: int = SHOWN) -> str:

@@ -7,7 +7,9 @@ comment saying why.
 
 import ast
 import pathlib
+import re
 from dataclasses import dataclass
+from pathlib import Path
 
 import pytest
 
@@ -252,3 +254,201 @@ def test_architecture_page_lists_every_module_and_no_stale_one():
     assert files - listed == set(), f"modules missing from docs/architecture.md: {sorted(files - listed)}"
     stale = {name for name in listed - files if name.endswith(".py") and not name.startswith("tests/")}
     assert not stale, f"docs/architecture.md lists modules that do not exist: {sorted(stale)}"
+
+
+# --- interfaces, not private names ---------------------------------------------------------------
+
+
+def _is_private(name: str) -> bool:
+    return name.startswith("_") and not name.startswith("__")
+
+
+def _unit(module: str) -> str:
+    """The subpackage a module belongs to (``contactsym.numerics`` for ``contactsym.numerics.hopf``);
+    a module at the top level is a unit of its own."""
+    parts = module.split(".")
+    if len(parts) == 1:
+        return module
+    if len(parts) == 2 and (module not in MODULES or MODULES[module].name != "__init__.py"):
+        return module
+    return ".".join(parts[:2])
+
+
+def _private_uses(module: str, tree: ast.AST) -> list[tuple[str, str, int]]:
+    """(origin module, private name, line) for each ``from origin import _name`` in ``module``
+    and each ``origin._name`` read through a module bound by an import."""
+    found, bound = [], {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom):
+            for alias, target in zip(node.names, _targets(module, node)):
+                if target.endswith("." + alias.name):  # a submodule: the name is bound to it
+                    bound[alias.asname or alias.name] = target
+                    origin = target.rpartition(".")[0]
+                else:
+                    origin = target
+                if _is_private(alias.name):
+                    found.append((origin, alias.name, node.lineno))
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                if alias.asname:
+                    bound[alias.asname] = alias.name
+    for node in ast.walk(tree):
+        if (
+            isinstance(node, ast.Attribute)
+            and isinstance(node.value, ast.Name)
+            and node.value.id in bound
+            and _is_private(node.attr)
+            and bound[node.value.id] in MODULES
+        ):
+            found.append((bound[node.value.id], node.attr, node.lineno))
+    return found
+
+
+def _private_imports_across(module: str, tree: ast.AST) -> list[str]:
+    return [
+        f"line {line}: {origin}.{name}"
+        for origin, name, line in _private_uses(module, tree)
+        if origin.startswith("contactsym") and _unit(origin) != _unit(module)
+    ]
+
+
+def test_the_private_import_finder_sees_names_and_attributes():
+    plot = "contactsym.atlas.plot"
+    assert _private_imports_across(plot, ast.parse("from ..plotting import _axes")) == [
+        "line 1: contactsym.plotting._axes"
+    ]
+    assert _private_imports_across(plot, ast.parse("from .. import numerics\nnumerics._Values({}, {})")) == [
+        "line 2: contactsym.numerics._Values"
+    ]
+    assert _private_imports_across(
+        plot, ast.parse("from .grid import _axis\nfrom ..plotting import _axes as axes")
+    ) == ["line 2: contactsym.plotting._axes"]
+    assert (
+        _private_imports_across(plot, ast.parse("from .grid import _axis\nfrom ..plotting import axes_or_current"))
+        == []
+    )
+    assert _unit("contactsym.numerics.hopf") == _unit("contactsym.numerics") == "contactsym.numerics"
+    assert _unit("contactsym.parse") != _unit("contactsym.validate")
+
+
+@pytest.mark.parametrize("module", sorted(MODULES))
+def test_no_private_name_is_imported_from_another_subpackage(module):
+    """A subpackage's interface is its public names: ``_name`` is free to change inside its subpackage."""
+    wrong = _private_imports_across(module, ast.parse(MODULES[module].read_text()))
+    assert not wrong, f"{module} uses private names of other subpackages: {wrong}"
+
+
+def _init_private_names(package: str, tree: ast.AST) -> list[str]:
+    """Private names an ``__init__`` imports (or binds by ``import ... as _x``) or lists in ``__all__``;
+    importing a private submodule of the package itself (``from . import _aliases``) re-exports nothing."""
+    wrong = []
+    for node in ast.iter_child_nodes(tree):
+        if isinstance(node, (ast.Import, ast.ImportFrom)):
+            for alias in node.names:
+                own_module = isinstance(node, ast.ImportFrom) and node.level == 1 and not node.module
+                if own_module and f"{package}.{alias.name}" in MODULES and not alias.asname:
+                    continue
+                if _is_private(alias.name) or _is_private(alias.asname or ""):
+                    wrong.append(f"line {node.lineno}: {alias.name}" + (f" as {alias.asname}" if alias.asname else ""))
+        elif isinstance(node, ast.Assign) and any(isinstance(t, ast.Name) and t.id == "__all__" for t in node.targets):
+            names = [e.value for e in getattr(node.value, "elts", []) if isinstance(e, ast.Constant)]
+            wrong += [f"__all__ lists {name}" for name in names if _is_private(name)]
+    return wrong
+
+
+PACKAGES = sorted(m for m in MODULES if MODULES[m].name == "__init__.py")
+
+
+def test_the_init_checker_sees_private_re_exports():
+    assert _init_private_names("contactsym.numerics", ast.parse("from .codegen import _cached as _cached")) == [
+        "line 1: _cached as _cached"
+    ]
+    assert _init_private_names("contactsym.numerics", ast.parse("from . import hopf as _hopf")) == [
+        "line 1: hopf as _hopf"
+    ]
+    assert _init_private_names("contactsym.numerics", ast.parse('__all__ = ["decide", "_Values"]')) == [
+        "__all__ lists _Values"
+    ]
+    assert _init_private_names("contactsym", ast.parse("from . import _aliases")) == []
+
+
+@pytest.mark.parametrize("package", PACKAGES)
+def test_no_init_re_exports_a_private_name(package):
+    wrong = _init_private_names(package, ast.parse(MODULES[package].read_text()))
+    assert not wrong, f"{package}/__init__.py imports or exports private names: {wrong}"
+
+
+@pytest.mark.parametrize("package", PACKAGES)
+def test_each_subpackage_has_all_and_its_names_exist(package):
+    """``__all__`` is the subpackage's documented interface: present, and every name in it importable."""
+    import importlib
+
+    module = importlib.import_module(package)
+    assert isinstance(getattr(module, "__all__", None), (list, tuple)), f"{package} has no __all__"
+    missing = [name for name in module.__all__ if not hasattr(module, name)]
+    assert not missing, f"{package}.__all__ names what it does not have: {missing}"
+
+
+# --- the page against the tree, beyond the module list ----------------------------------------------
+
+PAGE = (PACKAGE.parent / "docs" / "architecture.md").read_text()
+
+
+def _scene_tags(page: str) -> dict[str, str]:
+    """scene module -> its tag on the page: the registered name, or 'not registered'."""
+    tags = {}
+    for line in page.splitlines():
+        if line.startswith("- `scenes/") and "__init__" not in line and "/_" not in line:
+            module = line.split("`")[1]
+            if "*not registered*" in line:
+                tags[module] = "not registered"
+            else:
+                tags[module] = line.split("`")[3] if line.count("`") >= 4 else "untagged"
+    return tags
+
+
+def test_the_scene_tag_reader_reads_names_and_the_unregistered():
+    page = "- `scenes/brake.py` (`brake`): §6\n- `scenes/stool.py` (*not registered*): k = 3\n- `scenes/_x.py`: a"
+    assert _scene_tags(page) == {"scenes/brake.py": "brake", "scenes/stool.py": "not registered"}
+    assert _scene_tags("- `scenes/stepladder.py`: Beyond the paper") == {"scenes/stepladder.py": "untagged"}
+
+
+def test_every_built_in_scene_the_page_names_is_registered_and_every_registered_one_is_named():
+    tags = _scene_tags(PAGE)
+    assert "untagged" not in tags.values(), (
+        f"scene modules without a tag: {[m for m, t in tags.items() if t == 'untagged']}"
+    )
+    registered = set(contactsym.scene_names())
+    named = {tag for tag in tags.values() if tag != "not registered"}
+    named |= set(re.findall(r"""scene\(["']([a-z-]+)["']\)""", PAGE))
+    assert named <= registered, (
+        f"docs/architecture.md names scenes that are not registered: {sorted(named - registered)}"
+    )
+    assert registered <= named, f"registered scenes the page does not tag: {sorted(registered - named)}"
+    wrong = [m for m, tag in tags.items() if tag == "not registered" and Path(m).stem.replace("_", "-") in registered]
+    assert not wrong, f"tagged not registered, but registered: {wrong}"
+
+
+def _private_scene_reads(tree: ast.AST) -> list[str]:
+    """``scene._x`` or ``self.scene._x``: a private attribute read on something named scene."""
+    found = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Attribute) and _is_private(node.attr):
+            owner = node.value
+            name = owner.id if isinstance(owner, ast.Name) else getattr(owner, "attr", "")
+            if name == "scene":
+                found.append(f"line {node.lineno}: {name}.{node.attr}")
+    return found
+
+
+def test_the_private_scene_read_finder_finds_one():
+    assert _private_scene_reads(ast.parse("x = self.scene._stage(k, f)\ny = scene.cached(k, f)")) == [
+        "line 1: scene._stage"
+    ]
+
+
+@pytest.mark.parametrize("module", sorted(m for m in MODULES if _below_the_scene(m)))
+def test_no_stage_reads_a_private_attribute_of_the_scene(module):
+    """The stages and counts use the scene's public interface (``scene.cached``, ``scene.fast_subsystem()``)."""
+    wrong = _private_scene_reads(ast.parse(MODULES[module].read_text()))
+    assert not wrong, f"{module} reads private attributes of a scene: {wrong}"

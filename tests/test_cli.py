@@ -87,6 +87,8 @@ def test_parse_signs_never_evaluates_text():
         (("conditions", "painleve-klein-guides", "--signs", "1"), 2, "has length 1"),
         (("conditions", "brake", "--signs=-1,1"), 2, "must be +1"),
         (("frobnicate",), 2, "invalid choice"),
+        (("report", "brake", "--resolution", "0"), 2, "0 is not positive"),
+        (("report", "brake", "--dpi", "lots"), 2, "'lots' is not a whole number"),
     ],
 )
 def test_errors_are_one_line_with_nonzero_exit(capsys, argv, code, words):
@@ -105,7 +107,8 @@ def test_report_to_an_unwritable_directory(capsys, tmp_path):
 
 def test_report_all_scenes_writes_tex_json_figures_and_summary(capfd, tmp_path):
     all_reports = tmp_path
-    code = main(["report", "--out", str(all_reports), "--no-pdf"])
+    # coarse figures: this test checks that every figure is made and placed, not how fine it is
+    code = main(["report", "--out", str(all_reports), "--no-pdf", "--resolution", "60", "--dpi", "40"])
     out, err = capfd.readouterr()
     assert code == 0, err
     for name in cs.scene_names():
@@ -158,3 +161,29 @@ def test_python_dash_m_contactsym_works():
         [sys.executable, "-m", "contactsym", "show", "nope"], capture_output=True, text=True, env=env, timeout=120
     )
     assert bad.returncode == 2 and len(bad.stderr.strip().splitlines()) == 1
+
+
+def test_report_resolution_and_dpi_reach_the_figures(capfd, tmp_path):
+    """--dpi sets the pixels of every figure: the same figure at half the dpi has half the width."""
+    widths = {}
+    for dpi in (40, 80):
+        assert (
+            main(
+                [
+                    "report",
+                    "sliding-point",
+                    "--out",
+                    str(tmp_path / str(dpi)),
+                    "--no-pdf",
+                    "--resolution",
+                    "30",
+                    "--dpi",
+                    str(dpi),
+                ]
+            )
+            == 0
+        )
+        (png,) = sorted((tmp_path / str(dpi) / "sliding-point" / "figures").glob("*.png"))[:1]
+        widths[dpi] = int.from_bytes(png.read_bytes()[16:20], "big")  # the IHDR width of a PNG
+    capfd.readouterr()
+    assert widths[80] == pytest.approx(2 * widths[40], abs=2)

@@ -108,7 +108,7 @@ def test_built_in_scenes_are_the_ones_the_readme_names(capsys):
 
 
 def test_attributes_named_in_the_examples_comments_exist():
-    # `lin = s.linearization()  # .A (4.3) .matrix (4.5) ...`: each .name is an attribute of lin
+    # `lin = s.linearization()  # .A (4.3) .jacobian (4.5) ...`: each .name is an attribute of lin
     checked = 0
     for block in fenced_blocks("python"):
         target = None

@@ -4,7 +4,7 @@ Fourier presentation and interval signs. No ``simplify`` anywhere.
 """
 
 from .basic import normalize, present
-from .canonical_form import Fraction, TrigField, canonical, to_fraction
+from .canonical_form import TrigField, TrigFraction, canonical, to_fraction
 from .fourier import best_form
 from .fraction_free import adjugate_and_det, adjugate_and_det_in_field, polynomial_adjugate, solve_fraction_free, t
 from .hurwitz import Hurwitz, hopf_omega_squared, hurwitz_matrix, hurwitz_minors, lienard_chipart
@@ -12,10 +12,10 @@ from .intervals import interval_sign
 from .reductions import SignSymbol, known_sign, reduce_signs, reduce_trig, sign_symbols
 
 __all__ = [
-    "Fraction",
     "Hurwitz",
     "SignSymbol",
     "TrigField",
+    "TrigFraction",
     "adjugate_and_det",
     "adjugate_and_det_in_field",
     "best_form",

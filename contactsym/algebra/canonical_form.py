@@ -48,11 +48,12 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.polys.fields import FracField
 
+from ..deprecation import deprecated_names
 from ..parse import sympy_only
 from .fourier import best_form
 from .reductions import SignSymbol, known_sign, reduce_signs, reduce_trig
 
-__all__ = ["canonical", "Fraction", "TrigField", "to_fraction"]
+__all__ = ["canonical", "TrigField", "TrigFraction", "to_fraction"]
 
 
 def _is_angle(x: sp.Expr) -> bool:
@@ -116,7 +117,7 @@ def _generators(expr: sp.Expr) -> list[sp.Expr]:
     return trig + sorted(plain, key=sp.default_sort_key) + sorted(opaque, key=sp.default_sort_key)
 
 
-class Fraction:
+class TrigFraction:
     """P/Q in normal form: two polynomials of one ring, reduced, cancelled.
 
     Attributes
@@ -306,17 +307,17 @@ class TrigField:
                     numer, denom = self._reduce_poly(numer * conjugate), rational
         return self.field.new(numer, denom)
 
-    def fraction(self, value) -> Fraction:
+    def fraction(self, value) -> TrigFraction:
         value = self.reduce(value)
         numer, denom = _integral(value.numer, value.denom)
-        return Fraction(numer, denom, self.pairs, self.signs)
+        return TrigFraction(numer, denom, self.pairs, self.signs)
 
     def present(self, value) -> sp.Expr:
         """The presented sympy expression of a field element."""
         return self.fraction(value).as_expr()
 
 
-def to_fraction(expr: sp.Expr) -> Fraction:
+def to_fraction(expr: sp.Expr) -> TrigFraction:
     """The normal form P/Q of ``expr`` (see the module docstring).
 
     Examples
@@ -365,3 +366,7 @@ def _laurent_in_plain_angles(expr: sp.Expr) -> bool:
         if node.is_Pow and not node.exp.is_Integer:
             return False
     return True
+
+
+# 0.1's name, kept (it warns): it shadowed the standard fractions.Fraction
+__getattr__ = deprecated_names(__name__, {"Fraction": "TrigFraction"}, globals())

@@ -158,14 +158,21 @@ def hopf_omega_squared(poly: sp.Poly) -> sp.Expr | None:
 class Hurwitz:
     """Hurwitz data of a characteristic polynomial (4.6)-(4.7).
 
+    ``equations`` are the equation numbers its conditions are cited with in :meth:`formulas`;
+    the stage that owns the conditions sets them (:class:`~contactsym.stages.stability.Stability`:
+    (3.2) for one contact, (4.7) for more), so this algebra cites no paper number of its own.
+
     Examples
     --------
     >>> x, a, b = sp.symbols("x a b")
     >>> Hurwitz(sp.Poly(x**2 + a*x + b, x)).conditions
     [a, b]
+    >>> [f.cite() for f in Hurwitz(sp.Poly(x**2 + a*x + b, x), ("3.2",)).formulas()]
+    ['(3.2)', '(3.2)']
     """
 
     poly: sp.Poly
+    equations: tuple = ()
 
     @cached_property
     def coefficients(self) -> list[sp.Expr]:
@@ -206,5 +213,5 @@ class Hurwitz:
         return hopf_omega_squared(self.poly)
 
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:
-        """The conditions h_i > 0 of (4.7): see :func:`contactsym.printing.latex_output.formulas`."""
-        return tuple(Formula("hurwitz", f"h_{{{i}}}", c, "", ("4.7",)) for i, c in enumerate(self.conditions, 1))
+        """The conditions h_i > 0, cited with ``equations``: see :func:`contactsym.printing.latex_output.formulas`."""
+        return tuple(Formula("hurwitz", f"h_{{{i}}}", c, "", self.equations) for i, c in enumerate(self.conditions, 1))

@@ -16,16 +16,12 @@ from pathlib import Path
 
 import numpy as np
 
-from .grid import AtlasError
+from ..errors import UsageError
 from .run import sweep
 
 __all__ = ["add_atlas_command", "parse_axis", "run_atlas"]
 
 _CLI_QUANTITIES = ("classification", "leading-eigenvalue", "stable-fraction", "equilibrium-count", "cycle")
-
-
-class UsageError(AtlasError):
-    """A bad ``contactsym atlas`` command line (exit code 2)."""
 
 
 def _number(text: str, what: str) -> float:
@@ -51,7 +47,7 @@ def parse_axis(text: str) -> tuple[str, np.ndarray]:
     >>> parse_axis("mu=0:1")
     Traceback (most recent call last):
     ...
-    contactsym.atlas.cli.UsageError: --grid mu=0:1: write NAME=START:STOP:COUNT or NAME=V1,V2,...
+    contactsym.errors.UsageError: --grid mu=0:1: write NAME=START:STOP:COUNT or NAME=V1,V2,...
     """
     name, _, spec = text.partition("=")
     name = name.strip()

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import ContactsymError
+from ..errors import AtlasError
 
 __all__ = ["AtlasError", "Grid", "as_grid"]
 
@@ -17,10 +17,6 @@ __all__ = ["AtlasError", "Grid", "as_grid"]
 MAX_POINTS = 10**9
 #: Bytes an atlas keeps per point and output (a float64 value, and room for the reason).
 _BYTES_PER_POINT = 64
-
-
-class AtlasError(ContactsymError):
-    """A sweep that cannot start (bad grid, unknown quantity, unreachable scheduler, foreign store)."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -96,15 +92,15 @@ def as_grid(grid, *, max_points: int | None = None, outputs: int = 1) -> Grid:
     >>> as_grid({})
     Traceback (most recent call last):
     ...
-    contactsym.atlas.grid.AtlasError: the grid is empty; give {parameter name: values}, e.g. {"mu": numpy.linspace(0, 2, 50)}.
+    contactsym.errors.AtlasError: the grid is empty; give {parameter name: values}, e.g. {"mu": numpy.linspace(0, 2, 50)}.
     >>> as_grid({"mu": [1.0, float("inf")]})
     Traceback (most recent call last):
     ...
-    contactsym.atlas.grid.AtlasError: the grid axis 'mu' has non-finite values [inf]; give finite numbers.
+    contactsym.errors.AtlasError: the grid axis 'mu' has non-finite values [inf]; give finite numbers.
     >>> as_grid({"mu": range(1000), "alpha": range(1000)}, max_points=10**5)
     Traceback (most recent call last):
     ...
-    contactsym.atlas.grid.AtlasError: the grid has 1000000 points, more than max_points = 100000; sweep a coarser grid or raise max_points.
+    contactsym.errors.AtlasError: the grid has 1000000 points, more than max_points = 100000; sweep a coarser grid or raise max_points.
     """
     if isinstance(grid, Grid):
         return grid

@@ -58,7 +58,7 @@ class Setup:
 
     symbols: tuple
     fixed: tuple
-    functions: numerics._Values
+    functions: numerics.NumericValues
 
     def columns(self, points: np.ndarray) -> list[np.ndarray]:
         n = len(points)
@@ -95,5 +95,5 @@ def setup_for(scene, grid: Grid, values) -> Setup:
     return Setup(
         tuple(symbols) + tuple(fixed),
         tuple(float(vals.numbers[s]) for s in fixed),
-        numerics._Values({}, vals.functions),
+        numerics.NumericValues({}, vals.functions),
     )

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..plotting import ContactPlot, _axes, _relational_fields
+from ..plotting import ContactPlot, axes_or_current, relational_fields
 from ..scenes import scene as scene_by_name
 from .grid import AtlasError
 
@@ -101,7 +101,7 @@ def atlas_data(
             skipped += [name] if symbols else []
             continue
         numbers = {k: v for k, v in known.items() if v is not None}
-        fields = _relational_fields(region.condition, {**numbers, **grid_values}, shape)
+        fields = relational_fields(region.condition, {**numbers, **grid_values}, shape)
         boundaries[name] = (region.latex(), fields)
     title = f"{ds.attrs.get('scene', '')}: {variable}"
     return AtlasData(variable, x, y, xs, ys, values, title, tuple(fine), boundaries, tuple(skipped))
@@ -127,7 +127,7 @@ def atlas_plot(data, ax=None, *, variable: str | None = None, legend: bool = Tru
     """
     if not isinstance(data, AtlasData):
         data = atlas_data(data, variable, **data_options)
-    ax = _axes(ax)
+    ax = axes_or_current(ax)
     artists = []
     if data.y is None:
         (line,) = ax.plot(data.xs, data.values, "o-", label=data.variable)

@@ -103,7 +103,7 @@ class _LeadingEigenvalue(Kernel):
 
 def _build_leading_eigenvalue(scene, grid, values, signs=None):
     setup = setup_for(scene, grid, values)
-    matrix = setup.prepare(scene.linearization(signs).matrix, "the matrix (4.5)")
+    matrix = setup.prepare(scene.linearization(signs).jacobian, "the matrix (4.5)")
     return _LeadingEigenvalue(setup, matrix)
 
 

@@ -179,7 +179,7 @@ def sweep(
     >>> sweep("brake", "cycle", {"mu": []})
     Traceback (most recent call last):
     ...
-    contactsym.atlas.grid.AtlasError: the grid axis 'mu' is empty; give at least one value.
+    contactsym.errors.AtlasError: the grid axis 'mu' is empty; give at least one value.
     """
     xr = _require("xarray")  # checked first: nothing starts without the container of the results
 

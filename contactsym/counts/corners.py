@@ -163,7 +163,7 @@ def corner_cases(scene) -> list[CountCase]:
             f"scene '{scene.name}' has a unilateral contact: its counts (lift-off included) come from "
             "count_regions (contactsym.counts.orthants), not from corner cases."
         )
-    return list(scene._stage("corner cases", lambda: tuple(_corner_cases(scene))))
+    return list(scene.cached("corner cases", lambda: tuple(_corner_cases(scene))))
 
 
 def _corner_cases(scene) -> list[CountCase]:

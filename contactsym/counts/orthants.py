@@ -70,7 +70,7 @@ class SceneMap:
 
     def determinant(self, pattern) -> sp.Expr:
         key = ("orthant det", tuple(pattern))
-        return self.scene._stage(key, lambda: normalize(self.matrix(pattern).det(method="berkowitz")))
+        return self.scene.cached(key, lambda: normalize(self.matrix(pattern).det(method="berkowitz")))
 
     def vertex(self, i: int) -> sp.Matrix:
         """k = 2: V_0..V_3 = c_1^+, c_2^+, -c_1^-, -c_2^- (indices mod 4)."""
@@ -137,7 +137,7 @@ def _build(scene) -> SceneMap:
 
 def scene_map(scene) -> SceneMap:
     """The orthant map of a scene (cached on it)."""
-    return scene._stage("orthant map", lambda: _build(scene))
+    return scene.cached("orthant map", lambda: _build(scene))
 
 
 # --- closed-form regions -----------------------------------------------------------------

@@ -96,9 +96,9 @@ def _inside_on_grid(unique: Region, stable: Region, plane, parameter, value: flo
     grid = np.meshgrid(*axes, indexing="ij")
     arrays = {str(x): g for x, g in zip(plane, grid)}
     arrays[str(parameter)] = np.full(grid[0].shape, value)
-    chosen = unique.evaluate(**{k: v for k, v in arrays.items() if k in unique._by_name})
+    chosen = unique.evaluate(**{k: v for k, v in arrays.items() if k in unique.symbol_names})
     chosen = np.broadcast_to(chosen, grid[0].shape)
-    good = stable.evaluate(**{k: v for k, v in arrays.items() if k in stable._by_name})
+    good = stable.evaluate(**{k: v for k, v in arrays.items() if k in stable.symbol_names})
     return bool(np.all(np.broadcast_to(good, grid[0].shape)[chosen]))
 
 
@@ -128,7 +128,7 @@ def square_threshold(scene, unique: str = "unique", stable: str = "stable for ev
     >>> th.value, th.angle, th.inside
     (sqrt(2)/2, atan(sqrt(2)), phi >= atan(sqrt(2)))
     """
-    return scene._stage(("square threshold", unique, stable), lambda: _square_threshold(scene, unique, stable))
+    return scene.cached(("square threshold", unique, stable), lambda: _square_threshold(scene, unique, stable))
 
 
 def threshold_angle(scene, unique: str = "unique", stable: str = "stable for every law") -> sp.Expr:

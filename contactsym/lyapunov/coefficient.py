@@ -35,10 +35,17 @@ import numpy as np
 import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
+from ..deprecation import deprecated_alias
 from ..errors import HopfError
 from ..laws import Generic
 
-__all__ = ["HopfVectors", "lyapunov_numeric", "lyapunov_symbolic", "hopf_vectors_45"]
+__all__ = [
+    "HopfVectors",
+    "first_lyapunov_from_derivatives",
+    "first_lyapunov_symbolic",
+    "hopf_vectors_45",
+    "lyapunov_symbolic",
+]
 
 
 @dataclass(frozen=True)
@@ -90,8 +97,9 @@ def critical_pair(J: np.ndarray, tol: float = 1e-6) -> tuple[complex, np.ndarray
     return lam, vectors[:, i]
 
 
-def lyapunov_numeric(J, hessian, third, *, tol: float = 1e-6) -> HopfVectors:
-    """l1 from the Jacobian ``J[i, j]``, ``hessian[i, j, k]`` and ``third[i, j, k, l]`` at the point.
+def first_lyapunov_from_derivatives(J, hessian, third, *, tol: float = 1e-6) -> HopfVectors:
+    """l1 of any vector field, numerically, from its Jacobian ``J[i, j]``, ``hessian[i, j, k]`` and
+    ``third[i, j, k, l]`` at a point on its Hopf set (``lyapunov_numeric`` is its deprecated name).
 
     Examples
     --------
@@ -103,7 +111,7 @@ def lyapunov_numeric(J, hessian, third, *, tol: float = 1e-6) -> HopfVectors:
     >>> r2 = x**2 + y**2
     >>> F = sp.Matrix([-y - x*r2, x - y*r2])
     >>> J, H, T = derivative_tensors(F, [x, y], {x: 0, y: 0})
-    >>> h = lyapunov_numeric(J, H, T)
+    >>> h = first_lyapunov_from_derivatives(J, H, T)
     >>> round(h.l1, 12), round(float(2 * h.radius(0.01) * abs(h.q[0])), 12)
     (-2.0, 0.1)
     """
@@ -272,8 +280,9 @@ def _law_function(fast, j: int, which: str) -> sp.Expr:
     return sp.Function(f"{which}{j}")(fast.u[j], fast.v[j])
 
 
-def fast_first_lyapunov(stability, at: dict | None = None, reduce=None) -> sp.Expr | None:
-    """l1 of (2.1) at its equilibrium on the Hopf set, symbolically (None without a Hopf set).
+def first_lyapunov_symbolic(stability, at: dict | None = None, reduce=None) -> sp.Expr | None:
+    """l1 of (2.1) at its equilibrium on the Hopf set, symbolically (None without a Hopf set); this is
+    :attr:`Stability.first_lyapunov` (``fast_first_lyapunov`` is its deprecated name).
 
     The field ``u_j' = Phi_j(u_j, v_j) v_j + Psi_j(u_j, v_j) f_j(u)``, ``v_j' = f_j(u)`` is
     differentiated with Phi_j, Psi_j and f_j as functions; at the equilibrium f_j = 0, the
@@ -297,7 +306,7 @@ def fast_hopf_forms(stability, at: dict | None = None) -> tuple | None:
     """``(J, H, T, omega, q, p)`` of (2.1) at its equilibrium, for :func:`lyapunov_symbolic`.
 
     ``H`` and ``T`` are the nested second and third derivatives of the field (see
-    :func:`fast_first_lyapunov`). None without a Hopf set.
+    :func:`first_lyapunov_symbolic`). None without a Hopf set.
     """
     lin = stability.linearization
     fast, k = lin.fast, stability.k
@@ -305,7 +314,7 @@ def fast_hopf_forms(stability, at: dict | None = None) -> tuple | None:
         return None
     given = dict(at or {})
     at = {**dict.fromkeys(fast.v, 0), **lin.u_star}
-    omega = sp.sqrt(sp.factor(stability.poly.omega_squared.subs(given))) if given else stability.hopf_frequency
+    omega = sp.sqrt(sp.factor(stability.routh_hurwitz.omega_squared.subs(given))) if given else stability.hopf_frequency
     F = [sp.Function(f"f{j}")(*fast.u) for j in range(k)]
     Phi = [_law_function(fast, j, "Phi") for j in range(k)]
     Psi = [_law_function(fast, j, "Psi") for j in range(k)]
@@ -345,5 +354,10 @@ def fast_hopf_forms(stability, at: dict | None = None) -> tuple | None:
     A = lin.A.subs(at).subs(given)
     Phi_star, Psi_star = ([sp.sympify(x).subs(given) for x in values] for values in (lin.Phi, lin.Psi))
     q, p = hopf_vectors_45(A, Phi_star, Psi_star, omega)
-    J = lin.matrix.subs(at).subs(given)
+    J = lin.jacobian.subs(at).subs(given)
     return J, H, T, omega, q, p
+
+
+# the names of 0.1, kept: they warn
+lyapunov_numeric = deprecated_alias(first_lyapunov_from_derivatives, "lyapunov_numeric")
+fast_first_lyapunov = deprecated_alias(first_lyapunov_symbolic, "fast_first_lyapunov")

@@ -1,6 +1,6 @@
 """l1 of (2.1) as an explicit polynomial in the derivatives of generic laws at the equilibrium.
 
-With generic laws (1.5), :func:`contactsym.lyapunov.coefficient.fast_first_lyapunov` leaves the law's
+With generic laws (1.5), :func:`contactsym.lyapunov.coefficient.first_lyapunov_symbolic` leaves the law's
 derivatives at (u*, 0) as symbols (``Phi_1_u``, ``Psi_2_uv``, ...). On a slice where the critical
 frequency is rational in the remaining parameters (e.g. the Hopf line solved for one of them),
 every intermediate vector of the normal form is a rational function with Gaussian rational
@@ -23,7 +23,7 @@ __all__ = ["first_lyapunov_polynomial"]
 def first_lyapunov_polynomial(stability, at: dict | None = None) -> sp.Expr | None:
     """l1 of (2.1) on the Hopf set as ``sum c_a s_a + sum c_ab s_a s_b`` in the law symbols ``s``.
 
-    ``at`` is the slice of :func:`~contactsym.lyapunov.coefficient.fast_first_lyapunov` (typically the
+    ``at`` is the slice of :func:`~contactsym.lyapunov.coefficient.first_lyapunov_symbolic` (typically the
     Hopf line solved for one parameter, and law symbols identified across contacts); the
     coefficients ``c`` are reduced rational functions of the remaining parameters, factored.
     Normalization ``<q, q> = <p, q> = 1`` in (u, v): the positive factor ``1/(4 omega <q, q>)``

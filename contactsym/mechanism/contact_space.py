@@ -110,7 +110,7 @@ class ContactSpace:
 
 
 def mass_determinant(M: sp.Matrix):
-    """1/det M as a :class:`~contactsym.canonical.Fraction`: det M is its denominator over
+    """1/det M as a :class:`~contactsym.algebra.canonical_form.TrigFraction`: det M is its denominator over
     its (constant) numerator.
 
     Examples

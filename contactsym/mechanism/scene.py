@@ -19,7 +19,7 @@ from ..algebra.canonical_form import present_factor
 from ..counts.regions import count_regions
 from ..errors import SceneError, SignPatternError
 from ..parse import sympy_only
-from ..printing.latex_output import Formula, Numbering, _repr_latex, tex
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering, tex
 from ..stages import equilibria as _equilibria
 from ..stages import fast as _fast
 from ..stages import linear as _linear
@@ -27,10 +27,10 @@ from ..stages import regularize as _regularize
 from ..stages import stability as _stability
 from ..stages.equilibria import Equilibria
 from ..stages.fast import FastSubsystem
-from ..stages.linear import Linearization
+from ..stages.linear import Linearization, linearization_of
 from ..stages.regions import scene_regions
 from ..stages.regularize import ReducedSystem, Regularized
-from ..stages.stability import Stability
+from ..stages.stability import Stability, stability_of
 from ..validate import lagrangian_parts, scene_options, scene_parts, shorten, sign_pattern
 from .checks import check_eps, check_equations, check_scene, with_friction
 from .contact import Contact, contact_manifold, plain_symbol
@@ -64,7 +64,7 @@ def paper_equations(scene, key: str, detail: str | None = None) -> tuple[tuple, 
     return GENERAL_NUMBERS(key, getattr(scene, "k", 2), getattr(scene, "equations", None), detail)
 
 
-class Scene:
+class Scene(LatexReprMixin):
     """A mechanical system with k compliant contacts.
 
     Build one with :meth:`from_accelerations` or :meth:`from_lagrangian`, or take a
@@ -320,47 +320,49 @@ class Scene:
 
     # --- stages -------------------------------------------------------------------
 
-    def _stage(self, key, build):
+    def cached(self, key, build):
+        """``build()``, computed once per ``key`` and kept with the scene: the stages and what is derived
+        from them (counts, thresholds) share the scene's cache through this method."""
         if key not in self._stage_cache:
             self._stage_cache[key] = build()
         return self._stage_cache[key]
 
     def regularized(self) -> Regularized:
         """The system (1.7)/(1.9) in slow and fast variables (see :mod:`contactsym.stages.regularize`)."""
-        return self._stage("regularized", lambda: Regularized(self))
+        return self.cached("regularized", lambda: Regularized(self))
 
     def fast_subsystem(self) -> FastSubsystem:
         """The associated system (2.1): ``u' = Phi v + Psi f(u)``, ``v' = f(u)``."""
-        return self._stage("fast", lambda: FastSubsystem(self))
+        return self.cached("fast", lambda: FastSubsystem(self))
 
     def equilibria(self, signs=None) -> Equilibria:
         """Equilibria of the fast subsystem, one branch per sign pattern (4.2)."""
         key = None if signs is None else self.check_signs(signs)
-        return self._stage(("equilibria", key), lambda: Equilibria(self.fast_subsystem(), key, self.stability))
+        return self.cached(("equilibria", key), lambda: Equilibria(self.fast_subsystem(), key))
 
     def linearization(self, signs=None) -> Linearization:
         """Jacobian A (4.3), the matrix (4.5) and the characteristic polynomial (4.6)."""
         key = None if signs is None else self.check_signs(signs)
-        return self._stage(("linear", key), lambda: Linearization(self.fast_subsystem(), key))
+        return self.cached(("linear", key), lambda: linearization_of(self.fast_subsystem(), key))
 
     def stability(self, signs=None) -> Stability:
         """Hurwitz conditions (4.7) and the robustness classification (Props. 3-8)."""
         key = None if signs is None else self.check_signs(signs)
-        return self._stage(("stability", key), lambda: Stability(self.linearization(key)))
+        return self.cached(("stability", key), lambda: stability_of(self.fast_subsystem(), key))
 
     def regions(self, signs=None) -> dict:
         """Named closed-form regions: stable / unstable for every law, law-dependent, Hopf line."""
         key = None if signs is None else self.check_signs(signs)
-        return self._stage(("regions", key), lambda: scene_regions(self, key))
+        return self.cached(("regions", key), lambda: scene_regions(self, key))
 
     def equilibrium_counts(self) -> dict:
         """Named closed-form regions by the number of equilibria (see :mod:`contactsym.counts.regions`)."""
-        return self._stage("counts", lambda: count_regions(self))
+        return self.cached("counts", lambda: count_regions(self))
 
     def reduced_system(self, signs=None) -> ReducedSystem:
         """The comparison system (2.2): slow motion with reactions from f(u*) = 0."""
         key = None if signs is None else self.check_signs(signs)
-        return self._stage(("reduced", key), lambda: ReducedSystem(self, key))
+        return self.cached(("reduced", key), lambda: ReducedSystem(self, key))
 
     # --- presentation -------------------------------------------------------------
 
@@ -399,6 +401,3 @@ class Scene:
 
     def __repr__(self) -> str:
         return f"<Scene '{self.name}': {len(self.coordinates)} coordinates, k = {self.k} contacts>"
-
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)

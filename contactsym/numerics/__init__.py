@@ -31,14 +31,14 @@ The modules, each one job, from the bottom up:
 - :mod:`~contactsym.numerics.certified`: certified signs, :func:`decide`, :func:`classify`;
 - :mod:`~contactsym.numerics.integration`: :func:`integrate` and the :class:`Simulation` result;
 - :mod:`~contactsym.numerics.reduced`: equilibrium branches and the reduced system (2.2);
-- :mod:`~contactsym.numerics.fastsystem`: the fast subsystem (2.1), generated and simulated;
+- :mod:`~contactsym.numerics.fastsystem`: the fast subsystem (2.1), generated and simulated; :class:`FastProblem`;
 - :mod:`~contactsym.numerics.simulate`: the full system (1.9) simulated;
 - :mod:`~contactsym.numerics.cycles`: cycles of (2.1) and the averaged system (2.7);
 - :mod:`~contactsym.numerics.trajectories`: trajectories of (2.1) for a phase portrait;
 - :mod:`~contactsym.numerics.classifier`: :class:`PointClassifier`, many points at once.
 
 The Hopf bifurcation of the fast subsystem is :mod:`contactsym.numerics.hopf`, which builds on
-these modules; :func:`first_lyapunov` and :func:`hopf_point` are its functions.
+these modules; :func:`first_lyapunov_at` and :func:`hopf_point` are its functions.
 
 Examples
 --------
@@ -58,36 +58,24 @@ True
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-
 from ..errors import NumericsError
-
-# private names that tests, contactsym.numerics.hopf and contactsym.atlas import from here are re-exported
-# with redundant aliases, until they import them from their modules
-from ..laws.formula import _in_domain as _in_domain
-from . import hopf as _hopf
 from .certified import Classification, certified_sign, classify, decide
 from .classifier import PointClassifier
-from .classifier import _one_signed_form as _one_signed_form
-from .classifier import _one_signed_sums as _one_signed_sums
-from .classifier import _through_tan as _through_tan
 from .codegen import NumericFunction, lambdify_cse, lambdify_stage
-from .codegen import _cached as _cached
 from .cycles import Cycle, fast_cycle, simulate_averaged
-from .fastsystem import fast_system, simulate_fast
+from .fastsystem import FastProblem, fast_system, simulate_fast
+from .hopf import first_lyapunov as first_lyapunov  # the name of 0.1, deprecated
+from .hopf import first_lyapunov_at, hopf_point
 from .integration import Simulation, integrate
-from .reduced import _branch_at as _branch_at
 from .reduced import equilibrium_reactions, reduced_system, simulate_reduced
 from .simulate import simulate_full
 from .systems import OdeSystem, full_system
-from .systems import _contact_law as _contact_law
-from .systems import _laws_key as _laws_key
 from .trajectories import fast_trajectories_data
-from .values import _Values as _Values
-from .values import numeric_values, substitute
+from .values import NumericValues, numeric_values, substitute
 
 __all__ = [
     "NumericsError",
+    "NumericValues",
     "numeric_values",
     "substitute",
     "lambdify_cse",
@@ -97,6 +85,7 @@ __all__ = [
     "Simulation",
     "full_system",
     "reduced_system",
+    "FastProblem",
     "fast_system",
     "integrate",
     "simulate_full",
@@ -112,19 +101,6 @@ __all__ = [
     "classify",
     "Classification",
     "PointClassifier",
+    "first_lyapunov_at",
+    "hopf_point",
 ]
-
-
-# --- the Hopf bifurcation of the fast subsystem (contactsym.numerics.hopf) -------------------------
-# contactsym.numerics.hopf builds on the modules above; its module object is bound here even while it is
-# being imported (it may be imported first), and its functions are looked up when called
-
-
-def first_lyapunov(scene, values: Mapping, **options):
-    """l1 of the fast subsystem at a point on its Hopf set; see :func:`contactsym.numerics.hopf.first_lyapunov`."""
-    return _hopf.first_lyapunov(scene, values, **options)
-
-
-def hopf_point(scene, values: Mapping, parameter, **options):
-    """The Hopf crossing along ``parameter`` and l1 there; see :func:`contactsym.numerics.hopf.hopf_point`."""
-    return _hopf.hopf_point(scene, values, parameter, **options)

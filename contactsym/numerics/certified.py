@@ -19,7 +19,7 @@ from ..algebra.intervals import interval_sign
 from ..errors import NumericsError
 from ..parse import sympy_only
 from ..stages.stability import Stability
-from .values import _UNIT, _number, _Values, numeric_values, substitute
+from .values import _UNIT, NumericValues, _number, numeric_values, substitute
 
 
 class _Unbounded(Exception):
@@ -302,7 +302,7 @@ def classify(scene_or_stability, values: Mapping, *, signs=None, band: float = 1
         st = scene.stability(signs)
     vals = numeric_values(scene, values)
     numbers = vals.numbers
-    results = [certified_sign(substitute(c, _Values({}, vals.functions)), numbers, band=band) for c in st.hurwitz]
+    results = [certified_sign(substitute(c, NumericValues({}, vals.functions)), numbers, band=band) for c in st.hurwitz]
     condition_signs = tuple(s for s, _ in results)
     stable = 1 if all(s > 0 for s in condition_signs) else (-1 if any(s < 0 for s in condition_signs) else 0)
     region = None

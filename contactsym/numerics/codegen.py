@@ -73,7 +73,7 @@ def _stage_exprs(stage) -> tuple[object, sp.Matrix, tuple]:
     if isinstance(stage, FastSubsystem):
         return stage.scene, stage.rhs, tuple(stage.state)
     if isinstance(stage, Linearization):
-        return stage.scene, stage.matrix, ()
+        return stage.scene, stage.jacobian, ()
     if isinstance(stage, Stability):
         return stage.linearization.scene, sp.Matrix(stage.hurwitz), ()
     if isinstance(stage, Regularized):

@@ -11,11 +11,10 @@ import numpy as np
 from ..errors import NumericsError
 from ..mechanism.scene import t as _time
 from .codegen import lambdify_cse
-from .fastsystem import _equilibrium_state, _fast_form, _fast_scales, fast_system
+from .fastsystem import FastProblem
 from .integration import Simulation, integrate
-from .reduced import _reaction_scale, _try_branch
 from .systems import OdeSystem, _coordinates, _free_coordinates, _manifold_parameters
-from .values import _check_free, _check_span, _evaluate, _state_values, _Values, _with, numeric_values, substitute
+from .values import NumericValues, _check_free, _check_span, _evaluate, _state_values, _with, numeric_values, substitute
 
 
 @dataclass(frozen=True, eq=False)
@@ -102,17 +101,13 @@ def fast_cycle(
     >>> cycle.converged, cycle.contact_loss, round(cycle.period, 3)
     (True, True, 4.901)
     """
-    vals = numeric_values(scene, values)
-    chosen = _fast_form(scene, unilateral, form)
-    system = fast_system(scene, vals, laws=laws, unilateral=unilateral, form=chosen)
+    problem = FastProblem.at(scene, values, laws=laws, unilateral=unilateral, form=form)
+    system, N_scale = problem.system, problem.reaction_scale
     k = scene.k
-    branch = _try_branch(scene, vals, None)
-    N_scale = _reaction_scale(scene, vals, branch)
-    if branch is None:
+    if problem.branch is None:
         return _no_cycle(system, "no consistent equilibrium: an impact-type catastrophe, not a cycle.")
-    u_star = [float(substitute(u, vals)) for u in branch.u_star]
-    z_eq = _equilibrium_state(scene, system, chosen, u_star, vals, laws)
-    scale = _fast_scales(scene, system, z_eq, N_scale, chosen)
+    z_eq = problem.state_at(problem.u_star)
+    scale = problem.scales(z_eq)
     eigenvalues = np.linalg.eigvals(system.jac(0.0, z_eq))
     omega0 = float(np.max(np.abs(eigenvalues.imag)))
     if omega0 == 0:
@@ -258,7 +253,7 @@ def simulate_averaged(
     return replace(run, extra={**run.extra, "cycle": cache.get(()) if not depends else None})
 
 
-def _averaged_start(scene, vals: _Values, initial) -> tuple[list, np.ndarray, _Values]:
+def _averaged_start(scene, vals: NumericValues, initial) -> tuple[list, np.ndarray, NumericValues]:
     """(the free coordinates and rates, their initial values, the values with the fixed state and parameters)."""
     free = _free_coordinates(scene)
     free_state = [q for q, _ in free] + [r for _, r in free]
@@ -276,7 +271,7 @@ def _averaged_start(scene, vals: _Values, initial) -> tuple[list, np.ndarray, _V
     return free_state, np.array([given[s] for s in free_state], dtype=float), base
 
 
-def _averaged_system(scene, base: _Values, free_state: list, cycle_at) -> OdeSystem:
+def _averaged_system(scene, base: NumericValues, free_state: list, cycle_at) -> OdeSystem:
     """The slow coordinates driven by their accelerations averaged over the cycle ``cycle_at(state)``."""
     m = len(free_state) // 2
     by_plain = {scene.plain(q): q for q in scene.coordinates}

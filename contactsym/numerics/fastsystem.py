@@ -1,10 +1,17 @@
-"""The fast subsystem (2.1) as generated code, in (u, v) or in the scaled deformations (Q, V), and simulated."""
+"""The fast subsystem (2.1) as generated code, in (u, v) or in the scaled deformations (Q, V), and simulated.
+
+:class:`FastProblem` is a point's numeric fast subsystem, set up once (values, form, generated
+system, equilibrium branch, reaction scale) for :func:`simulate_fast`,
+:func:`~contactsym.numerics.fast_trajectories_data`, :func:`~contactsym.numerics.fast_cycle` and
+:mod:`contactsym.numerics.hopf`.
+"""
 
 from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import replace
+from dataclasses import dataclass, replace
+from functools import cached_property
 
 import numpy as np
 import sympy as sp
@@ -12,8 +19,8 @@ import sympy as sp
 from ..errors import NumericsError
 from ..laws import ImplicitDeformation
 from .codegen import _cached, lambdify_cse
-from .integration import Simulation, integrate
-from .reduced import _reaction_scale, _try_branch
+from .integration import Simulation, integrate_with_impact_bound
+from .reduced import _branch_at, _reaction_scale, _try_branch
 from .systems import (
     OdeSystem,
     _clamps,
@@ -26,7 +33,7 @@ from .systems import (
     _require_coefficients,
     _second_order,
 )
-from .values import _check_free, _check_span, _number, _state_values, _Values, numeric_values, substitute
+from .values import NumericValues, _check_free, _check_span, _number, _state_values, numeric_values, substitute
 
 _TAU = sp.Symbol("tau", real=True)  # the stretched time t/eps
 
@@ -65,7 +72,7 @@ def fast_system(
     return _cached(scene, key, lambda: _build_fast(scene, vals, laws, unilateral, chosen))
 
 
-def _build_fast(scene, vals: _Values, laws, unilateral, form: str) -> OdeSystem:
+def _build_fast(scene, vals: NumericValues, laws, unilateral, form: str) -> OdeSystem:
     fast = scene.fast_subsystem()
     f = [substitute(fj, vals) for fj in fast.f]
     description = f"fast subsystem (2.1) of '{scene.name}' ({form} form)"
@@ -74,7 +81,7 @@ def _build_fast(scene, vals: _Values, laws, unilateral, form: str) -> OdeSystem:
     return _build_fast_deformation(scene, vals, laws, unilateral, f, description)
 
 
-def _build_fast_uv(scene, vals: _Values, laws, f: list, description: str) -> OdeSystem:
+def _build_fast_uv(scene, vals: NumericValues, laws, f: list, description: str) -> OdeSystem:
     """(2.1) as printed: u' = Phi v + Psi f(u), v' = f(u), with each law's Phi, Psi."""
     fast = scene.fast_subsystem()
     Phi, Psi = [], []
@@ -104,7 +111,7 @@ def _build_fast_uv(scene, vals: _Values, laws, f: list, description: str) -> Ode
     )
 
 
-def _build_fast_deformation(scene, vals: _Values, laws, unilateral, f: list, description: str) -> OdeSystem:
+def _build_fast_deformation(scene, vals: NumericValues, laws, unilateral, f: list, description: str) -> OdeSystem:
     """The same system in the scaled deformations: Q' = V, V' = f(N(Q, V)), N = 0 where a contact opens."""
     fast = scene.fast_subsystem()
     suffix = [""] if scene.k == 1 else [f"_{j}" for j in range(1, scene.k + 1)]
@@ -133,34 +140,109 @@ def _build_fast_deformation(scene, vals: _Values, laws, unilateral, f: list, des
     return replace(system, reaction_names=reaction_names)
 
 
-def _fast_scales(scene, system: OdeSystem, z_ref, N_scale: float, form: str) -> np.ndarray:
-    k = scene.k
-    J = system.jac(0.0, np.asarray(z_ref, dtype=float))
-    scale = np.empty(2 * k)
-    for j in range(k):
-        if form == "uv":
-            phi, a = abs(J[j, k + j]), abs(J[k + j, j])
-            scale[j] = N_scale
-            scale[k + j] = N_scale * math.sqrt(a / phi) if phi > 0 and a > 0 else N_scale
-        else:
-            dN = np.asarray(system.extra["law_jac"](0.0, *z_ref), dtype=float).reshape(k, 2 * k)
-            phi = abs(dN[j, j])
-            a_phi = abs(J[k + j, j])
-            scale[j] = N_scale / phi if phi > 0 else N_scale
-            scale[k + j] = scale[j] * math.sqrt(a_phi) if a_phi > 0 else scale[j]
-    return scale
+@dataclass(frozen=True, eq=False)
+class FastProblem:
+    """A point's numeric fast subsystem (2.1): the values, the form, the generated system, the
+    equilibrium branch and the reaction scale, each computed once (and only when asked for).
 
+    Build it with :meth:`at`. ``signs`` chooses the equilibrium branch; by default the unique
+    branch consistent at the values (``branch`` is None when there is none or several).
 
-def _equilibrium_state(scene, system: OdeSystem, form: str, u_star, vals: _Values, laws) -> np.ndarray:
-    k = scene.k
-    if form == "uv":
-        return np.concatenate([np.asarray(u_star, dtype=float), np.zeros(k)])
-    Qv = sp.Symbol("Q", real=True)
-    Q = []
-    for j in range(k):
-        N_of_Q = lambdify_cse([Qv], _law_scaled(scene, j, _contact_law(scene, j, laws), vals, Qv, sp.S.Zero))
-        Q.append(_invert_law(lambda x, f=N_of_Q: float(f(x)), float(u_star[j]), abs(float(u_star[j])) + 1.0))
-    return np.concatenate([Q, np.zeros(k)])
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> values = {"m": 1, "mu": 1, "alpha": 1.5707963267948966, "F_x": 2, "F_y": -4,
+    ...           "Phi_1": -2.1, "Phi_2": -2.1, "Psi_1": -1, "Psi_2": -1}
+    >>> problem = FastProblem.at(cs.scene("brake"), values)
+    >>> problem.form, problem.branch.signs, problem.u_star, problem.reaction_scale
+    ('deformation', (1, 1), [1.0000000000000002, 3.0], 3.0)
+    >>> problem.system.names
+    ('Q_1', 'Q_2', 'V_1', 'V_2')
+    """
+
+    scene: object
+    values: NumericValues
+    laws: Mapping | None = None
+    unilateral: object = None
+    requested_form: str | None = None
+    signs: tuple | None = None
+
+    @classmethod
+    def at(
+        cls,
+        scene,
+        values: Mapping | None,
+        *,
+        laws: Mapping | None = None,
+        unilateral=None,
+        form: str | None = None,
+        signs=None,
+    ) -> FastProblem:
+        """The fast subsystem of ``scene`` at ``values`` (checked with :func:`numeric_values`)."""
+        return cls(scene, numeric_values(scene, values), laws, unilateral, form, signs)
+
+    @cached_property
+    def form(self) -> str:
+        """'uv' (the paper's (2.1)) or 'deformation' (Q, V): as requested, else as the laws need."""
+        return _fast_form(self.scene, self.unilateral, self.requested_form)
+
+    @cached_property
+    def system(self) -> OdeSystem:
+        """The generated system in the stretched time tau (:func:`fast_system`)."""
+        return fast_system(self.scene, self.values, laws=self.laws, unilateral=self.unilateral, form=self.form)
+
+    @cached_property
+    def branch(self):
+        """The equilibrium branch used at the values, or None."""
+        return _try_branch(self.scene, self.values, self.signs)
+
+    def require_branch(self):
+        """The equilibrium branch, or a NumericsError saying why there is none to use."""
+        return self.branch if self.branch is not None else _branch_at(self.scene, self.values, self.signs)
+
+    @cached_property
+    def reaction_scale(self) -> float:
+        """A typical magnitude of the reactions: |u*|, or |f_j(0) / a_jj| without an equilibrium."""
+        return _reaction_scale(self.scene, self.values, self.branch)
+
+    @cached_property
+    def u_star(self) -> list[float] | None:
+        """The equilibrium reactions of :attr:`branch` at the values, or None."""
+        if self.branch is None:
+            return None
+        return [float(substitute(u, self.values)) for u in self.branch.u_star]
+
+    def state_at(self, u_star) -> np.ndarray:
+        """The state of :attr:`system` at rest with the reactions ``u_star``: (u*, 0), or (Q*, 0)."""
+        k = self.scene.k
+        if self.form == "uv":
+            return np.concatenate([np.asarray(u_star, dtype=float), np.zeros(k)])
+        Qv = sp.Symbol("Q", real=True)
+        Q = []
+        for j in range(k):
+            law = _contact_law(self.scene, j, self.laws)
+            N_of_Q = lambdify_cse([Qv], _law_scaled(self.scene, j, law, self.values, Qv, sp.S.Zero))
+            Q.append(_invert_law(lambda x, f=N_of_Q: float(f(x)), float(u_star[j]), abs(float(u_star[j])) + 1.0))
+        return np.concatenate([Q, np.zeros(k)])
+
+    def scales(self, reference) -> np.ndarray:
+        """Typical magnitudes of the state components near the state ``reference``, from the reaction
+        scale and the linearization there (deformations N/|dN/dQ|, rates times the fast frequency)."""
+        k, system, N_scale = self.scene.k, self.system, self.reaction_scale
+        J = system.jac(0.0, np.asarray(reference, dtype=float))
+        scale = np.empty(2 * k)
+        for j in range(k):
+            if self.form == "uv":
+                phi, a = abs(J[j, k + j]), abs(J[k + j, j])
+                scale[j] = N_scale
+                scale[k + j] = N_scale * math.sqrt(a / phi) if phi > 0 and a > 0 else N_scale
+            else:
+                dN = np.asarray(system.extra["law_jac"](0.0, *reference), dtype=float).reshape(k, 2 * k)
+                phi = abs(dN[j, j])
+                a_phi = abs(J[k + j, j])
+                scale[j] = N_scale / phi if phi > 0 else N_scale
+                scale[k + j] = scale[j] * math.sqrt(a_phi) if a_phi > 0 else scale[j]
+        return scale
 
 
 def simulate_fast(
@@ -197,9 +279,8 @@ def simulate_fast(
     """
     # long by its keyword options and docstring
     span = _check_span(span, "span")
-    vals = numeric_values(scene, values)
-    chosen = _fast_form(scene, unilateral, form)
-    system = fast_system(scene, vals, laws=laws, unilateral=unilateral, form=chosen)
+    problem = FastProblem.at(scene, values, laws=laws, unilateral=unilateral, form=form)
+    system = problem.system
     if initial is None:
         z0 = np.zeros(2 * scene.k)
     elif isinstance(initial, Mapping):
@@ -207,36 +288,22 @@ def simulate_fast(
         z0 = np.array([given.get(name, 0.0) for name in system.names], dtype=float)
     else:
         z0 = np.asarray([float(_number(v, "initial")) for v in np.ravel(initial)], dtype=float)
-    branch = _try_branch(scene, vals, None)
-    N_scale = _reaction_scale(scene, vals, branch)
     if atol is None:
-        reference = z0
-        if branch is not None:
-            reference = _equilibrium_state(
-                scene, system, chosen, [float(substitute(u, vals)) for u in branch.u_star], vals, laws
-            )
-        scale = np.maximum(np.abs(z0), _fast_scales(scene, system, reference, N_scale, chosen))
-        atol = rtol * scale
-    bound = reaction_bound if reaction_bound is not None else bound_factor * N_scale
-    run = integrate(
+        reference = z0 if problem.u_star is None else problem.state_at(problem.u_star)
+        atol = rtol * np.maximum(np.abs(z0), problem.scales(reference))
+    return integrate_with_impact_bound(
         system,
         span,
         z0,
+        reaction_scale=problem.reaction_scale,
+        reaction_bound=reaction_bound,
+        bound_factor=bound_factor,
+        equilibrium=None if problem.branch is None else problem.branch.signs,
+        extra={"form": problem.form},
         method=method,
         rtol=rtol,
         atol=atol,
         t_eval=t_eval,
         dense_output=dense_output,
         max_rhs=max_rhs,
-        reaction_bound=bound,
-    )
-    return replace(
-        run,
-        extra={
-            **run.extra,
-            "reaction_scale": N_scale,
-            "reaction_bound": bound,
-            "form": chosen,
-            "equilibrium": None if branch is None else branch.signs,
-        },
     )

@@ -22,14 +22,15 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from ..deprecation import deprecated_alias
 from ..errors import ComplianceError, HopfError, NumericsError
-from ..lyapunov.coefficient import HopfVectors, lyapunov_numeric
+from ..lyapunov.coefficient import HopfVectors, first_lyapunov_from_derivatives
 from .codegen import _cached, lambdify_cse
-from .reduced import _branch_at
+from .fastsystem import FastProblem
 from .systems import _contact_law, _index, _laws_key
-from .values import _Values, numeric_values, substitute
+from .values import NumericValues, numeric_values, substitute
 
-__all__ = ["HopfCoefficient", "first_lyapunov", "full_cycle_start", "hopf_point"]
+__all__ = ["HopfCoefficient", "first_lyapunov_at", "full_cycle_start", "hopf_point"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -106,7 +107,7 @@ def _field(scene, signs: tuple, laws, functions: dict) -> dict:
         Q = [sp.Symbol(f"Q_{j + 1}", real=True) for j in range(k)]
         V = [sp.Symbol(f"V_{j + 1}", real=True) for j in range(k)]
         z = Q + V
-        only_functions = _Values({}, functions)
+        only_functions = NumericValues({}, functions)
         law = [_contact_law(scene, j, laws) for j in range(k)]
         N = [substitute(law[j].smooth_scaled(Q[j], V[j], _index(scene, j)), only_functions) for j in range(k)]
         # N_j cut to 0 outside the law's domain, for the inversion at the equilibrium
@@ -133,7 +134,7 @@ def _field(scene, signs: tuple, laws, functions: dict) -> dict:
     return _cached(scene, ("hopf-field", signs, _laws_key(laws), frozenset(functions.items())), build)
 
 
-def _parameter_values(data: dict, vals: _Values) -> list[float]:
+def _parameter_values(data: dict, vals: NumericValues) -> list[float]:
     missing = [str(p) for p in data["params"] if p not in vals.numbers]
     if missing:
         raise NumericsError(f"l1 needs numeric values for {missing}.")
@@ -184,25 +185,30 @@ def _check_damping(data: dict, j: int, Q_star: float, u_star: float, params: lis
         )
 
 
-def _at_point(scene, vals: _Values, laws, signs):
-    branch = _branch_at(scene, vals, signs)
-    data = _field(scene, tuple(branch.signs), laws, vals.functions)
-    params = _parameter_values(data, vals)
-    u_star = np.array([float(substitute(u, vals)) for u in branch.u_star])
+def _at_point(problem: FastProblem):
+    """(u*, J, H, T, dN, (Q*, 0)) of the smooth piece of the equilibrium's branch at the problem's point."""
+    branch = problem.require_branch()
+    data = _field(problem.scene, tuple(branch.signs), problem.laws, problem.values.functions)
+    params = _parameter_values(data, problem.values)
+    u_star = np.array(problem.u_star)
     Q_star = []
-    for j in range(scene.k):
+    for j in range(problem.scene.k):
         Q_j = _invert_on_branch(data, j, u_star[j], params)
         _check_damping(data, j, Q_j, u_star[j], params)
         Q_star.append(Q_j)
-    z = [*Q_star, *([0.0] * scene.k)]
+    z = [*Q_star, *([0.0] * problem.scene.k)]
     J, H, T, dN = (np.asarray(x, dtype=float) for x in data["tensors"](*z, *params))
     return u_star, J, H, T, dN, np.array(z)
 
 
-def first_lyapunov(
+def first_lyapunov_at(
     scene, values: Mapping, *, laws: Mapping | None = None, signs=None, tol: float = 1e-6
 ) -> HopfCoefficient:
-    """l1 of the fast subsystem at a point on its Hopf set (a numeric point).
+    """l1 of the fast subsystem at a numeric point on its Hopf set, with the cycle it predicts.
+
+    The numeric variant of the first Lyapunov coefficient (the symbolic one is
+    :attr:`Stability.first_lyapunov`; see :mod:`contactsym.lyapunov`); ``first_lyapunov`` is its
+    deprecated name.
 
     Raises HopfError off the Hopf set, saying how far (``Re lambda / omega``), and
     ComplianceError when a law is not monotone at the equilibrium.
@@ -212,15 +218,18 @@ def first_lyapunov(
     >>> import contactsym as cs
     >>> from contactsym.laws.library import Hertz
     >>> values = {"m": 1, "mu": 1.2, "alpha": 1.5707963267948966, "F_x": 0, "F_y": -4}
-    >>> first_lyapunov(cs.scene("brake"), values, laws={0: Hertz(), 1: Hertz()})
+    >>> first_lyapunov_at(cs.scene("brake"), values, laws={0: Hertz(), 1: Hertz()})
     Traceback (most recent call last):
     ...
     contactsym.errors.HopfError: the point is off the Hopf set: the critical eigenvalues are 0.033063 +- 2.08966 i, so Re(lambda)/omega = 0.0158 (tolerance 1e-06); l1 is defined where Re(lambda) = 0: move the point onto the line (e.g. with contactsym.numerics.hopf_point).
     """
-    vals = numeric_values(scene, values)
-    u_star, J, H, T, dN, z = _at_point(scene, vals, laws, signs)
-    vectors = lyapunov_numeric(J, H, T, tol=tol)
+    u_star, J, H, T, dN, z = _at_point(FastProblem.at(scene, values, laws=laws, signs=signs))
+    vectors = first_lyapunov_from_derivatives(J, H, T, tol=tol)
     return _coefficient(vectors, u_star, dN, state=z)
+
+
+# the name of 0.1, kept: it warns
+first_lyapunov = deprecated_alias(first_lyapunov_at, "first_lyapunov")
 
 
 def _coefficient(vectors: HopfVectors, u_star, dN, state, **extra) -> HopfCoefficient:
@@ -262,8 +271,8 @@ def hopf_point(
     start = float(vals.numbers[key])
 
     def alpha(p):
-        point = _Values({**vals.numbers, key: sp.Float(p)}, vals.functions)
-        J = _at_point(scene, point, laws, signs)[1]
+        point = NumericValues({**vals.numbers, key: sp.Float(p)}, vals.functions)
+        J = _at_point(FastProblem(scene, point, laws, signs=signs))[1]
         eigenvalues = np.linalg.eigvals(J)
         complex_pairs = eigenvalues[eigenvalues.imag > 1e-12]
         if complex_pairs.size == 0:
@@ -275,9 +284,9 @@ def hopf_point(
     p_star = brentq(alpha, *bracket, xtol=1e-15 * max(abs(start), 1.0), rtol=1e-15)
     h = 1e-6 * max(abs(p_star), 1e-8)
     slope = (alpha(p_star + h) - alpha(p_star - h)) / (2 * h)
-    point = _Values({**vals.numbers, key: sp.Float(p_star)}, vals.functions)
-    u_star, J, H, T, dN, z = _at_point(scene, point, laws, signs)
-    vectors = lyapunov_numeric(J, H, T, tol=1e-6)
+    point = NumericValues({**vals.numbers, key: sp.Float(p_star)}, vals.functions)
+    u_star, J, H, T, dN, z = _at_point(FastProblem(scene, point, laws, signs=signs))
+    vectors = first_lyapunov_from_derivatives(J, H, T, tol=1e-6)
     return _coefficient(vectors, u_star, dN, state=z, parameter=key, value=p_star, dalpha=slope)
 
 

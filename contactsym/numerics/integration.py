@@ -228,6 +228,40 @@ def integrate(
     return run if result is None else _with_solution(run, system, result, keep_event=t_eval is not None)
 
 
+def integrate_with_impact_bound(
+    system: OdeSystem,
+    span,
+    z0,
+    *,
+    reaction_scale: float,
+    reaction_bound: float | None,
+    bound_factor: float,
+    equilibrium,
+    extra: dict,
+    **options,
+) -> Simulation:
+    """The tail of :func:`~contactsym.numerics.simulate_fast` and :func:`~contactsym.numerics.simulate_full`:
+    :func:`integrate` with the impact bound ``reaction_bound`` (default ``bound_factor`` times the
+    reaction scale), the scale, the bound, ``extra`` and the ``equilibrium`` sign pattern in the result's ``extra``.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> from contactsym.numerics.fastsystem import FastProblem
+    >>> values = {"m": 1, "mu": 1, "alpha": 1.5707963267948966, "F_x": 2, "F_y": -4,
+    ...           "Phi_1": -2.1, "Phi_2": -2.1, "Psi_1": -1, "Psi_2": -1}
+    >>> problem = FastProblem.at(cs.scene("brake"), values)
+    >>> run = integrate_with_impact_bound(problem.system, (0, 1), [0.0] * 4, reaction_scale=3.0,
+    ...     reaction_bound=None, bound_factor=10, equilibrium=(1, 1), extra={"form": problem.form})
+    >>> run.extra["reaction_bound"], run.extra["form"], run.extra["equilibrium"], run.status
+    (30.0, 'deformation', (1, 1), 'ok')
+    """
+    bound = reaction_bound if reaction_bound is not None else bound_factor * reaction_scale
+    run = integrate(system, span, z0, reaction_bound=bound, **options)
+    scales = {"reaction_scale": reaction_scale, "reaction_bound": bound}
+    return replace(run, extra={**run.extra, **scales, **extra, "equilibrium": equilibrium})
+
+
 def _initial_state(system: OdeSystem, z0) -> np.ndarray:
     z0 = validate.real_array(z0, "the initial state").ravel()
     if z0.shape != (len(system.names),):

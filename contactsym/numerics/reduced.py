@@ -15,19 +15,19 @@ from .codegen import _cached
 from .integration import Simulation, integrate
 from .systems import OdeSystem, _coordinates, _first_order, _free_coordinates, _manifold_parameters
 from .values import (
+    NumericValues,
     _check_free,
     _check_span,
     _evaluate,
     _merge,
     _state_values,
-    _Values,
     _with,
     numeric_values,
     substitute,
 )
 
 
-def _branch_at(scene, vals: _Values, signs=None):
+def _branch_at(scene, vals: NumericValues, signs=None):
     """The equilibrium branch to use at frozen values: the given pattern or the unique consistent one."""
     if signs is not None:
         return scene.equilibria(signs).branches[0]
@@ -83,7 +83,7 @@ def reduced_system(scene, values: Mapping | None, *, signs=None, state: Mapping 
     merged = _merge(scene, values, state)
     free = _free_coordinates(scene)
     free_symbols = {s for pair in free for s in pair}
-    frozen = _Values({k: v for k, v in merged.numbers.items() if k not in free_symbols}, merged.functions)
+    frozen = NumericValues({k: v for k, v in merged.numbers.items() if k not in free_symbols}, merged.functions)
     branch = _branch_at(scene, frozen, signs)
     key = ("reduced", frozen.key(), branch.signs)
 
@@ -108,7 +108,7 @@ def reduced_system(scene, values: Mapping | None, *, signs=None, state: Mapping 
     return _cached(scene, key, build)
 
 
-def _reaction_scale(scene, frozen: _Values, branch) -> float:
+def _reaction_scale(scene, frozen: NumericValues, branch) -> float:
     """A typical magnitude of the reactions: |u*|, or |f_j(0) / a_jj| without an equilibrium."""
     if branch is not None:
         scale = max((abs(float(substitute(u, frozen))) for u in branch.u_star), default=0.0)
@@ -126,7 +126,7 @@ def _reaction_scale(scene, frozen: _Values, branch) -> float:
     return scale if scale > 0 and math.isfinite(scale) else 1.0
 
 
-def _try_branch(scene, frozen: _Values, signs):
+def _try_branch(scene, frozen: NumericValues, signs):
     try:
         return _branch_at(scene, frozen, signs)
     except NumericsError:
@@ -179,7 +179,7 @@ def simulate_reduced(
     fixed_values = {s: v for s, v in given.items() if s not in free_state}
     system = reduced_system(
         scene,
-        _Values(dict(with_state.numbers), vals.functions),
+        NumericValues(dict(with_state.numbers), vals.functions),
         signs=signs,
         state={**fixed_values, **{s: given[s] for s in free_state}},
     )

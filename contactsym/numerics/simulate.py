@@ -11,17 +11,17 @@ import sympy as sp
 from ..errors import NumericsError
 from ..progress import Progress
 from .codegen import lambdify_cse
-from .integration import Simulation, integrate
+from .integration import Simulation, integrate_with_impact_bound
 from .reduced import _reaction_scale, _try_branch
 from .systems import _contact_law, _coordinates, _invert_law, _law_scaled, _manifold_parameters, full_system
 from .values import (
     _UNIT,
+    NumericValues,
     _check_span,
     _evaluate,
     _plain_expr,
     _positive,
     _state_values,
-    _Values,
     _with,
     numeric_values,
     substitute,
@@ -122,11 +122,15 @@ def simulate_full(
         atol = np.maximum(
             rtol * scale, _roundoff_floor(gap_noise, len(positions), gaps.determined, gaps.Dg, fast_squared)
         )
-    bound = reaction_bound if reaction_bound is not None else bound_factor * N_scale
-    run = integrate(
+    run = integrate_with_impact_bound(
         system,
         span,
         z0,
+        reaction_scale=N_scale,
+        reaction_bound=reaction_bound,
+        bound_factor=bound_factor,
+        equilibrium=None if branch is None else branch.signs,
+        extra={"eps": eps, "atol": atol},
         method=method,
         jacobian=jacobian,
         rtol=rtol,
@@ -134,23 +138,15 @@ def simulate_full(
         t_eval=t_eval,
         dense_output=dense_output,
         max_rhs=max_rhs,
-        reaction_bound=bound,
         progress=progress,
         max_seconds=max_seconds,
     )
-    extra = {
-        "eps": eps,
-        "reaction_scale": N_scale,
-        "reaction_bound": bound,
-        "atol": atol,
-        "equilibrium": None if branch is None else branch.signs,
-    }
     if branch is None and run.status == "impact":
-        extra["no_equilibrium"] = True
-    return replace(run, extra={**run.extra, **extra})
+        run = replace(run, extra={**run.extra, "no_equilibrium": True})
+    return run
 
 
-def _rigid_start(scene, vals: _Values, initial) -> tuple[_Values, np.ndarray]:
+def _rigid_start(scene, vals: NumericValues, initial) -> tuple[NumericValues, np.ndarray]:
     """The values with the parameters the contact manifold fixes, and the initial state on the manifold."""
     positions, rates = _coordinates(scene)
     state = positions + rates
@@ -190,7 +186,7 @@ class _Gaps:
     determined: list
 
 
-def _contact_gaps(scene, system, vals: _Values, z0: np.ndarray, eps: float, t0: float) -> _Gaps:
+def _contact_gaps(scene, system, vals: NumericValues, z0: np.ndarray, eps: float, t0: float) -> _Gaps:
     positions, rates = _coordinates(scene)
     determined = [i for i, (q, r) in enumerate(zip(positions, rates)) if q in scene.manifold or r in scene.manifold]
     exprs = [substitute(_plain_expr(scene, c.coordinate), vals) for c in scene.contacts]
@@ -203,7 +199,7 @@ def _contact_gaps(scene, system, vals: _Values, z0: np.ndarray, eps: float, t0: 
     return _Gaps(exprs, function, jacobian, Dg, np.where(S > 0, S, 1.0 / eps**2), determined)
 
 
-def _slow_start(scene, gaps: _Gaps, vals: _Values, laws, u_star, z0: np.ndarray, eps: float) -> np.ndarray:
+def _slow_start(scene, gaps: _Gaps, vals: NumericValues, laws, u_star, z0: np.ndarray, eps: float) -> np.ndarray:
     """The initial state with the contacts deformed so that the reactions start at u*."""
     Qv = sp.Symbol("Q", real=True)
     targets = []

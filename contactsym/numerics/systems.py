@@ -17,7 +17,7 @@ from ..errors import NumericsError
 from ..laws import Compliance
 from ..mechanism.scene import t as _time
 from .codegen import _cached, lambdify_cse
-from .values import _check_free, _plain_expr, _positive, _Values, numeric_values, substitute
+from .values import NumericValues, _check_free, _plain_expr, _positive, numeric_values, substitute
 
 
 @dataclass(frozen=True, eq=False)
@@ -146,7 +146,7 @@ def _index(scene, j: int) -> int | None:
     return None if scene.k == 1 else j + 1
 
 
-def _require_coefficients(scene, j: int, law: Compliance, vals: _Values) -> None:
+def _require_coefficients(scene, j: int, law: Compliance, vals: NumericValues) -> None:
     """A law that leaves Phi, Psi free (a generic law) needs numbers for them before a simulation."""
     needed = law.coefficients(_index(scene, j))
     if all(symbol in vals.numbers for symbol in needed):
@@ -159,13 +159,13 @@ def _require_coefficients(scene, j: int, law: Compliance, vals: _Values) -> None
     )
 
 
-def _law_in_gap(scene, j, law: Compliance, vals: _Values, eps: float, g: sp.Expr, gd: sp.Expr) -> sp.Expr:
+def _law_in_gap(scene, j, law: Compliance, vals: NumericValues, eps: float, g: sp.Expr, gd: sp.Expr) -> sp.Expr:
     """N_j at deformation g and rate gd, at the numeric eps (original time)."""
     _require_coefficients(scene, j, law, vals)
     return substitute(_reaction(law, "reaction", g, gd, sp.Float(eps), _index(scene, j)), vals)
 
 
-def _law_scaled(scene, j, law: Compliance, vals: _Values, Q: sp.Symbol, V: sp.Symbol) -> sp.Expr:
+def _law_scaled(scene, j, law: Compliance, vals: NumericValues, Q: sp.Symbol, V: sp.Symbol) -> sp.Expr:
     """N_j(Q, V) in the scaled deformation Q = q/eps**2 and rate V = q'/eps (1.8)."""
     _require_coefficients(scene, j, law, vals)
     return substitute(_reaction(law, "reaction_scaled", Q, V, _index(scene, j)), vals)
@@ -223,7 +223,7 @@ def _laws_key(laws) -> tuple | None:
     return None if not laws else tuple(sorted((str(k), repr(v)) for k, v in laws.items()))
 
 
-def _build_full(scene, vals: _Values, eps: float, laws, unilateral) -> OdeSystem:
+def _build_full(scene, vals: NumericValues, eps: float, laws, unilateral) -> OdeSystem:
     positions, rates = _coordinates(scene)
     missing = [p for p in _manifold_parameters(scene) if p not in vals.numbers]
     if missing:

@@ -6,9 +6,8 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from .fastsystem import _equilibrium_state, _fast_form, _fast_scales, fast_system, simulate_fast
-from .reduced import _reaction_scale, _try_branch, equilibrium_reactions
-from .values import numeric_values
+from .fastsystem import FastProblem, simulate_fast
+from .reduced import equilibrium_reactions
 
 
 def fast_trajectories_data(
@@ -39,17 +38,12 @@ def fast_trajectories_data(
     >>> data["labels"], len(data["trajectories"]), data["field"][0].shape
     (('u', 'v'), 6, (5, 5))
     """
-    vals = numeric_values(scene, values)
-    chosen = _fast_form(scene, unilateral, form)
-    system = fast_system(scene, vals, laws=laws, unilateral=unilateral, form=chosen)
+    problem = FastProblem.at(scene, values, laws=laws, unilateral=unilateral, form=form)
+    vals, chosen, system, N_scale = problem.values, problem.form, problem.system, problem.reaction_scale
     k = scene.k
-    branch = _try_branch(scene, vals, None)
-    N_scale = _reaction_scale(scene, vals, branch)
-    equilibria = []
-    for _signs, u_star in equilibrium_reactions(scene, vals):
-        equilibria.append(_equilibrium_state(scene, system, chosen, u_star, vals, laws))
+    equilibria = [problem.state_at(u_star) for _signs, u_star in equilibrium_reactions(scene, vals)]
     centre = equilibria[0] if equilibria else np.zeros(2 * k)
-    scale = _fast_scales(scene, system, centre, N_scale, chosen)
+    scale = problem.scales(centre)
     if starts is None:
         starts = _ring(centre, scale, k)
     trajectories, impacts = [], []

@@ -1,6 +1,6 @@
 """Parameter values for numerics: finite numbers and functions, checked, and their substitution.
 
-Every numeric entry point first turns the user's ``values`` into :class:`_Values`
+Every numeric entry point first turns the user's ``values`` into :class:`NumericValues`
 (Symbol -> number, undefined function -> Lambda) with :func:`numeric_values`, which
 refuses text, non-finite numbers and values that break a symbol's declared sign.
 """
@@ -71,7 +71,7 @@ def _plain_expr(scene, expr) -> sp.Expr:
 
 
 @dataclass(frozen=True)
-class _Values:
+class NumericValues:
     """Numeric parameter values (Symbol -> number) and function substitutions."""
 
     numbers: dict
@@ -99,7 +99,7 @@ def _scene_symbols(scene) -> dict[str, sp.Basic]:
     return names
 
 
-def numeric_values(scene, values: Mapping | None) -> _Values:
+def numeric_values(scene, values: Mapping | None) -> NumericValues:
     """Validate parameter values for a scene: finite numbers, and functions for X(x, xdot).
 
     Keys are the scene's SymPy symbols or their names (strings are looked up among the
@@ -125,8 +125,8 @@ def numeric_values(scene, values: Mapping | None) -> _Values:
     numbers: dict = {}
     functions: dict = {}
     if values is None:
-        return _Values(numbers, functions)
-    if isinstance(values, _Values):
+        return NumericValues(numbers, functions)
+    if isinstance(values, NumericValues):
         return values
     if not isinstance(values, Mapping):
         raise NumericsError(f"values must be a mapping {{symbol: number}}, not {type(values).__name__}.")
@@ -160,14 +160,14 @@ def numeric_values(scene, values: Mapping | None) -> _Values:
         number = _number(value, str(key))
         _check_assumptions(key, number)
         numbers[key] = number
-    return _Values(numbers, functions)
+    return NumericValues(numbers, functions)
 
 
-def _merge(scene, values, state) -> _Values:
+def _merge(scene, values, state) -> NumericValues:
     """Parameter values with a (frozen) state merged in."""
     vals = numeric_values(scene, values)
     extra = numeric_values(scene, state)
-    return _Values({**vals.numbers, **extra.numbers}, {**vals.functions, **extra.functions})
+    return NumericValues({**vals.numbers, **extra.numbers}, {**vals.functions, **extra.functions})
 
 
 def _check_assumptions(symbol: sp.Symbol, number: sp.Expr) -> None:
@@ -180,7 +180,7 @@ def _check_assumptions(symbol: sp.Symbol, number: sp.Expr) -> None:
         raise NumericsError(f"{symbol} = {x} must be >= 0.")
 
 
-def substitute(expr, values: _Values) -> sp.Expr:
+def substitute(expr, values: NumericValues) -> sp.Expr:
     """Plain numeric substitution: functions first, then numbers (``xreplace``).
 
     Examples
@@ -243,13 +243,13 @@ def _state_values(names: Sequence[str], symbols: Sequence[sp.Symbol], initial, w
     return out
 
 
-def _with(vals: _Values, extra: Mapping) -> _Values:
+def _with(vals: NumericValues, extra: Mapping) -> NumericValues:
     numbers = dict(vals.numbers)
     numbers.update({k: sp.Float(v) if isinstance(v, float) else v for k, v in extra.items()})
-    return _Values(numbers, vals.functions)
+    return NumericValues(numbers, vals.functions)
 
 
-def _evaluate(expr, vals: _Values, what: str) -> float:
+def _evaluate(expr, vals: NumericValues, what: str) -> float:
     value = substitute(expr, vals)
     if value.free_symbols:
         raise NumericsError(f"{what} needs values for {sorted(map(str, value.free_symbols))}.")

@@ -8,7 +8,7 @@ Regions are hatched (single hatching: stable for every contact law; double hatch
 unstable for every law; none: the stability depends on the law), as in the paper's Fig. 1.
 
 - :mod:`~contactsym.plotting.regionplot`: :func:`region_data`, :func:`region_plot` for any
-  :class:`~contactsym.stages.regions.Region` in a plane of two of its symbols (``Region.plot``);
+  :class:`~contactsym.stages.regions.Region` in a plane of two of its symbols;
 - :mod:`~contactsym.plotting.guides`: :func:`fig1_data`, :func:`fig1_plot`, Fig. 1a/1b;
 - :mod:`~contactsym.plotting.rod`: :func:`rod_f_data`, :func:`rod_f_plot`, f(u) of the rod
   in the three cases of §3;
@@ -26,17 +26,12 @@ unstable for every law; none: the stability depends on the law), as in the paper
   ``sliding_point_phase_portrait.png``).
 """
 
-# the private helpers (`name as name`) are re-exported for scenefigures and atlas.plot
 from .brake import BrakeHopfData, BrakeMapData, brake_hopf_data, brake_hopf_plot, brake_map_data, brake_map_plot
-from .common import STABLE_HATCH, UNSTABLE_HATCH, ContactPlot
-from .common import _axes as _axes
+from .common import STABLE_HATCH, UNSTABLE_HATCH, ContactPlot, axes_or_current
 from .figures import FIGURE_SCENES, paper_figures, save_figure, scene_figures
 from .guides import Fig1Data, fig1_data, fig1_plot
 from .portrait import PhasePortraitData, phase_portrait_caption, phase_portrait_data, phase_portrait_plot
-from .regionplot import RegionData, region_data, region_plot
-from .regionplot import _boundary_plot as _boundary_plot
-from .regionplot import _relational_fields as _relational_fields
-from .regionplot import _values_for as _values_for
+from .regionplot import RegionData, boundary_contours, region_data, region_mask, region_plot, relational_fields
 from .rod import ROD_CASES, RodFData, rod_f_data, rod_f_plot, rod_portrait_values
 from .simulation import cycle_plot, fast_trajectories_plot, reactions_plot
 
@@ -52,6 +47,8 @@ __all__ = [
     "PhasePortraitData",
     "RegionData",
     "RodFData",
+    "axes_or_current",
+    "boundary_contours",
     "brake_hopf_data",
     "brake_hopf_plot",
     "brake_map_data",
@@ -66,7 +63,9 @@ __all__ = [
     "phase_portrait_plot",
     "reactions_plot",
     "region_data",
+    "region_mask",
     "region_plot",
+    "relational_fields",
     "rod_f_data",
     "rod_f_plot",
     "rod_portrait_values",

@@ -17,8 +17,8 @@ import sympy as sp
 from ..printing.latex_output import tex
 from ..scenes import paper_knowledge
 from ..stages.regions import Region
-from .common import STABLE_HATCH, UNSTABLE_HATCH, ContactPlot, _axes, _scene
-from .regionplot import RegionData, _boundary_plot, _relational_fields, _values_for, region_plot
+from .common import STABLE_HATCH, UNSTABLE_HATCH, ContactPlot, _scene, axes_or_current
+from .regionplot import RegionData, boundary_contours, region_mask, region_plot, relational_fields
 
 __all__ = ["BrakeHopfData", "BrakeMapData", "brake_hopf_data", "brake_hopf_plot", "brake_map_data", "brake_map_plot"]
 
@@ -51,8 +51,8 @@ def brake_map_data(scene, *, mu_max=2.0, resolution=300) -> BrakeMapData:
     A, M = np.meshgrid(alphas, mus)
     values = {"alpha": A, "mu": M}
     names = ("stable for every law", "law-dependent")
-    masks = {name: _values_for(regions[name], values, A.shape).copy() for name in names}
-    boundary = _relational_fields(regions["stable for every law"].condition, values, A.shape)
+    masks = {name: region_mask(regions[name], values, A.shape).copy() for name in names}
+    boundary = relational_fields(regions["stable for every law"].condition, values, A.shape)
     return BrakeMapData(A, M, masks, boundary, {name: regions[name] for name in names})
 
 
@@ -84,7 +84,7 @@ def brake_map_plot(data: BrakeMapData, ax=None, *, legend=True) -> ContactPlot:
     $\\mu$
     >>> plt.close(fig)
     """
-    ax = _axes(ax)
+    ax = axes_or_current(ax)
     X = np.degrees(data.alpha)
     region = data.regions["stable for every law"]
     grid = RegionData("alpha", "mu", X, data.mu, data.masks["stable for every law"], region)
@@ -94,7 +94,7 @@ def brake_map_plot(data: BrakeMapData, ax=None, *, legend=True) -> ContactPlot:
     )
     (proxy,) = ax.fill([], [], facecolor="white", edgecolor="0.5", label="depends on the law (Hopf possible)")
     artists.append(proxy)
-    artists += _boundary_plot(ax, X, data.mu, data.boundary, colors="black", linewidths=1.5)
+    artists += boundary_contours(ax, X, data.mu, data.boundary, colors="black", linewidths=1.5)
     (line,) = ax.plot([], [], "k-", lw=1.5, label=r"$\mu = |\cot\alpha|$")
     artists.append(line)
     ax.set_xlabel(r"$\alpha$ (degrees)")
@@ -153,9 +153,9 @@ def brake_hopf_data(scene, *, Psi=-1.0, m=1.0, mu_max=3.0, Phi_min=-10.0, resolu
     values = {"mu": MU, "Phi": PHI, "Psi": Psi, "m": m}
     stable_region = Region(stable, name="asymptotically stable (6.4)")
     hopf_region = Region(hopf, name="Hopf line")
-    mask = _values_for(stable_region, values, MU.shape).copy()
+    mask = region_mask(stable_region, values, MU.shape).copy()
     masks = {"stable": mask, "unstable": ~mask}
-    field_ = _relational_fields(hopf, values, MU.shape)
+    field_ = relational_fields(hopf, values, MU.shape)
     frequency = cases["hopf frequency"].rhs
     return BrakeHopfData(MU, PHI, {"Psi": Psi, "m": m}, stable_region, hopf_region, frequency, masks, field_)
 
@@ -188,7 +188,7 @@ def brake_hopf_plot(data: BrakeHopfData, ax=None, *, legend=True) -> ContactPlot
     $\\mu$ $\\Phi$
     >>> plt.close(fig)
     """
-    ax = _axes(ax)
+    ax = axes_or_current(ax)
     grid = RegionData("mu", "Phi", data.mu, data.Phi, data.masks["stable"], data.stable)
     stable_label = f"stable: ${tex(data.stable.condition)}$"
     artists = list(
@@ -200,7 +200,7 @@ def brake_hopf_plot(data: BrakeHopfData, ax=None, *, legend=True) -> ContactPlot
     artists += region_plot(
         ~data.stable, ax, x="mu", y="Phi", data=unstable, hatch=UNSTABLE_HATCH, color="tab:red", label="unstable"
     )
-    artists += _boundary_plot(ax, data.mu, data.Phi, data.hopf_field, colors="black", linewidths=2)
+    artists += boundary_contours(ax, data.mu, data.Phi, data.hopf_field, colors="black", linewidths=2)
     hopf = tex(data.hopf.condition)
     (line,) = ax.plot([], [], "k-", lw=2, label=f"Hopf line: ${hopf}$")
     artists.append(line)

@@ -17,7 +17,7 @@ import sympy as sp
 
 from ..errors import SceneError
 
-__all__ = ["ContactPlot", "STABLE_HATCH", "UNSTABLE_HATCH"]
+__all__ = ["ContactPlot", "STABLE_HATCH", "UNSTABLE_HATCH", "axes_or_current"]
 
 #: Hatches: stable for every law (single), unstable for every law (double), as in Fig. 1.
 STABLE_HATCH = "///"
@@ -84,8 +84,17 @@ class ContactPlot(Sequence):
         return f"<ContactPlot: {len(self)} artists ({kinds}) on {type(self.axes).__name__}>"
 
 
-def _axes(ax):
-    """``ax``, or the current pyplot Axes when none is given."""
+def axes_or_current(ax):
+    """``ax``, or the current pyplot Axes when none is given: the ``ax=`` of every ``*_plot``.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> axes_or_current(ax) is ax
+    True
+    >>> plt.close(fig)
+    """
     if ax is None:
         import matplotlib.pyplot as plt  # pyplot only when the caller gives no Axes
 

@@ -42,7 +42,7 @@ def _compiled(scene):
         symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=str)
         return symbols, sp.lambdify(symbols, exprs, "numpy")
 
-    return scene._stage("orthant map numeric", build)
+    return scene.cached("orthant map numeric", build)
 
 
 def _arrays(scene, values: dict):

@@ -14,8 +14,8 @@ import sympy as sp
 from scipy import ndimage
 
 from ..counts.regions import square_threshold
-from .common import STABLE_HATCH, UNSTABLE_HATCH, ContactPlot, _axes, _degrees, _float, _scene
-from .regionplot import RegionData, _boundary_plot, _relational_fields, _values_for, region_plot
+from .common import STABLE_HATCH, UNSTABLE_HATCH, ContactPlot, _degrees, _float, _scene, axes_or_current
+from .regionplot import RegionData, boundary_contours, region_mask, region_plot, relational_fields
 
 __all__ = ["Fig1Data", "fig1_data", "fig1_plot"]
 
@@ -90,10 +90,10 @@ def fig1_data(scene, phi, *, extent=4.0, resolution=400) -> Fig1Data:
     values = {"v_1": V1, "v_2": V2, str(parameter): _float(value)}
     regions = scene.regions()
     names = ("stable for every law", "unstable for every law", "law-dependent")
-    masks = {name: _values_for(regions[name], values, V1.shape).copy() for name in names}
+    masks = {name: region_mask(regions[name], values, V1.shape).copy() for name in names}
     count_regions = scene.equilibrium_counts()
-    counts = {name: _values_for(r, values, V1.shape).copy() for name, r in count_regions.items()}
-    lines = _relational_fields(sp.Or(*[r.condition for r in count_regions.values()]), values, V1.shape)
+    counts = {name: region_mask(r, values, V1.shape).copy() for name, r in count_regions.items()}
+    lines = relational_fields(sp.Or(*[r.condition for r in count_regions.values()]), values, V1.shape)
     return Fig1Data(phi, value, panel, threshold.angle, V1, V2, masks, counts, lines, regions, count_regions)
 
 
@@ -135,7 +135,7 @@ def fig1_plot(data: Fig1Data, ax=None, *, legend=True) -> ContactPlot:
     ('$v_1$', '$v_2$')
     >>> plt.close(fig)
     """
-    ax = _axes(ax)
+    ax = axes_or_current(ax)
     artists = []
     X, Y = data.V1, data.V2
     styles = {
@@ -148,7 +148,7 @@ def fig1_plot(data: Fig1Data, ax=None, *, legend=True) -> ContactPlot:
         artists += region_plot(region, ax, x="v_1", y="v_2", data=grid, hatch=hatch, color=color, label=label)
     (proxy,) = ax.fill([], [], facecolor="white", edgecolor="0.5", label="depends on the contact law")
     artists.append(proxy)
-    artists += _boundary_plot(ax, X, Y, data.lines, colors="black", linestyles="dashed", linewidths=1.2)
+    artists += boundary_contours(ax, X, Y, data.lines, colors="black", linestyles="dashed", linewidths=1.2)
     (line_proxy,) = ax.plot([], [], "k--", lw=1.2, label=r"$\pm v_1 \pm v_2 = 2\kappa^2$")
     artists.append(line_proxy)
     for name, mask in data.counts.items():

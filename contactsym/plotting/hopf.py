@@ -6,7 +6,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from . import ContactPlot, _axes
+from . import ContactPlot, axes_or_current
 
 __all__ = ["hopf_amplitude_data", "hopf_amplitude_plot"]
 
@@ -56,7 +56,7 @@ def hopf_amplitude_plot(data: dict, ax=None, *, label: str = "") -> ContactPlot:
     (1, True, True)
     >>> plt.close(fig)
     """
-    ax = _axes(ax)
+    ax = axes_or_current(ax)
     fine = np.geomspace(data["distance"].min(), data["distance"].max(), 50) if len(data["distance"]) > 1 else None
     artists = []
     if fine is not None:

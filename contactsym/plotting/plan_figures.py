@@ -22,13 +22,13 @@ from . import (
     STABLE_HATCH,
     UNSTABLE_HATCH,
     ContactPlot,
-    _axes,
-    _boundary_plot,
-    _relational_fields,
+    axes_or_current,
+    boundary_contours,
     phase_portrait_data,
     phase_portrait_plot,
     region_data,
     region_plot,
+    relational_fields,
     save_figure,
 )
 
@@ -95,7 +95,7 @@ def region_map_data(scene, plan, *, resolution: int = 200) -> RegionMapData:
             continue
         if isinstance(region.condition, sp.Equality):  # a curve: drawn as the zero set of lhs - rhs
             try:
-                fields = _relational_fields(region.condition, {**plan.values, plan.x: X, plan.y: Y}, X.shape)
+                fields = relational_fields(region.condition, {**plan.values, plan.x: X, plan.y: Y}, X.shape)
             except KeyError as missing:
                 skipped[name] = f"give [figures] values for {missing}"
                 continue
@@ -134,14 +134,14 @@ def region_map_plot(data: RegionMapData, ax=None, *, legend: bool = True) -> Con
     ('$\\\\alpha$', 3)
     >>> plt.close(fig)
     """
-    ax = _axes(ax)
+    ax = axes_or_current(ax)
     artists, others = [], iter(_OTHER_HATCHES * 4)
     for name, grid in data.grids.items():
         hatch, color = _HATCHES.get(name) or next(others)
         label = name if len(tex(grid.region.condition)) > 80 else f"{name}: ${tex(grid.region.condition)}$"
         artists += region_plot(grid.region, ax, x=grid.x, y=grid.y, data=grid, hatch=hatch, color=color, label=label)
     for name, (X, Y, fields) in data.curves.items():
-        drawn = _boundary_plot(ax, X, Y, fields, colors="black", linewidths=1.5)
+        drawn = boundary_contours(ax, X, Y, fields, colors="black", linewidths=1.5)
         if drawn:
             artists += [*drawn, *ax.plot([], [], "k-", lw=1.5, label=name)]
     ax.set_xlabel(f"${tex(sp.Symbol(data.x))}$")

@@ -14,7 +14,7 @@ import sympy as sp
 
 from ..printing.latex_output import tex
 from ..scenes import paper_knowledge
-from .common import CASE_TITLES, ContactPlot, _axes, _float, _scene
+from .common import CASE_TITLES, ContactPlot, _float, _scene, axes_or_current
 
 __all__ = ["PhasePortraitData", "phase_portrait_caption", "phase_portrait_data", "phase_portrait_plot"]
 
@@ -130,8 +130,8 @@ def _count_at(scene, values: dict) -> str:
         counts = scene.equilibrium_counts()
     except (ValueError, NotImplementedError):  # a scene whose counts are not derived: the title says so
         counts = {}
-    known = [(n, r) for n, r in counts.items() if set(r._by_name) <= set(values)]
-    return next((n for n, r in known if bool(r.evaluate(**{k: values[k] for k in r._by_name}))), "undecided")
+    known = [(n, r) for n, r in counts.items() if set(r.symbol_names) <= set(values)]
+    return next((n for n, r in known if bool(r.evaluate(**{k: values[k] for k in r.symbol_names}))), "undecided")
 
 
 def phase_portrait_plot(data: PhasePortraitData, ax=None, *, legend=True) -> ContactPlot:
@@ -162,7 +162,7 @@ def phase_portrait_plot(data: PhasePortraitData, ax=None, *, legend=True) -> Con
     ('$u$', '$v$')
     >>> plt.close(fig)
     """
-    ax = _axes(ax)
+    ax = axes_or_current(ax)
     before = set(ax.patches)
     speed = np.hypot(data.du, data.dv)
     stream = ax.streamplot(

@@ -1,8 +1,8 @@
 """Any region on a grid of two of its symbols, hatched; the zero sets that bound it.
 
 Regions are duck-typed: anything with ``condition``, ``evaluate(**values)`` and the
-``_by_name`` mapping of its symbols (a :class:`contactsym.stages.regions.Region`) is drawn.
-This module imports no other part of contactsym, so ``Region.plot`` can use it.
+``symbol_names`` mapping of its symbols (a :class:`contactsym.stages.regions.Region`) is drawn.
+Draw a region with ``region_plot(region_data(region, ...), ax=ax)``; this module imports no stage.
 """
 
 from __future__ import annotations
@@ -13,14 +13,24 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from .common import STABLE_HATCH, ContactPlot, _axes, _float, _name
+from .common import STABLE_HATCH, ContactPlot, _float, _name, axes_or_current
 
-__all__ = ["RegionData", "region_data", "region_plot"]
+__all__ = ["RegionData", "boundary_contours", "region_data", "region_mask", "region_plot", "relational_fields"]
 
 
-def _values_for(region, values: dict, shape) -> np.ndarray:
-    """Evaluate a region with the values it depends on (others ignored), broadcast to shape."""
-    needed = {name for name in region._by_name}
+def region_mask(region, values: dict, shape) -> np.ndarray:
+    """Membership of a region on a grid: evaluated with the values it depends on (others ignored),
+    broadcast to ``shape``.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from contactsym.stages.regions import Region
+    >>> x, y = sp.symbols("x y", real=True)
+    >>> region_mask(Region(x > 0), {"x": np.array([-1.0, 1.0]), "y": 3.0}, (2,)).tolist()
+    [False, True]
+    """
+    needed = {name for name in region.symbol_names}
     missing = needed - set(values)
     if missing:
         raise ValueError(f"give values for {sorted(missing)} (in fixed=...); the region depends on them.")
@@ -28,8 +38,16 @@ def _values_for(region, values: dict, shape) -> np.ndarray:
     return np.broadcast_to(mask, shape)
 
 
-def _relational_fields(condition, values: dict, shape) -> list[np.ndarray]:
-    """lhs - rhs of every inequality/equation in a condition, on a grid (zero sets = boundaries)."""
+def relational_fields(condition, values: dict, shape) -> list[np.ndarray]:
+    """lhs - rhs of every inequality/equation in a condition, on a grid: their zero sets are the boundaries.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> x, y = sp.symbols("x y", real=True)
+    >>> [f.tolist() for f in relational_fields(sp.And(x > 0, x + y < 2), {"x": np.array([0.0, 1.0]), "y": 1.0}, (2,))]
+    [[0.0, 1.0], [-1.0, 0.0]]
+    """
     fields = []
     seen = []
     for atom in sorted(sp.sympify(condition).atoms(sp.core.relational.Relational), key=sp.default_sort_key):
@@ -52,7 +70,7 @@ class RegionData:
     X: np.ndarray
     Y: np.ndarray
     mask: np.ndarray
-    region: Any  # a Region, or anything with condition, evaluate and _by_name
+    region: Any  # a Region, or anything with condition, evaluate and symbol_names
 
 
 def region_data(region, *, x, y, fixed=None, xlim=(-1.0, 1.0), ylim=(-1.0, 1.0), resolution=300):
@@ -87,7 +105,7 @@ def region_data(region, *, x, y, fixed=None, xlim=(-1.0, 1.0), ylim=(-1.0, 1.0),
     X, Y = np.meshgrid(xs, ys)
     values = {_name(k): _float(v) for k, v in (fixed or {}).items()}
     values.update({_name(x): X, _name(y): Y})
-    return RegionData(_name(x), _name(y), X, Y, _values_for(region, values, X.shape).copy(), region)
+    return RegionData(_name(x), _name(y), X, Y, region_mask(region, values, X.shape).copy(), region)
 
 
 def region_plot(
@@ -141,7 +159,7 @@ def region_plot(
     (2, ['a + b < 1'])
     >>> plt.close(fig)
     """
-    ax = _axes(ax)
+    ax = axes_or_current(ax)
     if data is None:
         data = region_data(region, x=x, y=y, fixed=fixed, xlim=xlim, ylim=ylim, resolution=resolution)
     artists = []
@@ -158,7 +176,9 @@ def region_plot(
     return ContactPlot.of(ax, artists)
 
 
-def _boundary_plot(ax, X, Y, fields, **style):
+def boundary_contours(ax, X, Y, fields, **style) -> list:
+    """Draw the zero contour of each field (from :func:`relational_fields`) that changes sign on the grid;
+    returns the contour sets drawn."""
     artists = []
     for values in fields:
         if np.nanmin(values) < 0 < np.nanmax(values):

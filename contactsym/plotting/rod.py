@@ -15,7 +15,7 @@ import sympy as sp
 
 from ..counts.regions import corner_cases
 from ..printing.latex_output import tex
-from .common import CASE_TITLES, ContactPlot, _axes, _float, _scene
+from .common import CASE_TITLES, ContactPlot, _float, _scene, axes_or_current
 
 __all__ = ["ROD_CASES", "RodFData", "rod_f_data", "rod_f_plot", "rod_portrait_values"]
 
@@ -122,7 +122,7 @@ def rod_f_data(scene, case="cusp", *, values=None, points=400) -> RodFData:
     symbols = sorted(f.free_symbols - {u}, key=str)
     function = sp.lambdify([u, *symbols], f, "numpy")
     counts = scene.equilibrium_counts()
-    (count,) = [n for n, r in counts.items() if bool(r.evaluate(**{s: numeric[s] for s in r._by_name}))]
+    (count,) = [n for n, r in counts.items() if bool(r.evaluate(**{s: numeric[s] for s in r.symbol_names}))]
     chosen = _corner_case_at(scene, numeric)
     corners = tuple(_float(c.subs({sp.Symbol(k, real=True): v for k, v in numeric.items()})) for c in chosen.corners)
     low, high = min(corners) - 4.0, max(corners) + 4.0
@@ -177,7 +177,7 @@ def rod_f_plot(data: RodFData, ax=None, *, legend=True) -> ContactPlot:
     ('$u = R$', '$f(u)$')
     >>> plt.close(fig)
     """
-    ax = _axes(ax)
+    ax = axes_or_current(ax)
     artists = [ax.axhline(0.0, color="0.4", lw=0.8)]
     styles = ["-", "--", ":", "-."]
     for (load, values, roots), style in zip(data.curves, styles):

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .common import ContactPlot, _axes
+from .common import ContactPlot, axes_or_current
 
 __all__ = ["cycle_plot", "fast_trajectories_plot", "reactions_plot"]
 
@@ -25,7 +25,7 @@ def fast_trajectories_plot(data: dict, ax=None) -> ContactPlot:
     2
     >>> plt.close(fig)
     """
-    ax = _axes(ax)
+    ax = axes_or_current(ax)
     artists = []
     if data.get("field") is not None:
         X, Y, U, V = data["field"]
@@ -62,7 +62,7 @@ def reactions_plot(run, ax=None, *, names=None) -> ContactPlot:
     ['u']
     >>> plt.close(fig)
     """
-    ax = _axes(ax)
+    ax = axes_or_current(ax)
     chosen = names or run.reaction_names
     lines = []
     for name in chosen:
@@ -91,7 +91,7 @@ def cycle_plot(cycle, ax=None) -> ContactPlot:
     2
     >>> plt.close(fig)
     """
-    ax = _axes(ax)
+    ax = axes_or_current(ax)
     artists = []
     for row, name in enumerate(cycle.reaction_names):
         (line,) = ax.plot(cycle.tau, cycle.reactions[row], label=f"{name}(tau)")

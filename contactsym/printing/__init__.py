@@ -2,11 +2,12 @@
 and plain text with Unicode mathematics as LaTeX. Imports no stage.
 """
 
-from .latex_output import Formula, Numbering, formulas, latex, prime, signs_latex, tex
+from .latex_output import Formula, LatexReprMixin, Numbering, formulas, latex, prime, signs_latex, tex
 from .unicode_math import text_to_latex
 
 __all__ = [
     "Formula",
+    "LatexReprMixin",
     "Numbering",
     "formulas",
     "latex",

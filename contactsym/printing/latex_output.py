@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
-__all__ = ["Formula", "Numbering", "formulas", "latex", "prime", "signs_latex", "tex"]
+__all__ = ["Formula", "LatexReprMixin", "Numbering", "formulas", "latex", "prime", "signs_latex", "tex"]
 
 
 class _PaperPrinter(LatexPrinter):
@@ -225,6 +225,20 @@ def latex(obj, *, present: bool = False, tags: bool = False) -> str:
     return _aligned(formulas(obj, present=present), tags)
 
 
-def _repr_latex(obj) -> str:
-    """What ``_repr_latex_`` of a stage object returns: its formulas with their citations."""
-    return f"$\\displaystyle {latex(obj, tags=True)}$"
+class LatexReprMixin:
+    """Gives a class with ``formulas()`` its Jupyter display: the formulas with their citations.
+
+    The stage classes (and :class:`~contactsym.mechanism.scene.Scene`) inherit it, so
+    ``_repr_latex_`` is written once; it adds no state (``__slots__ = ()``).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> print(cs.scene("sliding-point").equilibria()._repr_latex_())
+    $\\displaystyle \\begin{aligned} u^{*} &= - Y{\\left(x,\\dot{x} \\right)} && \\text{(3.2)} \\end{aligned}$
+    """
+
+    __slots__ = ()
+
+    def _repr_latex_(self) -> str:
+        return f"$\\displaystyle {latex(self, tags=True)}$"

@@ -28,8 +28,6 @@ from .document import Figure, report_tex
 from .scene_parts import FigureSource as FigureSource
 from .summary import conditions, summary_text
 from .typesetting import WIDTH as WIDTH
-from .typesetting import _display as _display
-from .typesetting import _Named as _Named
 from .typesetting import width as width
 
 __all__ = [

@@ -15,16 +15,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..atomic import replaced_directory
-from ..errors import ContactsymError
+from ..errors import ReportError
 from .document import Figure, report_tex
 from .scene_parts import FigureSource
 from .summary import conditions
 
 __all__ = ["ReportError", "ReportResult", "compile_pdf", "write_report"]
-
-
-class ReportError(ContactsymError):
-    """The report could not be written or compiled."""
 
 
 @dataclass

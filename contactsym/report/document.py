@@ -215,7 +215,7 @@ def _hurwitz_section(scene, named: _Named) -> str:
             r"$\omega^2$ the common root of the real and imaginary parts of $p(i\omega)$:"
         )
         numbers, note = paper_equations(scene, "hopf frequency")
-        omega2 = _tidy(show(st.poly.omega_squared))
+        omega2 = _tidy(show(st.routh_hurwitz.omega_squared))
         text.append(_display(Formula("hopf frequency", r"\omega^{2}", omega2, "=", numbers, note), named))
     text += [_display(formula, named) for formula in robustness_formulas(st.robustness)]
     return "\n".join(text)

@@ -43,10 +43,15 @@ def _special_cases(scene, named: _Named) -> list[str]:
 
 
 class FigureSource:
-    """Figures for the reports: a built-in scene's from ``figures`` in its module, any other's from its plan."""
+    """Figures for the reports: a built-in scene's from ``figures`` in its module, any other's from its plan.
 
-    def __init__(self, workdir: Path):
+    ``resolution`` (grid points per axis of a region map) and ``dpi``, when given, replace each
+    figure's own default (400 and 150 for the paper's figures, 200 and 150 for a plan's).
+    """
+
+    def __init__(self, workdir: Path, *, resolution: int | None = None, dpi: int | None = None):
         self.workdir = workdir
+        self.options = {name: v for name, v in (("resolution", resolution), ("dpi", dpi)) if v is not None}
         self._own = 0  # scenes other than the paper's, numbered for their figure directories
         self.notes: list[str] = []
 
@@ -56,12 +61,12 @@ class FigureSource:
             if paper_name(scene) is None or getattr(scene, "figure_plan", None) is not None:
                 # any other scene, or a built-in one beyond the paper: the figures its plan asks for
                 self._own += 1
-                return plan_figures(scene, self.workdir / f"own-{self._own}")
+                return plan_figures(scene, self.workdir / f"own-{self._own}", **self.options)
             figures = paper_knowledge(scene, "figures")
             if figures is None:
                 return [], []
             directory = self.workdir / scene.name
             directory.mkdir(parents=True, exist_ok=True)
-            return figures(scene, directory, resolution=400, dpi=150), []
+            return figures(scene, directory, **{"resolution": 400, "dpi": 150, **self.options}), []
         except Exception as error:  # a figure that fails must not cost the rest of the report
             return [], [f"No figures: drawing them failed with {type(error).__name__}: {error}"]

@@ -20,6 +20,7 @@ from ..mechanism.scene import paper_equations
 from ..printing.latex_output import tex
 from ..stages.regions import Region
 from ..stages.stability import hurwitz_names
+from ..validate import cut
 from .scene_parts import _count_tag
 
 __all__ = ["conditions", "summary_text"]
@@ -133,15 +134,13 @@ def summary_text(data: dict) -> str:
     lines = [f"{data['scene']}: {data['description']}"]
     for name, entry in data["regions"].items():
         cite = ", ".join(entry.get("paper", []))
-        text = entry["sympy"]
-        if len(text) > 100:
-            text = text[:97] + "..."
+        text = cut(entry["sympy"], 100, count=False)
         lines.append(f"  {name}: {text}" + (f"   {cite}" if cite else ""))
     for name, entry in (data.get("equilibrium_counts") or {}).items():
-        text = entry["sympy"] if len(entry["sympy"]) <= 100 else entry["sympy"][:97] + "..."
+        text = cut(entry["sympy"], 100, count=False)
         cite = ", ".join(entry.get("paper", []))
         lines.append(f"  equilibria, {name}: {text}" + (f"   {cite}" if cite else ""))
     if data.get("hopf_frequency"):
         text = data["hopf_frequency"]["sympy"]
-        lines.append("  Hopf frequency omega: " + (text if len(text) <= 100 else text[:97] + "..."))
+        lines.append("  Hopf frequency omega: " + cut(text, 100, count=False))
     return "\n".join(lines)

@@ -2,6 +2,7 @@
 polynomials in the law, certificates of stability or instability, and witness laws.
 """
 
+from ..deprecation import deprecated_names
 from .certificates import (
     amgm_certificate,
     climbed_laws,
@@ -14,18 +15,19 @@ from .certificates import (
     vertex_laws,
     weak_damping_laws,
 )
-from .classify import Certificate, Law, Robustness, decide, nested_sequences, regions
+from .classify import Certificate, Robustness, WitnessLaw, decide_robustness, nested_sequences, regions
+from .classify import decide as decide  # the name of 0.1, deprecated
 from .law_polynomials import LawPolynomials, fast_spectral_abscissa, law_ring
 
 __all__ = [
     "Certificate",
-    "Law",
     "LawPolynomials",
     "Robustness",
+    "WitnessLaw",
     "amgm_certificate",
     "climbed_laws",
     "damped_positivstellensatz_certificate",
-    "decide",
+    "decide_robustness",
     "fast_spectral_abscissa",
     "fisher_fuller_laws",
     "generic_vertex_coefficients",
@@ -38,3 +40,6 @@ __all__ = [
     "vertex_laws",
     "weak_damping_laws",
 ]
+
+# 0.1's robustness.Law, renamed: contactsym.Law is the public contact law
+__getattr__ = deprecated_names(__name__, {"Law": "WitnessLaw"}, globals())

@@ -2,7 +2,7 @@ r"""Robustness to the contact law for any number of contacts: certificates and w
 
 An equilibrium with Jacobian A is *stable for every law*, *unstable for every law* (no
 admissible law makes (4.5) asymptotically stable) or *law-dependent* (some law is stable,
-another is not). :func:`decide` answers this for a numeric A, with evidence;
+another is not). :func:`decide_robustness` answers this for a numeric A, with evidence;
 :func:`regions` gives closed-form sufficient regions for a symbolic A.
 
 Notation: c_j = -Phi_j > 0, d_j = -Psi_j > 0. The coefficients p_s of (4.6) and the
@@ -88,7 +88,7 @@ Notes on the approach
 Examples
 --------
 >>> import sympy as sp
->>> r = decide(sp.Matrix([[2, 1, 0], [-1, 2, 1], [0, -1, 2]]))
+>>> r = decide_robustness(sp.Matrix([[2, 1, 0], [-1, 2, 1], [0, -1, 2]]))
 >>> r.verdict
 'law-dependent'
 >>> r.stable_law.stable, r.unstable_law.stable
@@ -105,6 +105,7 @@ import sympy as sp
 from sympy.polys.domains import QQ
 
 from ..algebra.basic import normalize
+from ..deprecation import deprecated_alias, deprecated_names
 from ..errors import ContactsymError
 from .certificates import (
     amgm_certificate,
@@ -119,11 +120,11 @@ from .certificates import (
 )
 from .law_polynomials import LawPolynomials, fast_spectral_abscissa
 
-__all__ = ["Law", "Certificate", "Robustness", "decide", "regions", "nested_sequences"]
+__all__ = ["WitnessLaw", "Certificate", "Robustness", "decide_robustness", "regions", "nested_sequences"]
 
 
 @dataclass(frozen=True)
-class Law:
+class WitnessLaw:
     """One admissible law at the equilibrium: Phi_j, Psi_j < 0, with its verdict.
 
     ``conditions`` are the exact Liénard–Chipart values (order of ``Hurwitz.labels``);
@@ -155,8 +156,8 @@ class Robustness:
 
     verdict: str
     certificate: Certificate | None = None
-    stable_law: Law | None = None
-    unstable_law: Law | None = None
+    stable_law: WitnessLaw | None = None
+    unstable_law: WitnessLaw | None = None
 
     def summary(self) -> str:
         lines = [f"robustness to the law: {self.verdict}"]
@@ -186,7 +187,7 @@ def nested_sequences(minors: dict) -> list[tuple[int, ...]]:
 # --- witnesses ---------------------------------------------------------------------------
 
 
-def _confirmed(lp: LawPolynomials, Af: np.ndarray, c, d, want_stable: bool) -> Law | None:
+def _confirmed(lp: LawPolynomials, Af: np.ndarray, c, d, want_stable: bool) -> WitnessLaw | None:
     """The law if it is admissible (c, d > 0) and the exact signs and the eigenvalues both say ``want_stable``."""
     if not all(x > 0 for x in list(c) + list(d)):
         return None
@@ -204,7 +205,7 @@ def _confirmed(lp: LawPolynomials, Af: np.ndarray, c, d, want_stable: bool) -> L
         return None
     as_rational = [sp.Rational(QQ.numer(QQ.convert(x)), QQ.denom(QQ.convert(x))) for x in list(c) + list(d)]
     k = len(c)
-    return Law(
+    return WitnessLaw(
         Phi=tuple(-x for x in as_rational[:k]),
         Psi=tuple(-x for x in as_rational[k:]),
         conditions=tuple(sp.Rational(QQ.numer(v), QQ.denom(v)) for v in values),
@@ -212,7 +213,7 @@ def _confirmed(lp: LawPolynomials, Af: np.ndarray, c, d, want_stable: bool) -> L
     )
 
 
-def _first_confirmed(lp, Af, candidates, want_stable, limit=8) -> Law | None:
+def _first_confirmed(lp, Af, candidates, want_stable, limit=8) -> WitnessLaw | None:
     for c, d in candidates[:limit]:
         law = _confirmed(lp, Af, c, d, want_stable)
         if law is not None:
@@ -283,7 +284,7 @@ def _numeric_matrix(A) -> sp.Matrix:
         raise ContactsymError(f"A must be a nonempty square matrix, got shape {M.shape}")
     if M.free_symbols:
         raise ContactsymError(
-            f"decide() needs a numeric A; this one has symbols {sorted(map(str, M.free_symbols))}. "
+            f"decide_robustness() needs a numeric A; this one has symbols {sorted(map(str, M.free_symbols))}. "
             "Substitute parameter values, or use regions(A) for closed-form regions."
         )
     values = np.array(M.evalf().tolist(), dtype=complex)
@@ -292,7 +293,7 @@ def _numeric_matrix(A) -> sp.Matrix:
     return M
 
 
-def decide(A, laws: int = 300, seed: int = 0) -> Robustness:
+def decide_robustness(A, laws: int = 300, seed: int = 0) -> Robustness:
     """Stable for every law, unstable for every law, law-dependent or undecided, with evidence.
 
     Parameters
@@ -303,7 +304,7 @@ def decide(A, laws: int = 300, seed: int = 0) -> Robustness:
 
     Examples
     --------
-    >>> decide(sp.Matrix([[1, 0, 0], [0, -1, 0], [0, 0, 1]])).verdict
+    >>> decide_robustness(sp.Matrix([[1, 0, 0], [0, -1, 0], [0, 0, 1]])).verdict
     'unstable'
     """
     lp = LawPolynomials(_numeric_matrix(A))
@@ -395,3 +396,8 @@ def regions(A: sp.Matrix, vertices: bool = False) -> dict[str, sp.Basic]:
         "law-dependent": sp.And(stable_law, unstable_law),
         "stable for every law needs": sp.Not(unstable_law),
     }
+
+
+# the names of 0.1, kept: they warn (``Law`` also named the public contact law contactsym.Law)
+decide = deprecated_alias(decide_robustness, "decide")
+__getattr__ = deprecated_names(__name__, {"Law": "WitnessLaw"}, globals())

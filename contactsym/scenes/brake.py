@@ -116,7 +116,7 @@ def _derive_special_cases(scene) -> tuple[list[SpecialCase], sp.Expr | None]:
     if len(solved) != 1:
         return cases, None
     Phi_line = sp.factor(solved[0][PHI])
-    omega = sp.factor(sp.sqrt(sp.factor(st.poly.omega_squared.subs(equal).subs(PHI, Phi_line))))
+    omega = sp.factor(sp.sqrt(sp.factor(st.routh_hurwitz.omega_squared.subs(equal).subs(PHI, Phi_line))))
     on_line = "and on its boundary, a Hopf bifurcation, the frequency in the stretched time is"
     cases.append(SpecialCase(on_line, "hopf frequency", r"\omega", "=", omega, (), "erratum 14"))
     return cases, Phi_line

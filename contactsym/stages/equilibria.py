@@ -16,7 +16,6 @@ A_S of the closed contacts S, so its Hurwitz conditions are those of charpoly(A_
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -24,10 +23,10 @@ import sympy as sp
 
 from ..algebra.basic import normalize
 from ..algebra.hurwitz import Hurwitz
-from ..printing.latex_output import Formula, Numbering, _repr_latex, signs_latex, tex
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering, signs_latex, tex
 from .fast import solve_piece
-from .linear import Linearization, charpoly
-from .stability import Stability
+from .linear import charpoly
+from .stability import Stability, stability_of
 
 __all__ = ["Branch", "Equilibria", "LiftOff"]
 
@@ -36,7 +35,7 @@ NUMBERS = Numbering({"equilibrium": (("3.2",), ("4.2",), ("4.2",))})
 
 
 @dataclass(frozen=True)
-class Branch:
+class Branch(LatexReprMixin):
     """One equilibrium: its sign pattern, the reactions u* and where it exists.
 
     Examples
@@ -61,9 +60,6 @@ class Branch:
             where = r"\text{where } s = " + signs_latex(self.signs) + r":\ "
             rows.append(Formula("existence", "", where + tex(self.condition), ""))
         return tuple(rows)
-
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)
 
 
 @dataclass(frozen=True)
@@ -129,7 +125,7 @@ def _lift_offs(fast, patterns, stability_of) -> list[LiftOff]:
 
 
 @dataclass(frozen=True, eq=False)
-class Equilibria:
+class Equilibria(LatexReprMixin):
     """All equilibrium branches, one or more per admissible sign pattern.
 
     Examples
@@ -139,18 +135,15 @@ class Equilibria:
     >>> len(eq.branches)
     4
 
-    ``stability_of(signs)`` gives the Stability of a sign pattern (the scene passes its
-    cached one); by default it is built here from the fast subsystem.
+    Built from the fast subsystem alone; the Stability of each sign pattern is the one the fast
+    subsystem keeps (:func:`~contactsym.stages.stability.stability_of`), shared with the scene.
     """
 
     fast: object
     signs: tuple | None = None
-    stability_of: Callable | None = None
 
     def _stability(self, signs) -> Stability:
-        if self.stability_of is not None:
-            return self.stability_of(signs)
-        return Stability(Linearization(self.fast, signs))
+        return stability_of(self.fast, signs)
 
     @cached_property
     def patterns(self) -> list[tuple]:
@@ -197,6 +190,3 @@ class Equilibria:
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:
         """Every branch's u* and where it exists: see :func:`contactsym.printing.latex_output.formulas`."""
         return tuple(row for branch in self.branches for row in branch.formulas(own=self.fast.paper_equations))
-
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)

@@ -18,15 +18,38 @@ import sympy as sp
 from ..algebra.basic import normalize, present
 from ..algebra.fraction_free import solve_fraction_free, t
 from ..errors import ContactsymError, SceneError, SingularJacobianError
-from ..printing.latex_output import Formula, Numbering, _repr_latex, prime, tex
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering, prime, tex
 
-__all__ = ["FastSubsystem", "switching_functions", "on_piece", "solve_piece"]
+__all__ = ["FastSubsystem", "fast_variables", "law_coefficients", "switching_functions", "on_piece", "solve_piece"]
 
 #: The general theory's numbers of the fast subsystem: (3.1) for k = 1, (4.1) for k = 2, (2.1) beyond.
 NUMBERS = Numbering({key: (("3.1",), ("4.1",), ("2.1",)) for key in ("fast", "f", "law")})
 
 #: Stage messages for long derivations: ``logging.basicConfig(level=logging.INFO)`` shows them.
 log = logging.getLogger("contactsym")
+
+
+def fast_variables(k: int) -> tuple[tuple[sp.Symbol, ...], tuple[sp.Symbol, ...]]:
+    """The fast variables (1.6) of k contacts: the reactions u_j and the scaled rates v_j (u, v for k = 1).
+
+    Examples
+    --------
+    >>> fast_variables(1), fast_variables(2)
+    (((u,), (v,)), ((u_1, u_2), (v_1, v_2)))
+    """
+
+    def names(letter: str) -> tuple[sp.Symbol, ...]:
+        if k == 1:
+            return (sp.Symbol(letter, real=True),)
+        return tuple(sp.Symbol(f"{letter}_{j}", real=True) for j in range(1, k + 1))
+
+    return names("u"), names("v")
+
+
+def law_coefficients(compliances, u, v) -> tuple[tuple[sp.Expr, sp.Expr], ...]:
+    """(Phi_j, Psi_j) of (2.1) for each contact's compliance law at (u_j, v_j); indexed j when k > 1."""
+    index = (lambda j: None) if len(compliances) == 1 else (lambda j: j + 1)
+    return tuple(law.phi_psi(u[j], v[j], index(j)) for j, law in enumerate(compliances))
 
 
 def _canonical(arg: sp.Expr, u) -> tuple[sp.Expr, int]:
@@ -170,7 +193,7 @@ def _no_real_root(f: sp.Matrix, u: tuple) -> bool:
 
 
 @dataclass(frozen=True, eq=False)
-class FastSubsystem:
+class FastSubsystem(LatexReprMixin):
     """The fast subsystem (2.1) of a scene. All attributes are SymPy objects.
 
     Attributes
@@ -254,18 +277,13 @@ class FastSubsystem:
         free = set().union(*(e.free_symbols for e in exprs)) - set(self.u) - set(self.v)
         return tuple(sorted(free, key=str))
 
-    def _names(self, letter: str) -> tuple[sp.Symbol, ...]:
-        if self.k == 1:
-            return (sp.Symbol(letter, real=True),)
-        return tuple(sp.Symbol(f"{letter}_{j}", real=True) for j in range(1, self.k + 1))
-
     @cached_property
     def u(self) -> tuple[sp.Symbol, ...]:
-        return self._names("u")
+        return fast_variables(self.k)[0]
 
     @cached_property
     def v(self) -> tuple[sp.Symbol, ...]:
-        return self._names("v")
+        return fast_variables(self.k)[1]
 
     @cached_property
     def state(self) -> sp.Matrix:
@@ -291,8 +309,7 @@ class FastSubsystem:
 
     @cached_property
     def _laws(self) -> tuple[tuple[sp.Expr, sp.Expr], ...]:
-        index = (lambda j: None) if self.k == 1 else (lambda j: j + 1)
-        return tuple(law.phi_psi(self.u[j], self.v[j], index(j)) for j, law in enumerate(self.compliances))
+        return law_coefficients(self.compliances, self.u, self.v)
 
     @cached_property
     def Phi(self) -> tuple[sp.Expr, ...]:
@@ -328,6 +345,17 @@ class FastSubsystem:
         """True when every Phi_j, Psi_j is constant (Proposition 5 applies for k = 1)."""
         return all(law.constant for law in self.compliances)
 
+    @cached_property
+    def _later_stages(self) -> dict:
+        return {}
+
+    def later_stage(self, key, build):
+        """A stage built from this fast subsystem alone (a Linearization or a Stability per sign
+        pattern), built once: the scene and :class:`~contactsym.stages.equilibria.Equilibria` share it."""
+        if key not in self._later_stages:
+            self._later_stages[key] = build()
+        return self._later_stages[key]
+
     def piece(self, signs) -> sp.Matrix:
         """f on the piece of a sign pattern (numbers or symbols)."""
         return self.f.applyfunc(lambda e: on_piece(e, self.switching, signs, self.u))
@@ -361,6 +389,3 @@ class FastSubsystem:
             rows.append(row("fast", prime(self.v[j]), f_of_u[j]))
         rows += [row("f", tex(f_of_u[j]), self.f[j]) for j in range(self.k)]
         return tuple(rows)
-
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)

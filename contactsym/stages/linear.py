@@ -19,10 +19,11 @@ import sympy as sp
 
 from ..algebra.basic import normalize, sign_symbols
 from ..algebra.canonical_form import to_fraction
+from ..deprecation import deprecated_property
 from ..errors import ContactsymError
-from ..printing.latex_output import Formula, Numbering, _repr_latex
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering
 
-__all__ = ["lam", "charpoly", "principal_minors", "Linearization"]
+__all__ = ["lam", "charpoly", "principal_minors", "Linearization", "linearization_of"]
 
 #: The general theory's numbers: A is (3.2) for k = 1 and (4.3) beyond; (4.5) and (4.6) for k >= 2.
 NUMBERS = Numbering(
@@ -77,7 +78,7 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
 
 
 @dataclass(frozen=True, eq=False)
-class Linearization:
+class Linearization(LatexReprMixin):
     """The linearized fast subsystem on one sign pattern.
 
     With ``signs=None`` each open switching function gets a sign symbol s_i
@@ -91,8 +92,9 @@ class Linearization:
     Phi, Psi : tuple
         The law's values at the equilibrium: v = 0 and, for a law that depends on u and
         a piece with one equilibrium, u = u*.
-    matrix : Matrix
-        (4.5) ``[[Psi A, Phi], [A, 0]]``.
+    jacobian : Matrix
+        (4.5) ``[[Psi A, Phi], [A, 0]]``, the Jacobian of (2.1) at the equilibrium (``matrix``
+        is its deprecated name).
     charpoly : Poly
         (4.6) in ``contactsym.lam``.
 
@@ -161,9 +163,12 @@ class Linearization:
         return self._at_equilibrium(self.fast.Psi)
 
     @cached_property
-    def matrix(self) -> sp.Matrix:
+    def jacobian(self) -> sp.Matrix:
+        """The Jacobian (4.5) of the fast subsystem (2.1) at the equilibrium, ``[[Psi A, Phi], [A, 0]]``."""
         Psi, Phi = sp.diag(*self.Psi), sp.diag(*self.Phi)
         return sp.BlockMatrix([[Psi * self.A, Phi], [self.A, sp.zeros(self.A.rows)]]).as_explicit()
+
+    matrix = deprecated_property("jacobian", "matrix")
 
     @cached_property
     def charpoly(self) -> sp.Poly:
@@ -180,9 +185,20 @@ class Linearization:
         return (
             row("A", "A", self.A),
             row("det A", r"\det A", self.det_A),
-            row("matrix", "J", self.matrix),
+            row("matrix", "J", self.jacobian),
             row("charpoly", r"p(\lambda)", self.charpoly.as_expr()),
         )
 
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)
+
+def linearization_of(fast, signs=None) -> Linearization:
+    """The Linearization of the fast subsystem ``fast`` on the sign pattern ``signs``, built once per
+    fast subsystem (:meth:`FastSubsystem.later_stage`), so that every user of it shares one.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> fast = cs.scene("brake").fast_subsystem()
+    >>> linearization_of(fast) is linearization_of(fast) is cs.scene("brake").linearization()
+    True
+    """
+    return fast.later_stage(("linearization", signs), lambda: Linearization(fast, signs))

@@ -152,6 +152,11 @@ class Region:
     def _by_name(self) -> dict:
         return {str(s): s for s in self.condition.free_symbols}
 
+    @property
+    def symbol_names(self) -> dict:
+        """The region's free symbols by name, ``{"mu": mu, ...}``: the keywords :meth:`evaluate` takes."""
+        return self._by_name
+
     def _symbols_for(self, values: dict) -> dict:
         unknown = set(values) - set(self._by_name)
         missing = set(self._by_name) - set(values)

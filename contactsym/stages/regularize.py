@@ -19,8 +19,8 @@ import sympy as sp
 from ..algebra.basic import normalize
 from ..algebra.fraction_free import t
 from ..errors import ContactsymError
-from ..printing.latex_output import Formula, Numbering, _repr_latex, prime, tex
-from .fast import on_piece
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering, prime, tex
+from .fast import fast_variables, law_coefficients, on_piece
 
 __all__ = ["Regularized", "ReducedSystem"]
 
@@ -29,7 +29,7 @@ NUMBERS = Numbering({"regularized": (("1.9",),) * 3, "reduced": (("2.2",),) * 3}
 
 
 @dataclass(frozen=True, eq=False)
-class Regularized:
+class Regularized(LatexReprMixin):
     """The system (1.9) of a scene, in stretched time.
 
     Attributes
@@ -70,23 +70,31 @@ class Regularized:
         return self.scene.free_coordinates
 
     @cached_property
+    def u(self) -> tuple[sp.Symbol, ...]:
+        """The fast variables u_j = N_j (1.6), one per contact."""
+        return fast_variables(self.scene.k)[0]
+
+    @cached_property
+    def v(self) -> tuple[sp.Symbol, ...]:
+        """The fast variables v_j = q_j'/eps (1.6), one per contact."""
+        return fast_variables(self.scene.k)[1]
+
+    @cached_property
     def _deformed(self) -> dict:
         """Contact coordinates and rates in terms of (u, v, eps), (1.6)."""
-        fast = self.scene.fast_subsystem()
         index = (lambda j: None) if self.scene.k == 1 else (lambda j: j + 1)
         subs = {}
         for j, contact in enumerate(self.scene.contacts):
             q = contact.coordinate
             if q in self.scene.coordinates:
-                subs[sp.diff(q, t)] = self.eps * fast.v[j]
-                subs[q] = contact.compliance.deformation(fast.u[j], fast.v[j], self.eps, index(j))
+                subs[sp.diff(q, t)] = self.eps * self.v[j]
+                subs[q] = contact.compliance.deformation(self.u[j], self.v[j], self.eps, index(j))
         return subs
 
     def _on_fast(self, expr: sp.Expr) -> sp.Expr:
-        fast = self.scene.fast_subsystem()
         rates = {d: v for d, v in self._deformed.items() if isinstance(d, sp.Derivative)}
         positions = {d: v for d, v in self._deformed.items() if not isinstance(d, sp.Derivative)}
-        expr = expr.subs(rates).subs(positions).subs(dict(zip(self.scene.reactions, fast.u)))
+        expr = expr.subs(rates).subs(positions).subs(dict(zip(self.scene.reactions, self.u)))
         # coordinates eliminated by gap functions sit on the contact manifold up to O(eps)
         return self.scene.freeze(expr)
 
@@ -104,13 +112,13 @@ class Regularized:
 
     @cached_property
     def y(self) -> sp.Matrix:
-        return self.scene.fast_subsystem().state
+        return sp.Matrix(self.u + self.v)
 
     @cached_property
     def Y(self) -> sp.Matrix:
-        fast = self.scene.fast_subsystem()
+        laws = law_coefficients(tuple(c.compliance for c in self.scene.contacts), self.u, self.v)
         G = [self._on_fast(g) for g in self.scene.gap_accelerations]
-        du = [fast.Phi[j] * fast.v[j] + fast.Psi[j] * G[j] for j in range(self.scene.k)]
+        du = [phi * self.v[j] + psi * G[j] for j, (phi, psi) in enumerate(laws)]
         return sp.Matrix(du + G)
 
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:
@@ -122,12 +130,9 @@ class Regularized:
         rows = [row(prime(x), self.eps * X) for x, X in zip(self.x, self.X)]
         return tuple(rows + [row(prime(y), Y) for y, Y in zip(self.y, self.Y)])
 
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)
-
 
 @dataclass(frozen=True, eq=False)
-class ReducedSystem:
+class ReducedSystem(LatexReprMixin):
     """The comparison system (2.2): slow coordinates with the reactions N = u*.
 
     Attributes
@@ -197,6 +202,3 @@ class ReducedSystem:
         if self.branch.signs:
             rows.append(Formula("existence", "", r"\text{where } " + tex(self.condition), ""))
         return tuple(rows)
-
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)

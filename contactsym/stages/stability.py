@@ -28,15 +28,16 @@ import sympy as sp
 
 from ..algebra.basic import normalize
 from ..algebra.hurwitz import Hurwitz, hurwitz_minors
+from ..deprecation import deprecated_property
 from ..errors import SingularJacobianError
-from ..lyapunov.coefficient import fast_first_lyapunov
-from ..printing.latex_output import Formula, Numbering, _repr_latex, tex
-from .linear import lam
+from ..lyapunov.coefficient import first_lyapunov_symbolic
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering, tex
+from .linear import lam, linearization_of
 
 if TYPE_CHECKING:
     from ..robustness.classify import Robustness
 
-__all__ = ["Stability", "generic_minors", "hurwitz_names", "robustness_formulas"]
+__all__ = ["Stability", "generic_minors", "hurwitz_names", "robustness_formulas", "stability_of"]
 
 #: The general theory's numbers and propositions, for k = 1, k = 2 and k >= 3 contacts.
 NUMBERS = Numbering(
@@ -79,7 +80,7 @@ def _gt(expr) -> sp.Basic:
 
 
 @dataclass(frozen=True, eq=False)
-class Stability:
+class Stability(LatexReprMixin):
     """Stability conditions of one sign pattern (or all, with sign symbols).
 
     Attributes
@@ -118,19 +119,23 @@ class Stability:
         return self.A.rows
 
     @cached_property
-    def poly(self) -> Hurwitz:
-        """Hurwitz data of the characteristic polynomial (4.6)."""
+    def routh_hurwitz(self) -> Hurwitz:
+        """The Routh–Hurwitz data of the characteristic polynomial (4.6): minors, conditions (4.7),
+        Liénard–Chipart labels, the Hopf set and omega**2 (``poly`` is its deprecated name)."""
         if sp.expand(self.linearization.det_A) == 0:
             raise SingularJacobianError(
                 f"det A = 0 identically for A = {self.A.tolist()}: the equilibrium is not isolated and has a "
                 "zero eigenvalue for every law; the propositions need det A != 0. Check the scene's reactions."
             )
-        return Hurwitz(self.linearization.charpoly)
+        numbers, _ = NUMBERS("hurwitz", self.k, self.linearization.fast.paper_equations)
+        return Hurwitz(self.linearization.charpoly, numbers)
+
+    poly = deprecated_property("routh_hurwitz", "poly")
 
     @cached_property
     def hurwitz(self) -> list[sp.Expr]:
         logging.getLogger("contactsym").info("Hurwitz conditions (4.7) of a degree-%d polynomial", 2 * self.k)
-        return self.poly.conditions
+        return self.routh_hurwitz.conditions
 
     @cached_property
     def _classification(self) -> tuple:
@@ -166,12 +171,12 @@ class Stability:
 
     @cached_property
     def robustness(self) -> Robustness | None:
-        """The point decision of :func:`contactsym.robustness.classify.decide` for a numeric A (k >= 3), else None."""
+        """The point decision of :func:`contactsym.robustness.classify.decide_robustness` for a numeric A (k >= 3), else None."""
         if self.k < 3 or self.A.free_symbols or self.linearization.det_A == 0:
             return None
-        from ..robustness.classify import decide  # see robustness_regions: imported for k >= 3 only
+        from ..robustness.classify import decide_robustness  # see robustness_regions: imported for k >= 3 only
 
-        return decide(self.A)
+        return decide_robustness(self.A)
 
     @cached_property
     def undecided(self) -> sp.Basic:
@@ -186,13 +191,13 @@ class Stability:
     def hopf(self) -> sp.Basic:
         if self.k == 1:
             return sp.false  # p_1 = -a Psi and p_0 = -a Phi vanish together: no Hopf point
-        return self.poly.hopf_set
+        return self.routh_hurwitz.hopf_set
 
     @cached_property
     def hopf_frequency(self) -> sp.Expr | None:
-        if self.k == 1 or self.poly.omega_squared is None:
+        if self.k == 1 or self.routh_hurwitz.omega_squared is None:
             return None
-        return sp.sqrt(self.poly.omega_squared)
+        return sp.sqrt(self.routh_hurwitz.omega_squared)
 
     @cached_property
     def first_lyapunov(self) -> sp.Expr | None:
@@ -204,7 +209,7 @@ class Stability:
         (u*, 0) as symbols (``Phi_1_u`` = dPhi_1/du_1, ...). None where there is no Hopf set.
         See :mod:`contactsym.lyapunov.coefficient`.
         """
-        return fast_first_lyapunov(self)
+        return first_lyapunov_symbolic(self)
 
     # --- k = 1: Propositions 3, 4, 5 ------------------------------------------------
 
@@ -261,7 +266,7 @@ class Stability:
         names = hurwitz_names(self)
         generic = generic_minors(self.linearization.charpoly.degree())
         rows = []
-        for name, (kind, index), condition in zip(names, self.poly.labels, self.hurwitz):
+        for name, (kind, index), condition in zip(names, self.routh_hurwitz.labels, self.hurwitz):
             if kind == "Delta":
                 rows += [row("hurwitz", name, generic[index]), row("hurwitz", "", show(condition))]
             else:
@@ -275,8 +280,19 @@ class Stability:
             rows.append(row("hopf frequency", r"\omega", show(self.hopf_frequency)))
         return tuple(rows) + robustness_formulas(self.robustness)
 
-    def _repr_latex_(self) -> str:
-        return _repr_latex(self)
+
+def stability_of(fast, signs=None) -> Stability:
+    """The Stability of the fast subsystem ``fast`` on the sign pattern ``signs``, built once per fast
+    subsystem: :class:`~contactsym.stages.equilibria.Equilibria` and the scene share it.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> fast = cs.scene("brake").fast_subsystem()
+    >>> stability_of(fast).linearization is cs.scene("brake").linearization()
+    True
+    """
+    return fast.later_stage(("stability", signs), lambda: Stability(linearization_of(fast, signs)))
 
 
 def hurwitz_names(stability) -> list[str]:
@@ -289,7 +305,7 @@ def hurwitz_names(stability) -> list[str]:
     ['p_{3}', 'p_{2}', 'p_{1}', 'p_{0}', '\\Delta_{3}']
     """
     letters = {"p": "p", "Delta": r"\Delta"}
-    return [f"{letters[kind]}_{{{index}}}" for kind, index in stability.poly.labels]
+    return [f"{letters[kind]}_{{{index}}}" for kind, index in stability.routh_hurwitz.labels]
 
 
 def generic_minors(n: int) -> dict[int, sp.Expr]:
@@ -306,7 +322,7 @@ def generic_minors(n: int) -> dict[int, sp.Expr]:
 
 
 def robustness_formulas(robustness) -> tuple[Formula, ...]:
-    """The point decision of :func:`contactsym.robustness.classify.decide`: verdict, certificate, witness laws."""
+    """The point decision of :func:`contactsym.robustness.classify.decide_robustness`: verdict, certificate, witness laws."""
     if robustness is None:
         return ()
     rows = [Formula("robustness", r"\text{robustness}", r"\text{" + robustness.verdict + "}", ":")]

@@ -20,8 +20,10 @@ ROD = {"phi": 0.785, "mu_1": 3, "mu_2": 0.5, "X_1": 0, "Y_1": 0, "Y_2": 0, "Phi"
 
 def _eigenvalues(scene, point: dict) -> np.ndarray:
     """Eigenvalues of (4.5) by SymPy substitution: independent of the atlas's generated code."""
-    by_name = {str(s): s for s in scene.linearization().matrix.free_symbols}
-    matrix = scene.linearization().matrix.xreplace({by_name[k]: sp.Float(v) for k, v in point.items() if k in by_name})
+    by_name = {str(s): s for s in scene.linearization().jacobian.free_symbols}
+    matrix = scene.linearization().jacobian.xreplace(
+        {by_name[k]: sp.Float(v) for k, v in point.items() if k in by_name}
+    )
     return np.linalg.eigvals(np.array(matrix.evalf(), dtype=float))
 
 
@@ -107,7 +109,7 @@ def test_guides_leading_eigenvalue_against_sympy_substitution(signs):
     grid = {"mu_1": [0.1, 0.8, 2.5], "Phi_1": -rng.uniform(0.05, 5, 3), "Psi_2": -rng.uniform(0.05, 5, 2)}
     values = {"phi": 0.6, "mu_2": 0.7, "Phi_2": -1.3, "Psi_1": -0.4}
     ds = atlas.sweep(guides, atlas.leading_eigenvalue(signs=signs), grid, values=values)
-    matrix = guides.linearization(signs).matrix
+    matrix = guides.linearization(signs).jacobian
     by_name = {str(s): s for s in matrix.free_symbols}
     for index, leading in np.ndenumerate(ds.leading_eigenvalue.values):
         point = values | {name: grid[name][i] for name, i in zip(grid, index)}

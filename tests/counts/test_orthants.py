@@ -91,7 +91,7 @@ def labels(scene, values):
     regions = scene.equilibrium_counts()
     names = np.full(len(next(iter(values.values()))), "", dtype=object)
     for name, region in regions.items():
-        inside = region.evaluate(**{s: values[s] for s in region._by_name})
+        inside = region.evaluate(**{s: values[s] for s in region.symbol_names})
         assert not np.any(inside & (names != "")), "two count regions overlap"
         names[np.broadcast_to(inside, names.shape)] = name
     return names
@@ -123,7 +123,7 @@ def test_scene_count_regions_against_brute_force(name):
 def test_block_counter_example_is_two_or_none():
     block = cs.scene("two-leg-block")
     point = dict(m=1.838, J=0.5558, a=0.6912, b=0.5569, mu_1=1.5555, mu_2=1.3973)
-    (name,) = [n for n, r in block.equilibrium_counts().items() if r.contains(**{s: point[s] for s in r._by_name})]
+    (name,) = [n for n, r in block.equilibrium_counts().items() if r.contains(**{s: point[s] for s in r.symbol_names})]
     assert name == "two or none"
     # the loads, brute force: (Y, M) = (-24.5, -3.1) none, (0, 5) two
     values = {k: np.array([v, v]) for k, v in point.items()}

@@ -199,7 +199,7 @@ def rod_region(values):
     }
     found = []
     for name, region in rod.equilibrium_counts().items():
-        args = {k: v for k, v in presented.items() if k in region._by_name}
+        args = {k: v for k, v in presented.items() if k in region.symbol_names}
         if bool(region.evaluate(**args)):
             found.append(name)
     return found
@@ -267,7 +267,7 @@ def test_guides_counts_agree_with_brute_force_roots_over_loads():
             continue
         signs = rng.choice([1, -1], 2)  # any v_j with these moduli: the count cannot depend on s_j
         point = {"v_1": signs[0] * a, "v_2": signs[1] * b, "kappa": k}
-        names = [n for n, r in regions.items() if bool(r.evaluate(**{s: point[s] for s in r._by_name}))]
+        names = [n for n, r in regions.items() if bool(r.evaluate(**{s: point[s] for s in r.symbol_names}))]
         assert len(names) == 1
         counts = set()
         for y_load, m_load in loads:

@@ -10,7 +10,12 @@ from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 
 from contactsym.errors import HopfError
-from contactsym.lyapunov.coefficient import derivative_tensors, lyapunov_numeric, lyapunov_symbolic, multilinear
+from contactsym.lyapunov.coefficient import (
+    derivative_tensors,
+    first_lyapunov_from_derivatives,
+    lyapunov_symbolic,
+    multilinear,
+)
 
 x, y = sp.symbols("x y", real=True)
 
@@ -25,7 +30,7 @@ def simulated_amplitude(F: sp.Matrix, start, periods_time: float, settle: float)
 
 def predicted_amplitude(F_critical: sp.Matrix, alpha: float, at: dict, transform=None) -> float:
     """2 r |q_0| with r^2 = -alpha / Re c1, from l1 at the critical point."""
-    h = lyapunov_numeric(*derivative_tensors(F_critical, [x, y], at))
+    h = first_lyapunov_from_derivatives(*derivative_tensors(F_critical, [x, y], at))
     q = h.q if transform is None else transform @ h.q
     return 2 * h.radius(alpha) * abs(q[0])
 
@@ -38,7 +43,7 @@ def predicted_amplitude(F_critical: sp.Matrix, alpha: float, at: dict, transform
 def test_normal_form_l1_and_amplitude(s, w, beta):
     r2 = x**2 + y**2
     critical = sp.Matrix([-w * y + s * x * r2, w * x + s * y * r2])
-    h = lyapunov_numeric(*derivative_tensors(critical, [x, y], {x: 0, y: 0}))
+    h = first_lyapunov_from_derivatives(*derivative_tensors(critical, [x, y], {x: 0, y: 0}))
     # polar coordinates: R' = beta R + s R^3, and |z| = R / sqrt(2) for <q, q> = 1, so Re c1 = 2 s
     assert h.l1 == pytest.approx(2 * s / w, rel=1e-12)
     alpha = beta if s < 0 else -beta  # the small cycle lives where alpha s < 0
@@ -59,7 +64,7 @@ def test_amplitude_is_invariant_under_a_random_linear_change_of_coordinates(entr
     alpha = -0.01 * s
     predicted = predicted_amplitude(field_y, alpha, {x: 0, y: 0}, transform=M)
     assert predicted == pytest.approx(np.sqrt(0.01), rel=1e-9)
-    h = lyapunov_numeric(*derivative_tensors(field_y, [x, y], {x: 0, y: 0}))
+    h = first_lyapunov_from_derivatives(*derivative_tensors(field_y, [x, y], {x: 0, y: 0}))
     assert np.sign(h.l1) == s  # the sign is invariant
 
 
@@ -68,7 +73,7 @@ def test_amplitude_is_invariant_under_a_random_linear_change_of_coordinates(entr
 
 def test_van_der_pol_prediction_matches_averaging_and_simulation():
     critical = sp.Matrix([y, -x - x**2 * y])
-    h = lyapunov_numeric(*derivative_tensors(critical, [x, y], {x: 0, y: 0}))
+    h = first_lyapunov_from_derivatives(*derivative_tensors(critical, [x, y], {x: 0, y: 0}))
     assert h.l1 < 0 and h.omega == pytest.approx(1)
     mu = 0.04
     predicted = predicted_amplitude(critical, mu / 2, {x: 0, y: 0})  # Re lambda = mu/2
@@ -88,7 +93,7 @@ def brusselator(a, b):
 def test_brusselator_is_supercritical_with_the_simulated_amplitude(a):
     b_star = 1 + a**2
     at = {x: a, y: b_star / a}
-    h = lyapunov_numeric(*derivative_tensors(brusselator(a, b_star), [x, y], at))
+    h = first_lyapunov_from_derivatives(*derivative_tensors(brusselator(a, b_star), [x, y], at))
     assert h.l1 < 0 and h.omega == pytest.approx(a)
     b = b_star * 1.01
     alpha = (b - b_star) / 2  # trace / 2 = (b - 1 - a^2) / 2
@@ -112,7 +117,7 @@ def test_brusselator_symbolic_l1_agrees_with_the_numeric_one():
     p = (J.T + sp.I * a * sp.eye(2)).nullspace()[0]
     l1 = lyapunov_symbolic(J, multilinear(H, 2), multilinear(T, 3), a, q, p)
     for value in (0.3, 1.0, 2.5):
-        numeric = lyapunov_numeric(
+        numeric = first_lyapunov_from_derivatives(
             *derivative_tensors(brusselator(value, 1 + value**2), state, {x: value, y: (1 + value**2) / value})
         )
         exact = complex(l1.subs(a, value))
@@ -124,6 +129,6 @@ def test_brusselator_symbolic_l1_agrees_with_the_numeric_one():
 def test_off_the_hopf_set_is_a_clear_error_saying_how_far():
     F = sp.Matrix([0.1 * x - y - x * (x**2 + y**2), x + 0.1 * y - y * (x**2 + y**2)])
     with pytest.raises(HopfError, match=r"off the Hopf set.*0\.1 \+- 1 i.*Re\(lambda\)/omega = 0\.1"):
-        lyapunov_numeric(*derivative_tensors(F, [x, y], {x: 0, y: 0}))
+        first_lyapunov_from_derivatives(*derivative_tensors(F, [x, y], {x: 0, y: 0}))
     with pytest.raises(HopfError, match="no complex pair"):
-        lyapunov_numeric(*derivative_tensors(sp.Matrix([x, -y]), [x, y], {x: 0, y: 0}))
+        first_lyapunov_from_derivatives(*derivative_tensors(sp.Matrix([x, -y]), [x, y], {x: 0, y: 0}))

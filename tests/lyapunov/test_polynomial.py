@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 import contactsym as cs
 from contactsym import numerics
 from contactsym.laws.library import Hertz
-from contactsym.lyapunov.coefficient import fast_hopf_forms, lyapunov_numeric
+from contactsym.lyapunov.coefficient import fast_hopf_forms, first_lyapunov_from_derivatives
 from contactsym.scenes.brake import squeal_direction
 
 # Hertz's nonzero derivatives (Psi = -d is constant) and the weakening damper's Psi_vv: both routes of g21,
@@ -61,7 +61,7 @@ def test_the_phi_uu_term_and_the_hopf_line(closed_form):
 def test_closed_form_equals_the_numeric_l1_on_the_hopf_line(closed_form, tensors, m_, mu_, Psi_, d):
     """Eigenvectors by numpy, solves by LAPACK, the same normalization <q, q> = <p, q> = 1."""
     J, H, T = (np.asarray(x, dtype=float) for x in tensors(m_, mu_, Psi_, *d))
-    numeric = lyapunov_numeric(J, H, T).l1
+    numeric = first_lyapunov_from_derivatives(J, H, T).l1
     symbolic = float(closed_form[1].subs({m: m_, mu: mu_, Psi: Psi_, **dict(zip(SYMBOLS, d))}))
     assert symbolic == pytest.approx(numeric, rel=1e-7, abs=1e-10)
 

@@ -424,7 +424,7 @@ def test_a_scene_pays_only_for_what_it_asks():
     rod.fast_subsystem()
     assert [key for key in rod._stage_cache if key != "fast"] == []
     stability = rod.stability()
-    assert stability.poly.poly.degree() == 2  # k = 1: a quadratic, never a quartic
+    assert stability.routh_hurwitz.poly.degree() == 2  # k = 1: a quadratic, never a quartic
     assert not any(isinstance(key, tuple) and key[0] == "equilibria" for key in rod._stage_cache)
 
     disc = brake.build()

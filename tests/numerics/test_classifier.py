@@ -13,6 +13,7 @@ from hypothesis import strategies as st
 
 import contactsym as cs
 from contactsym import numerics as nm
+from contactsym.numerics import classifier
 
 a, b, c = sp.symbols("a b c", positive=True)
 p, q = sp.symbols("p q", negative=True)
@@ -45,15 +46,15 @@ def _exact_sign(expr: sp.Expr, point, symbols=SYMBOLS) -> int:
 def test_one_signed_form_is_the_same_sum_with_one_signed_sums(terms, sign):
     total = sign * sp.expand(_polynomial(terms) ** 2)  # mixed signs inside, one sign in all
     one_signed = sp.Add(*[t for t in sp.Add.make_args(total) if (sign * t).is_nonnegative])
-    form = nm._one_signed_form(one_signed)
+    form = classifier._one_signed_form(one_signed)
     assert sp.expand(form - one_signed) == 0
-    assert nm._one_signed_sums(form)
+    assert classifier._one_signed_sums(form)
     assert sp.count_ops(form) <= sp.count_ops(one_signed)
 
 
 def test_shared_sums_are_pulled_out_once():
     total = a * p + b * p + c**2 * a * p + c**2 * b * p
-    form = nm._one_signed_form(-total)
+    form = classifier._one_signed_form(-total)
     assert sp.expand(form + total) == 0
     assert sp.count_ops(form) < sp.count_ops(total)
 
@@ -134,12 +135,12 @@ def test_exact_functions_of_parameters_are_accepted():
 def test_even_powers_of_sin_and_cos_through_tan_are_the_same_numbers(angle, half):
     for function in (sp.sin, sp.cos):
         expr = a * function(x) ** (2 * half) + b
-        code = nm._through_tan(expr)
+        code = classifier._through_tan(expr)
         assert not code.has(function)
         if abs(math.cos(angle)) > 1e-6:  # tan is finite
             point = {a: 1.5, b: 0.25, x: angle}
             assert math.isclose(float(code.subs(point)), float(expr.subs(point)), rel_tol=1e-12, abs_tol=1e-15)
-    assert nm._through_tan(sp.sin(x) ** 3) == sp.sin(x) ** 3  # odd powers keep their sign: left alone
+    assert classifier._through_tan(sp.sin(x) ** 3) == sp.sin(x) ** 3  # odd powers keep their sign: left alone
 
 
 def test_bisection_isolates_the_few_points_that_underflow():

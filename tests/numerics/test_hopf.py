@@ -10,7 +10,7 @@ import contactsym as cs
 from contactsym import numerics
 from contactsym.errors import ComplianceError, HopfError
 from contactsym.laws.library import Hertz
-from contactsym.lyapunov.coefficient import fast_first_lyapunov
+from contactsym.lyapunov.coefficient import first_lyapunov_symbolic
 from contactsym.numerics.hopf import full_cycle_start
 
 q, qd = sp.symbols("q qdot", real=True)
@@ -164,7 +164,7 @@ def test_symbolic_l1_agrees_with_the_numeric_one_in_other_coordinates(hertz_line
             order = [u] * name.count("u") + [v] * name.count("v")
             at[sp.Symbol(f"Phi_{j + 1}_{name}", real=True)] = sp.diff(Phi_law, *order).subs(here)
             at[sp.Symbol(f"Psi_{j + 1}_{name}", real=True)] = sp.diff(Psi_law, *order).subs(here)
-    l1_uv = complex(fast_first_lyapunov(st, at))
+    l1_uv = complex(first_lyapunov_symbolic(st, at))
     q_uv = np.concatenate([h.reaction_vector, h.vectors.q[2:]])
     assert l1_uv.real == pytest.approx(h.l1 / np.vdot(q_uv, q_uv).real, rel=1e-6)
 
@@ -173,7 +173,7 @@ def test_l1_off_the_line_says_how_far():
     with pytest.raises(
         HopfError, match=r"off the Hopf set: the critical eigenvalues are 0\.033.*Re\(lambda\)/omega = 0\.0158"
     ):
-        numerics.first_lyapunov(cs.scene("brake"), {**BRAKE, "mu": 1.2}, laws=HERTZ)
+        numerics.first_lyapunov_at(cs.scene("brake"), {**BRAKE, "mu": 1.2}, laws=HERTZ)
 
 
 def test_a_law_not_monotone_at_the_equilibrium_names_the_interval():
@@ -183,4 +183,4 @@ def test_a_law_not_monotone_at_the_equilibrium_names_the_interval():
         ComplianceError,
         match=r"not monotone where it is used.*stops decreasing at Q = -3\.162.*covers only N in \[0, 2\.108\]",
     ):
-        numerics.first_lyapunov(cs.scene("brake"), {**BRAKE, "mu": 0.5}, laws={0: softening, 1: softening})
+        numerics.first_lyapunov_at(cs.scene("brake"), {**BRAKE, "mu": 0.5}, laws={0: softening, 1: softening})

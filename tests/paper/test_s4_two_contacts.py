@@ -30,14 +30,14 @@ def test_jacobian_is_4_3_and_matrix_is_4_5():
     expected = sp.Matrix(
         [[Psi1 * a11, Psi1 * a12, Phi1, 0], [Psi2 * a21, Psi2 * a22, 0, Phi2], [a11, a12, 0, 0], [a21, a22, 0, 0]]
     )
-    assert lin.matrix == expected
+    assert lin.jacobian == expected
 
 
 def test_characteristic_polynomial_is_4_6():
     p = lin.charpoly.all_coeffs()
     printed = [1, -chi[4], chi[2] * D - chi[3], chi[1] * D, chi[0] * D]
     assert all(same(a, b) for a, b in zip(p, printed))
-    direct = (cs.lam * sp.eye(4) - lin.matrix).det(method="berkowitz")
+    direct = (cs.lam * sp.eye(4) - lin.jacobian).det(method="berkowitz")
     assert same(lin.charpoly.as_expr(), direct)
 
 

@@ -1,4 +1,4 @@
-"""Robustness to the contact law for any k: every claim of decide() against eigenvalues of (4.5).
+"""Robustness to the contact law for any k: every claim of decide_robustness() against eigenvalues of (4.5).
 
 Each point is checked over 10^4 sampled laws (log-uniform |Phi_j|, |Psi_j| in 1e-3..1e3, in
 batches of numpy eigenvalues); each witness law is re-checked by a second derivation of the
@@ -24,7 +24,7 @@ from contactsym.robustness.certificates import (
     positivstellensatz_certificate,
     vertex_laws,
 )
-from contactsym.robustness.classify import decide, nested_sequences, regions
+from contactsym.robustness.classify import decide_robustness, nested_sequences, regions
 from contactsym.robustness.law_polynomials import LawPolynomials, fast_spectral_abscissa, law_ring
 from contactsym.stages.linear import charpoly
 from tests.stool import h, mu, stool_scene
@@ -56,8 +56,8 @@ def eigen_abscissa(A, law) -> float:
 
 
 def check_claims(A, seed=0):
-    """decide(A) is not contradicted by 10^4 laws, and its witnesses are right."""
-    result = decide(A)
+    """decide_robustness(A) is not contradicted by 10^4 laws, and its witnesses are right."""
+    result = decide_robustness(A)
     if currently_in_test_context():
         event(result.verdict)  # the undecided fraction shows in --hypothesis-show-statistics
     top, tol = sampled_abscissae(A, seed=seed)
@@ -149,7 +149,7 @@ def test_k2_reproduces_proposition_6(A):
         "law-dependent": _stability2.law_dependent,
     }
     expected = [name for name, flag in flags.items() if flag.xreplace(values) == sp.true]
-    result = decide(A)
+    result = decide_robustness(A)
     if A.det() == 0:  # a zero eigenvalue for every law; Proposition 6 needs det A != 0
         assert result.verdict == "unstable" and set(expected) <= {"unstable"}
     else:
@@ -180,7 +180,7 @@ def test_closed_form_regions_agree_with_the_point_decision_and_eigenvalues(A):
     symbols = sp.Matrix(3, 3, lambda i, j: sp.Symbol(f"x_{i}{j}", real=True))
     closed = {name: r.xreplace(dict(zip(symbols, A))) for name, r in regions(symbols).items()}
     assert closed == {name: r for name, r in regions(A).items()}  # substitution commutes
-    result = decide(A)
+    result = decide_robustness(A)
     top, tol = sampled_abscissae(A, count=2000)
     if closed["unstable for every law"] == sp.true:
         assert result.verdict == "unstable" and (top > -tol).all()
@@ -258,11 +258,11 @@ def test_a_stable_law_without_a_nested_sequence():
 
 def test_decide_rejects_symbolic_and_bad_matrices():
     with pytest.raises(ContactsymError, match="numeric A"):
-        decide(sp.Matrix([[sp.Symbol("a")]]))
+        decide_robustness(sp.Matrix([[sp.Symbol("a")]]))
     with pytest.raises(ContactsymError, match="square"):
-        decide(sp.Matrix([[1, 2]]))
+        decide_robustness(sp.Matrix([[1, 2]]))
     with pytest.raises(ContactsymError, match="finite"):
-        decide(np.array([[np.nan]]))
+        decide_robustness(np.array([[np.nan]]))
 
 
 def test_report_and_latex_show_the_point_decision():

@@ -60,8 +60,8 @@ def test_fast_subsystem_eigenvalues_agree_with_the_hurwitz_verdict():
     scene = cs.scene("painleve-rod")
     lin = scene.linearization(signs=(1,))
     hurwitz = scene.stability((1,)).hurwitz
-    symbols = sorted(lin.matrix.free_symbols | set().union(*(h.free_symbols for h in hurwitz)), key=str)
-    matrix = sp.lambdify(symbols, lin.matrix, "numpy")
+    symbols = sorted(lin.jacobian.free_symbols | set().union(*(h.free_symbols for h in hurwitz)), key=str)
+    matrix = sp.lambdify(symbols, lin.jacobian, "numpy")
     conditions = sp.lambdify(symbols, hurwitz, "numpy")
     rng = np.random.default_rng(7)
     verdicts = set()
@@ -99,7 +99,7 @@ def test_one_sided_classification_matches_the_classical_table_from_a_hand_deriva
     expected = np.where(b > 0, "consistent", np.where(a > 0, "indeterminate", "inconsistent"))
     found = np.full(n, "", dtype=object)
     for case in cases:
-        inside = case.region.evaluate(**{s: values[s] for s in case.region._by_name})
+        inside = case.region.evaluate(**{s: values[s] for s in case.region.symbol_names})
         assert not np.any(inside & (found != ""))
         found[inside] = case.name
     clear = np.minimum(np.abs(a), np.abs(b)) > 1e-9

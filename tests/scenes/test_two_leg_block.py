@@ -39,8 +39,8 @@ def test_fast_subsystem_eigenvalues_agree_with_the_hurwitz_verdict_on_every_orth
     for pattern in scene.sign_patterns():
         lin = scene.linearization(signs=pattern)
         hurwitz = scene.stability(pattern).hurwitz
-        symbols = sorted(lin.matrix.free_symbols | set().union(*(h.free_symbols for h in hurwitz)), key=str)
-        matrix = sp.lambdify(symbols, lin.matrix, "numpy")
+        symbols = sorted(lin.jacobian.free_symbols | set().union(*(h.free_symbols for h in hurwitz)), key=str)
+        matrix = sp.lambdify(symbols, lin.jacobian, "numpy")
         conditions = sp.lambdify(symbols, hurwitz, "numpy")
         for _ in range(80):
             values = [-rng.uniform(0.1, 5) if str(s)[:3] in ("Phi", "Psi") else rng.uniform(0.1, 3) for s in symbols]

@@ -194,11 +194,11 @@ PATTERNS = [
 def test_matrix_is_4_5(name, signs):
     lin = cs.scene(name).linearization(signs)
     k = lin.A.rows
-    assert lin.matrix.shape == (2 * k, 2 * k)
-    assert lin.matrix[:k, :k] == sp.diag(*lin.Psi) * lin.A
-    assert lin.matrix[:k, k:] == sp.diag(*lin.Phi)
-    assert lin.matrix[k:, :k] == lin.A
-    assert lin.matrix[k:, k:] == sp.zeros(k)
+    assert lin.jacobian.shape == (2 * k, 2 * k)
+    assert lin.jacobian[:k, :k] == sp.diag(*lin.Psi) * lin.A
+    assert lin.jacobian[:k, k:] == sp.diag(*lin.Phi)
+    assert lin.jacobian[k:, :k] == lin.A
+    assert lin.jacobian[k:, k:] == sp.zeros(k)
 
 
 @pytest.mark.parametrize(("name", "signs"), PATTERNS)
@@ -207,7 +207,7 @@ def test_charpoly_of_matrix_is_charpoly(name, signs):
     p = lin.charpoly
     assert p.gens == (lam,)
     assert p.degree() == 2 * lin.A.rows
-    assert normalize(p.as_expr() - block_charpoly(lin.matrix)) == 0
+    assert normalize(p.as_expr() - block_charpoly(lin.jacobian)) == 0
 
 
 @pytest.mark.parametrize(("name", "signs"), PATTERNS)
@@ -242,7 +242,7 @@ def test_brake_charpoly_numeric_eigenvalues():
     values = {sp.Symbol(n, positive=True): v for n, v in [("m", 2), ("mu", 0.3), ("alpha", 1.1)]}
     values.update(zip(lin.Phi, (-1.5, -0.7)))
     values.update(zip(lin.Psi, (-0.2, -0.9)))
-    M = np.array(lin.matrix.subs(values).evalf().tolist(), dtype=float)
+    M = np.array(lin.jacobian.subs(values).evalf().tolist(), dtype=float)
     roots = np.roots([float(c.subs(values)) for c in lin.charpoly.all_coeffs()])
     assert np.allclose(np.sort_complex(roots), np.sort_complex(np.linalg.eigvals(M)), atol=1e-9)
 
@@ -306,4 +306,4 @@ def test_user_scene_with_kelvin_voigt_contacts():
     k1, d1 = sp.symbols("k_1 d_1", positive=True)
     lin = user_scene(A, [cs.KelvinVoigt(k1, d1), cs.KelvinVoigt(3, 2)]).linearization()
     assert lin.Phi == (-k1, -3) and lin.Psi == (-d1, -2)
-    assert lin.matrix == block_matrix(A, (-k1, -3), (-d1, -2))
+    assert lin.jacobian == block_matrix(A, (-k1, -3), (-d1, -2))

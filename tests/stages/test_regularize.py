@@ -217,3 +217,20 @@ def test_painleve_klein_rod_reduced_system():
             lambda u: {x1: X1 - mu1 * sp.Abs(Y1 - u[0] * sp.sin(phi)) - u[0] * sp.cos(phi)},
             samples=3,
         )
+
+
+@pytest.mark.parametrize("name", ["sliding-point", "brake", "painleve-klein-guides"])
+def test_regularized_is_derived_from_the_scene_not_from_the_fast_subsystem(name, monkeypatch):
+    """(1.9) comes first: its fast variables and laws are its own, and at eps = 0 it gives (2.1)."""
+    scene = cs.scene(name)
+    reg = Regularized(scene)  # a fresh stage, not the scene's cached one
+
+    def tripwire():
+        raise AssertionError("Regularized asked the scene for its fast subsystem")
+
+    monkeypatch.setattr(scene, "fast_subsystem", tripwire)
+    y, Y = reg.y, reg.Y
+    monkeypatch.undo()
+    fast = scene.fast_subsystem()
+    assert y == fast.state
+    assert numeric_difference(Y.subs(reg.eps, 0), fast.rhs) < 1e-9

@@ -18,7 +18,7 @@ from sympy.physics.mechanics import dynamicsymbols
 
 import contactsym as cs
 from contactsym.algebra.basic import SignSymbol
-from contactsym.algebra.hurwitz import hurwitz_minors
+from contactsym.algebra.hurwitz import Hurwitz, hurwitz_minors
 from contactsym.errors import SingularJacobianError
 from contactsym.stages.stability import Stability
 
@@ -303,7 +303,7 @@ def test_k2_p3_nonpositive_means_unstable_for_every_law():
     """The reason behind the test above, checked exactly on the characteristic polynomial."""
     A = sp.Matrix([[0, 1], [-1, -1]])
     stability = user_scene(A).stability()
-    p3 = stability.poly.coefficients[1]
+    p3 = stability.routh_hurwitz.coefficients[1]
     Psi_1, Psi_2 = stability.linearization.Psi
     assert sp.expand(p3 - Psi_2) == 0  # -(Psi_1 * 0 + Psi_2 * (-1)) = Psi_2 < 0
     assert p3.is_negative
@@ -615,3 +615,14 @@ def test_guides_classification_per_sign_pattern(signs, parameters, seed):
         P, S = sampled_laws(2, seed)
         top, _, tol = spectra(A, P, S)
         assert (top < tol).all() if stable else (top > -tol).all()
+
+
+def test_the_hurwitz_conditions_cite_the_equation_of_their_stage():
+    """Hurwitz is algebra: the stage owns the number ((3.2) for one contact, (4.7) for more)."""
+    one = cs.scene("sliding-point").stability().routh_hurwitz.formulas()
+    two = cs.scene("painleve-klein-guides").stability().routh_hurwitz.formulas()
+    assert one and {f.cite() for f in one} == {"(3.2)"}
+    assert two and all(f.paper[0] == "4.7" for f in two)
+    a, b = sp.symbols("a b")
+    plain = Hurwitz(sp.Poly(cs.lam**2 + a * cs.lam + b, cs.lam)).formulas()
+    assert [f.rhs for f in plain] == [a, b] and not any(f.paper for f in plain)  # no stage, no number

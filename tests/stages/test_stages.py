@@ -15,7 +15,7 @@ from contactsym.errors import SceneError
 from contactsym.printing.latex_output import formulas
 from contactsym.stages.equilibria import Equilibria
 from contactsym.stages.linear import Linearization
-from contactsym.stages.stability import Stability
+from contactsym.stages.stability import Stability, stability_of
 
 #: What a FastSubsystem derives from its scene and then carries.
 CARRIED = (
@@ -52,6 +52,7 @@ def detached_fast(scene):
     for name in CARRIED:
         getattr(fast, name)
     alone = copy.copy(fast)  # the cached values come along in __dict__
+    vars(alone).pop("_later_stages", None)  # but not the stages built from the original
     object.__setattr__(alone, "scene", Tripwire())
     return alone
 
@@ -97,11 +98,14 @@ def test_a_pattern_of_the_scene_is_a_stage_of_its_own():
 
 
 def test_the_scene_shares_its_stages_with_equilibria():
-    """The scene's Equilibria asks the scene's cache for each pattern's Stability, so nothing is derived twice."""
+    """Equilibria is built from the fast subsystem alone, and takes each pattern's Stability from the
+    fast subsystem's own stages, which the scene shares: nothing is derived twice."""
     rod = cs.scene("painleve-rod")
     eq = rod.equilibria()
+    assert set(vars(eq)) <= {"fast", "signs", "patterns", "branches", "lift_offs"}  # no callback from the scene
     (pattern,) = rod.sign_patterns()
-    assert eq.stability_of(pattern) is rod.stability(pattern)
+    assert eq._stability(pattern) is rod.stability(pattern) is stability_of(rod.fast_subsystem(), pattern)
+    assert rod.stability(pattern).linearization is rod.linearization(pattern)
     assert sp.And(*[sp.Gt(h, 0) for h in rod.stability(pattern).hurwitz]) == eq.stable(eq.branches[0])
 
 

@@ -262,7 +262,7 @@ def read_scene(
     >>> read_scene(\'[scene]\\ncoordinates = ["x"]\\n[[contacts]]\\ngap = "x"\\nreaction = "N"\\nlaww = "generic"\\n\', "a.toml")
     Traceback (most recent call last):
     ...
-    contactsym.mechanism.files.toml_source.SceneFileError: a.toml:6: unknown key 'laww' in [contacts.0]; did you mean 'law'? allowed: gap, reaction, unilateral, law, friction.
+    contactsym.errors.SceneFileError: a.toml:6: unknown key 'laww' in [contacts.0]; did you mean 'law'? allowed: gap, reaction, unilateral, law, friction.
     """
     try:
         return build_scene(read_spec(text, source, default_name, limits=limits))

@@ -11,8 +11,8 @@ import difflib
 import re
 import sys
 
-from ...errors import SceneError
-from ...parse import _short
+from ...errors import SceneFileError
+from ...validate import cut, shorten
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -24,13 +24,9 @@ __all__ = ["SceneFileError", "TomlSource", "shown"]
 _KEY = re.compile(r"""\s*(?:"([^"]*)"|'([^']*)'|([A-Za-z0-9_\-]+))\s*=""")
 
 
-class SceneFileError(SceneError):
-    """A scene file that cannot be read: bad TOML, an unknown key, a missing table or a bad formula."""
-
-
 def shown(value) -> str:
-    """A value as a message shows it: its repr, cut to 40 characters."""
-    return _short(repr(value))
+    """A value as a message shows it: its repr, cut as every message cuts it (:func:`contactsym.validate.shorten`)."""
+    return shorten(value)
 
 
 class TomlSource:
@@ -47,7 +43,7 @@ class TomlSource:
     >>> doc.fail("contacts.0", "gapp", "unknown key")
     Traceback (most recent call last):
     ...
-    contactsym.mechanism.files.toml_source.SceneFileError: my.toml:3: unknown key.
+    contactsym.errors.SceneFileError: my.toml:3: unknown key.
     """
 
     def __init__(self, text: str, source: str):
@@ -122,7 +118,7 @@ class TomlSource:
             if key not in allowed:
                 close = difflib.get_close_matches(key, list(allowed), n=1)
                 hint = f"did you mean '{close[0]}'? " if close else ""
-                what = f"key '{_short(key)}' in [{where}]" if where else f"table [{_short(key)}]"
+                what = f"key '{cut(key)}' in [{where}]" if where else f"table [{cut(key)}]"
                 self.fail(where, key, f"unknown {what}; {hint}allowed: {', '.join(allowed)}")
         for key in required:
             if key not in table:
