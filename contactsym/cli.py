@@ -3,14 +3,16 @@
 SCENE is a built-in scene's name or the path of a scene file (``my.toml``, see
 :mod:`contactsym.mechanism.files.reader`).
 
-``contactsym [show] [SCENE]``            the derivation chain of a scene, as text
-``contactsym list``                      the built-in scenes
-``contactsym conditions SCENE --format text|latex|json [--signs +1,-1]``
-``contactsym report [SCENE ...] --out DIR [--no-pdf] [--force]``
-                                         a LaTeX/PDF report per scene, figures and conditions.json
-``contactsym bench [--quick] [--out DIR] [--json FILE]`` the benchmarks (from a source checkout)
-``contactsym atlas SCENE QUANTITY --grid NAME=START:STOP:COUNT [--scheduler ADDRESS] [--out FILE.nc]``
-                                         a parameter sweep (contactsym[atlas]; see contactsym.atlas)
+The commands::
+
+    contactsym [show] [SCENE]            the derivation chain of a scene, as text
+    contactsym list                      the built-in scenes
+    contactsym conditions SCENE --format text|latex|json [--signs +1,-1]
+    contactsym report [SCENE ...] --out DIR [--no-pdf] [--force]
+                                             a LaTeX/PDF report per scene, figures and conditions.json
+    contactsym bench [--quick] [--out DIR] [--json FILE] the benchmarks (from a source checkout)
+    contactsym atlas SCENE QUANTITY --grid NAME=START:STOP:COUNT [--scheduler ADDRESS] [--out FILE.nc]
+                                             a parameter sweep (contactsym[atlas]; see contactsym.atlas)
 
 Output directories are written all or nothing (:mod:`contactsym.atomic`): a report or
 benchmark directory appears whole or not at all, and one that contactsym did not write

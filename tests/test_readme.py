@@ -1,8 +1,9 @@
-"""The README is the front door: its quick start and its examples must stay true, and so must
-every result it states (verdicts in the examples' comments, regions and numbers in its prose).
+"""The README is the front door and the guides (docs/guides/) hold the rest: their quick start and
+examples must stay true, and so must every result they state (verdicts in the examples'
+comments, regions and numbers in their prose).
 
-Each check reads the stated result out of README.md and compares it with what the code gives,
-so it fails when either drifts."""
+Each check reads the stated result out of README.md or a guide and compares it with what the
+code gives, so it fails when either drifts. Every Python block of the README and the guides runs."""
 
 import math
 import re
@@ -18,10 +19,13 @@ from contactsym.scenes import scene_names
 
 ROOT = Path(__file__).resolve().parents[1]
 README = (ROOT / "README.md").read_text()
+GUIDES = sorted((ROOT / "docs" / "guides").glob("*.md"))
+#: The README and the guides, the text whose statements the tests check.
+TEXT = "\n".join([README, *(path.read_text() for path in GUIDES)])
 
 
-def fenced_blocks(language: str = "") -> list[str]:
-    return re.findall(rf"```{language}\n(.*?)```", README, flags=re.S)
+def fenced_blocks(language: str = "", text: str = TEXT) -> list[str]:
+    return re.findall(rf"```{language}\n(.*?)```", text, flags=re.S)
 
 
 def quick_start_commands() -> list[str]:
@@ -30,10 +34,10 @@ def quick_start_commands() -> list[str]:
     return [line for line in block.splitlines() if line.strip()]
 
 
-def stated(pattern: str, text: str = README) -> re.Match:
-    """The README's statement matching ``pattern`` (a space matches any run of white space)."""
+def stated(pattern: str, text: str = TEXT) -> re.Match:
+    """The statement of the README or a guide matching ``pattern`` (a space matches any run of white space)."""
     match = re.search(pattern.replace(" ", r"\s+"), text, flags=re.M)
-    assert match, f"README.md no longer states {pattern!r}: update this test with it"
+    assert match, f"README.md and docs/guides/ no longer state {pattern!r}: update this test with it"
     return match
 
 
@@ -55,7 +59,7 @@ def run(block: str) -> dict:
 def example(containing: str) -> tuple[str, dict]:
     """The Python block that contains ``containing`` and the namespace it leaves."""
     found = [block for block in fenced_blocks("python") if containing in block]
-    assert len(found) == 1, f"README.md has {len(found)} Python blocks containing {containing!r}"
+    assert len(found) == 1, f"README.md and the guides have {len(found)} Python blocks containing {containing!r}"
     return found[0], run(found[0])
 
 
@@ -163,7 +167,7 @@ def test_double_pendulum_jacobian_is_the_stated_formula_of_the_stated_size():
 
 def test_leaning_rod_file_and_its_stated_region(capsys):
     (toml,) = fenced_blocks("toml")
-    stated(r"\(it is also\n?\[examples/leaning-rod.toml\]\(examples/leaning-rod.toml\)\)")
+    stated(r"\(it is also\n?`examples/leaning-rod.toml`\)")
     path = ROOT / "examples" / "leaning-rod.toml"
     assert toml == path.read_text()
     region = stated(r"stable for every contact law where\n?([^,]*), the classical Painlevé bound").group(1)
@@ -176,10 +180,13 @@ def test_leaning_rod_file_and_its_stated_region(capsys):
 
 def test_notebook_table_lists_every_notebook_and_links_resolve():
     # "the tests execute all of them": the table is the whole list
-    listed = re.findall(r"^\| \[\w+\]\(notebooks/(\w+\.ipynb)\)", README, flags=re.M)
+    guide = (ROOT / "docs" / "guides" / "notebooks.md").read_text()
+    listed = re.findall(r"^\| \[\w+\]\(\.\./notebooks/(\w+\.ipynb)\)", guide, flags=re.M)
     assert sorted(listed) == sorted(p.name for p in (ROOT / "notebooks").glob("*.ipynb"))
-    links = re.findall(r"\]\(((?:docs|examples|notebooks|benchmarks)/[^)#]+)\)", README)
-    assert links and all((ROOT / link).is_file() for link in links)
+    for path in [ROOT / "README.md", *GUIDES]:
+        links = re.findall(r"\]\(([^)#:]+\.(?:md|ipynb|toml|png))\)", path.read_text())
+        missing = [link for link in links if not (path.parent / link).is_file()]
+        assert not missing, f"{path.name} links to missing files: {missing}"
 
 
 def benchmark_rows() -> dict[str, list[str]]:

@@ -1,4 +1,6 @@
-"""``contactsym atlas SCENE QUANTITY --grid NAME=START:STOP:COUNT ... [--scheduler ADDRESS] [--out FILE]``.
+"""The atlas command: ``contactsym atlas SCENE QUANTITY --grid NAME=START:STOP:COUNT``, one ``--grid`` per axis.
+
+Options: ``--scheduler ADDRESS``, ``--store DIR``, ``--out FILE``.
 
 Numbers on the command line are read with ``float``; nothing is evaluated. The output
 file (NetCDF, ``.nc``) is written all-or-nothing: to a temporary file beside it, then

@@ -1,7 +1,7 @@
 """The inequality engine bound to a scene's count presentation, and the sign cases counts enumerate.
 
 The counts state their regions in the scene's ``count_presentation`` when it has one (the
-guides use mu_j = |v_j|/kappa, as the paper does for (5.8)-(5.10)), else in its
+guides use mu_j = ``|v_j|``/kappa, as the paper does for (5.8)-(5.10)), else in its
 presentation. :func:`count_facts` gives the :class:`~contactsym.inequalities.Facts` that
 try every condition in the scene's canonical form and in that presentation.
 """

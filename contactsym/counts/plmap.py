@@ -7,7 +7,7 @@ The equilibria of a scene are the solutions of ``G(z) + b = 0``, b carrying the 
 
 Facts used (for nonzero orthant determinants D_s = det[c_1^{s_1} ... c_k^{s_k}]):
 
-- G is proper (|G(z)| >= c |z| on every orthant), so its degree is defined, and for a
+- G is proper (``|G(z)|`` >= c ``|z|`` on every orthant), so its degree is defined, and for a
   b off the images of the facets (a regular value) ``deg = sum of sign D_s`` over the
   orthants s that hold a solution; the count is then congruent to deg mod 2.
 - Coherent orientation (all D_s of one sign) holds iff G is a homeomorphism, i.e. one

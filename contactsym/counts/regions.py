@@ -33,7 +33,7 @@ dropped; conditions implied by the others are removed. Each region is then writt
 scene's presentation variables by the inequality engine (:mod:`contactsym.inequalities`,
 shared with :mod:`contactsym.stages.regions`), with ``x < c, -x < c`` merged into ``|x| < c`` and
 ``x > c or -x > c`` into ``|x| > c``. A scene may carry ``count_presentation``, a
-presentation used for the counts only (the guides use mu_j = |v_j|/kappa, as the paper does
+presentation used for the counts only (the guides use mu_j = ``|v_j|``/kappa, as the paper does
 for (5.8)-(5.10)); see :mod:`contactsym.counts.conditions`. Boundaries (a slope or a
 determinant equal to 0, two corners meeting where the scene leaves that open) belong to no
 region.

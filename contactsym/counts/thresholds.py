@@ -1,7 +1,7 @@
 """Where the unique count region stops lying inside the region stable for every law (5.9).
 
 :func:`square_threshold` finds the parameter value: a vertex of the unique region (the
-intersections of the lines of its |.| pieces) meets the boundary of the stable region; for
+intersections of the lines of its ``|.|`` pieces) meets the boundary of the stable region; for
 the guides, kappa = sqrt(2)/2, that is phi = arctan(sqrt(2)). :func:`threshold_angle`
 returns that angle.
 """

@@ -5,7 +5,7 @@ With c_j = -Phi_j > 0 and d_j = -Psi_j > 0 the characteristic polynomial (4.6) i
     p(lam) = sum_S lam^(2k - 2|S|) det(A_S) prod_{j in S} (lam d_j + c_j),
 
 so its coefficient p_s is multilinear in (c, d): the monomial d^T c^(S \\ T) (T a subset
-of S) has the coefficient det(A_S) in p_(2k - 2|S| + |T|). The Hurwitz minors of
+of S) has the coefficient det(A_S) in p_(2k - 2|S| + ``|T|``). The Hurwitz minors of
 :mod:`contactsym.algebra.hurwitz` (generic, fraction-free) turn these into the minors as
 polynomials in (c, d) with rational coefficients. Everything here is exact (``QQ``);
 :mod:`contactsym.robustness.classify` reads certificates and witness laws off these polynomials.

@@ -2,7 +2,7 @@
 
 The pads' inward normals n1, n2 make n1 . n2 = -cos(alpha) (pads at angle alpha to
 each other). The disc turns clockwise, so at pad j its surface slides along z x n_j
-and Coulomb friction mu |N_j| opposes that. The gaps q_j = n_j . r are minus the pad
+and Coulomb friction mu ``|N_j|`` opposes that. The gaps q_j = n_j . r are minus the pad
 deformations; external forces press the disc on the pads, so the contacts are
 unilateral with N_j > 0.
 """

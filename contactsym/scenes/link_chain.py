@@ -2,7 +2,7 @@
 
 Link i has length l_i and carries a point mass m_i at its far end; q_i is its angle from the
 downward vertical. The tip touches the floor y = -h (k = 1, bilateral); Coulomb friction
-mu |N| acts at the tip along the floor, against its sliding, taken in +x. For n = 2 this is the
+mu ``|N|`` acts at the tip along the floor, against its sliding, taken in +x. For n = 2 this is the
 two-link arm of :mod:`contactsym.scenes.double_pendulum_tip`, the classical robotic setting of
 Painlevé's paradox.
 """

@@ -3,7 +3,7 @@
 The rod (mass m, length 2 l, moment of inertia m l^2/3 about its centre) makes the
 angle theta with the floor y = 0, 0 < theta < pi/2; its lower end is at the centre minus
 l (cos theta, sin theta) and slides to the left, away from under the centre, so Coulomb
-friction mu |N| pushes it to the right. Gravity g acts at the centre. The gap is the
+friction mu ``|N|`` pushes it to the right. Gravity g acts at the centre. The gap is the
 height of the end.
 
 ``build(unilateral=True)`` is the one-sided rod of the literature (the floor only

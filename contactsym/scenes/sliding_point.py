@@ -1,7 +1,7 @@
 """§1, (1.10)-(1.12): a point mass sliding on a rough line, pressed by a plane force.
 
 The line is y = 0; the point slides to the right (x' > 0), so Coulomb friction
-mu |N| acts along -x. The contact deforms with the Kelvin–Voigt law (1.11),
+mu ``|N|`` acts along -x. The contact deforms with the Kelvin–Voigt law (1.11),
 N = -2 b c y' - c^2 y with eps = 1/c.
 """
 

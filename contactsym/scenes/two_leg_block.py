@@ -2,7 +2,7 @@
 
 The block (mass m, moment of inertia J about its centre) stands on legs at the body
 points (-a, -b) and (a, -b) and slides to the right on the floor y = 0, so Coulomb
-friction mu_j |N_j| acts along -x at leg j. The gaps are the heights of the leg tips;
+friction mu_j ``|N_j|`` acts along -x at leg j. The gaps are the heights of the leg tips;
 rigid contact holds the block level (theta = 0) at height b. Loads: a vertical force Y
 at the centre (weight included) and a moment M.
 

@@ -2,7 +2,7 @@
 
 For any compliance law the Jacobian of (4.1) at (u*, 0) is ``[[Psi A, Phi], [A, 0]]``
 (terms with dPhi/du multiply v = 0, terms with dPsi/du multiply f = 0). Its
-characteristic polynomial needs only the principal minors of A:
+characteristic polynomial needs only the principal minors of A::
 
     det(lam^2 I - (lam Psi + Phi) A)
         = sum_S (-1)^|S| lam^(2(k - |S|)) det(A_S) prod_{j in S} (lam Psi_j + Phi_j).

@@ -21,9 +21,9 @@ from that spec alone. The tables:
     loader derives which of sin, cos, tan are positive there.
 ``[functions]``
     Loads that depend on the state: ``X = ["x", "x'"]`` is X(x, x').
-The motion, either ``[accelerations]`` (``x = "formula"`` per coordinate, x'' = formula)
-or a Lagrangian from any of:
-    ``[energy]`` (``kinetic``, ``potential``); ``[points]`` (``P = ["x", "y - r"]``, its
+The motion
+    Either ``[accelerations]`` (``x = "formula"`` per coordinate, x'' = formula), or a
+    Lagrangian from any of ``[energy]`` (``kinetic``, ``potential``); ``[points]`` (``P = ["x", "y - r"]``, its
     position in the plane, or ``P = {position = [...], body = "C", angle = "theta"}`` for
     the material point at P of a body turning with ``theta`` about point C);
     ``[[masses]]`` (``point``, ``mass``); ``[[bodies]]`` (``point``, ``angle``, ``mass``,
