@@ -103,7 +103,21 @@ _TOKEN = re.compile(
 
 
 class ParseError(ContactsymError):
-    """A formula that is not in the grammar of :mod:`contactsym.parse`, or names an unknown symbol."""
+    """A formula that is not in the grammar of :mod:`contactsym.parse`, or names an unknown symbol.
+
+    Examples
+    --------
+    The message points at the line and column of the formula:
+
+    >>> import sympy as sp
+    >>> from contactsym.parse import ParseError, parse_expression
+    >>> x = sp.Symbol("x")
+    >>> try:
+    ...     parse_expression("x + y", {"x": x})
+    ... except ParseError as error:
+    ...     print(str(error).split(";")[0])
+    <formula>:1:5: unknown name 'y'
+    """
 
 
 @dataclass(frozen=True)
