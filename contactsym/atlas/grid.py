@@ -20,7 +20,17 @@ _BYTES_PER_POINT = 64
 
 
 class AtlasError(ContactsymError):
-    """A sweep that cannot start (bad grid, unknown quantity, unreachable scheduler, foreign store)."""
+    """A sweep that cannot start (bad grid, unknown quantity, unreachable scheduler, foreign store).
+
+    Examples
+    --------
+    >>> from contactsym import atlas
+    >>> try:
+    ...     atlas.as_quantity("no-such-quantity")
+    ... except atlas.AtlasError as error:
+    ...     print(str(error).split(";")[0])
+    unknown quantity 'no-such-quantity'
+    """
 
 
 @dataclass(frozen=True, eq=False)
