@@ -25,11 +25,31 @@ _KEY = re.compile(r"""\s*(?:"([^"]*)"|'([^']*)'|([A-Za-z0-9_\-]+))\s*=""")
 
 
 class SceneFileError(SceneError):
-    """A scene file that cannot be read: bad TOML, an unknown key, a missing table or a bad formula."""
+    """A scene file that cannot be read: bad TOML, an unknown key, a missing table or a bad formula.
+
+    Examples
+    --------
+    The message names the file and line, and what to write instead:
+
+    >>> from contactsym.mechanism.files import read_scene
+    >>> try:
+    ...     read_scene('[scene]\\ncoordinates = ["y"]\\n[[contacts]]\\ngapp = "y"\\n', "a.toml")
+    ... except SceneFileError as error:
+    ...     print(str(error).split(";")[0])
+    a.toml:4: unknown key 'gapp' in [contacts.0]
+    """
 
 
 def shown(value) -> str:
-    """A value as a message shows it: its repr, cut to 40 characters."""
+    """A value as a message shows it: its repr, cut to 40 characters.
+
+    Examples
+    --------
+    >>> shown("y")
+    "'y'"
+    >>> len(shown("x" * 100)), shown("x" * 100).endswith("...")
+    (40, True)
+    """
     return _short(repr(value))
 
 
