@@ -123,6 +123,15 @@ class TrigFraction:
     Attributes
     ----------
     numer, denom : PolyElement
+
+    Examples
+    --------
+    >>> x, m = sp.symbols("x m", positive=True)
+    >>> fr = to_fraction(sp.cos(x)**2/(m*sp.sin(x)**2 - m))
+    >>> type(fr).__name__, fr.numer, fr.denom
+    ('Fraction', -1, m)
+    >>> fr.as_expr()
+    -1/m
     """
 
     def __init__(self, numer, denom, pairs, signs):
@@ -345,7 +354,16 @@ def _integral(numer, denom):
 
 
 def canonical(expr: sp.Expr) -> sp.Expr:
-    """``expr`` in the canonical rational form (see the module docstring)."""
+    """``expr`` in the canonical rational form (see the module docstring).
+
+    Examples
+    --------
+    >>> x, m = sp.symbols("x m", positive=True)
+    >>> canonical(1/(1 - sp.cos(x)**2))
+    sin(x)**(-2)
+    >>> canonical(sp.sin(x)**2/m + sp.cos(x)**2/m)
+    1/m
+    """
     expr = sympy_only(expr, "the expression")
     if expr.is_Number or expr.is_Symbol:
         return expr

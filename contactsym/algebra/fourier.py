@@ -102,7 +102,20 @@ _FOURIER_LIMIT = 3000
 
 
 def best_form(poly, pairs) -> sp.Expr:
-    """The polynomial in sin q_i, cos q_i, or its Fourier sum when that has fewer terms."""
+    """The polynomial in sin q_i, cos q_i, or its Fourier sum when that has fewer terms.
+
+    Examples
+    --------
+    ``cos^2 x - sin^2 x`` reduces to ``1 - 2 sin^2 x``, shown as the one-term Fourier sum:
+
+    >>> import sympy as sp
+    >>> from contactsym.algebra import TrigField
+    >>> x = sp.Symbol("x")
+    >>> K = TrigField([sp.cos(x)])
+    >>> poly = K.element(sp.cos(x)**2 - sp.sin(x)**2).numer
+    >>> poly.as_expr(), best_form(poly, K.pairs)
+    (1 - 2*sin(x)**2, cos(2*x))
+    """
     if not pairs or not any(poly.degree(c) > 0 or poly.degree(s) > 0 for c, s in pairs):
         return poly.as_expr()
     if len(poly) > _FOURIER_LIMIT:  # a form nobody reads whole: not worth the conversion

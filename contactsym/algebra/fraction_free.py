@@ -91,7 +91,18 @@ def solve_fraction_free(
 
 def adjugate_and_det_in_field(field, M: sp.Matrix):
     """adj M and det M as elements of ``field``; in the polynomial ring of M's own entries (no
-    gcds, computed once per matrix) when they are polynomials, as a mass matrix usually is."""
+    gcds, computed once per matrix) when they are polynomials, as a mass matrix usually is.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from contactsym.algebra import TrigField
+    >>> a, b, c, d = sp.symbols("a b c d")
+    >>> K = TrigField([a, b, c, d])
+    >>> adj, det = adjugate_and_det_in_field(K, sp.Matrix([[a, b], [c, d]]))
+    >>> [[K.present(x) for x in row] for row in adj], K.present(det)
+    ([[d, -b], [-c, a]], a*d - b*c)
+    """
     polynomial = polynomial_adjugate(sp.ImmutableMatrix(M))
     if polynomial is not None:
         adj, det = polynomial

@@ -86,6 +86,16 @@ def interval_sign(expr: sp.Expr, *, max_bits: int = 4096) -> int | None:
 
     ``expr`` must be closed and exact (integers, rationals, pi, E, +, *, powers,
     Abs, sin, cos, tan, exp, log); anything else gives None.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> interval_sign(sp.E - sp.Rational(271, 100)), interval_sign(sp.pi - sp.Rational(355, 113))
+    (1, -1)
+    >>> interval_sign(sp.sin(sp.pi)) is None  # exactly 0: no enclosure excludes it
+    True
+    >>> interval_sign(sp.Symbol("y")) is None  # not closed
+    True
     """
     saved, bits = iv.prec, 64
     try:

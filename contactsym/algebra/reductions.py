@@ -18,14 +18,31 @@ __all__ = ["SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "known_s
 
 
 class SignSymbol(sp.Symbol):
-    """A symbol for sign(sigma) on an open sign pattern: its value is +1 or -1."""
+    """A symbol for sign(sigma) on an open sign pattern: its value is +1 or -1.
+
+    Examples
+    --------
+    >>> s = SignSymbol("s")
+    >>> s.is_integer, s.is_nonzero
+    (True, True)
+    >>> reduce_signs(s**3)
+    s
+    """
 
     def __new__(cls, name, **assumptions):
         return super().__new__(cls, name, integer=True, nonzero=True)
 
 
 def sign_symbols(count: int) -> tuple[SignSymbol, ...]:
-    """s (one switching function) or s_1, ..., s_count."""
+    """s (one switching function) or s_1, ..., s_count.
+
+    Examples
+    --------
+    >>> sign_symbols(1), sign_symbols(3)
+    ((s,), (s_1, s_2, s_3))
+    >>> all(isinstance(s, SignSymbol) for s in sign_symbols(3))
+    True
+    """
     if count == 1:
         return (SignSymbol("s"),)
     return tuple(SignSymbol(f"s_{i}") for i in range(1, count + 1))

@@ -25,6 +25,22 @@ class Kernel:
     point and one column per name in ``outputs``. A vectorised kernel evaluates a whole
     chunk at once; where that fails it is evaluated point by point, so that a failure costs
     only its own point: NaN, with the error as the point's reason.
+
+    Examples
+    --------
+    A quantity builds its kernel once; the kernel then measures a chunk of points:
+
+    >>> import numpy as np
+    >>> import contactsym as cs
+    >>> from contactsym import atlas
+    >>> def ratio(values):
+    ...     return 1 / values["mu"]
+    >>> kernel = atlas.function(ratio).build(cs.scene("brake"), atlas.as_grid({"mu": [0.5, 0.0]}), {})
+    >>> isinstance(kernel, atlas.Kernel), kernel.outputs
+    (True, ('ratio',))
+    >>> values, reasons = kernel(np.array([[0.5], [0.0]]))
+    >>> float(values[0, 0]), bool(np.isnan(values[1, 0])), reasons[1]
+    (2.0, True, 'ZeroDivisionError: float division by zero')
     """
 
     outputs: tuple = ()

@@ -31,6 +31,17 @@ class AtlasData:
     ``values`` has shape (len(y), len(x)) (a 2-D atlas) or (len(x),) (a 1-D one);
     ``boundaries`` maps a region's name to (its LaTeX, the fields whose zero sets bound it),
     sampled on ``fine`` (the (X, Y) meshes, or the x samples).
+
+    Examples
+    --------
+    A 1-D atlas of the brake's verdict along mu:
+
+    >>> from contactsym import atlas
+    >>> ds = atlas.sweep("brake", "classification", {"mu": [0.5, 1.5]}, values={"alpha": 1.0, "m": 1},
+    ...                  scheduler="threads")
+    >>> data = atlas_data(ds, "region", resolution=20)
+    >>> isinstance(data, AtlasData), data.x, data.y, data.values.shape
+    (True, 'mu', None, (2,))
     """
 
     variable: str

@@ -41,7 +41,15 @@ __all__ = [
 
 @dataclass(frozen=True)
 class Quantity:
-    """A named measurement: ``build(scene, grid, values)`` does the symbolic work once."""
+    """A named measurement: ``build(scene, grid, values)`` does the symbolic work once.
+
+    Examples
+    --------
+    >>> from contactsym import atlas
+    >>> quantity = atlas.stable_fraction(laws=64)
+    >>> isinstance(quantity, atlas.Quantity), quantity.name, quantity.options["laws"]
+    (True, 'stable_fraction', 64)
+    """
 
     name: str
     builder: Callable = field(repr=False)
@@ -194,42 +202,133 @@ def _build_equilibrium_count(scene, grid, values):
 
 
 def leading_eigenvalue(*, signs=None) -> Quantity:
-    """The eigenvalue of (4.5) with the largest real part: its real part and |imaginary part|."""
+    """The eigenvalue of (4.5) with the largest real part: its real part and |imaginary part|.
+
+    Examples
+    --------
+    The brake with a damping law (all Phi_j, Psi_j < 0): a stable focus, its largest real part < 0:
+
+    >>> import numpy as np
+    >>> import contactsym as cs
+    >>> from contactsym import atlas
+    >>> law = {"alpha": 1.0, "m": 1, "Phi_1": -1, "Phi_2": -1, "Psi_1": -1, "Psi_2": -1}
+    >>> kernel = leading_eigenvalue().build(cs.scene("brake"), atlas.as_grid({"mu": [0.5, 1.5]}), law)
+    >>> kernel.outputs
+    ('leading_eigenvalue', 'frequency')
+    >>> values, reasons = kernel(np.array([[0.5], [1.5]]))
+    >>> bool((values[:, 0] < 0).all()), bool((values[:, 1] > 0).all())
+    (True, True)
+    """
     return Quantity("leading_eigenvalue", _build_leading_eigenvalue, {"signs": signs})
 
 
 def classification(*, signs=None) -> Quantity:
     """``region``: 1 stable for every law, -1 unstable for every law, 0 law-dependent, NaN undecided
     (Propositions 3-8, in floating point); ``stable``: the certified Hurwitz verdict (+1, -1, 0 on the
-    boundary) when the law's Phi_j, Psi_j are given, else NaN."""
+    boundary) when the law's Phi_j, Psi_j are given, else NaN.
+
+    Examples
+    --------
+    The brake at alpha = 1: stable for every law at mu = 0.5, law-dependent at mu = 1.5:
+
+    >>> from contactsym import atlas
+    >>> ds = atlas.sweep("brake", classification(), {"mu": [0.5, 1.5]}, values={"alpha": 1.0, "m": 1},
+    ...                  scheduler="threads")
+    >>> ds.region.values.tolist()
+    [1.0, 0.0]
+    """
     return Quantity("classification", _build_classification, {"signs": signs})
 
 
 def stable_fraction(*, laws: int = 256, magnitudes=(0.1, 10.0), seed: int = 0, signs=None) -> Quantity:
     """The fraction of ``laws`` sampled laws that are stable: Phi_j, Psi_j < 0 with magnitudes
-    log-uniform in ``magnitudes`` (the same samples at every point), certified by PointClassifier."""
+    log-uniform in ``magnitudes`` (the same samples at every point), certified by PointClassifier.
+
+    Examples
+    --------
+    Where the brake is stable for every law (mu = 0.5), every sampled law is stable:
+
+    >>> from contactsym import atlas
+    >>> ds = atlas.sweep("brake", stable_fraction(laws=16), {"mu": [0.5, 1.5]}, values={"alpha": 1.0, "m": 1},
+    ...                  scheduler="threads")
+    >>> fraction = ds.stable_fraction.values
+    >>> float(fraction[0]), bool(0 < fraction[1] < 1)
+    (1.0, True)
+    """
     options = {"laws": laws, "magnitudes": tuple(magnitudes), "seed": seed, "signs": signs}
     return Quantity("stable_fraction", _build_stable_fraction, options)
 
 
 def equilibrium_count() -> Quantity:
-    """The number of consistent equilibria of the fast subsystem (4.2), certified by PointClassifier."""
+    """The number of consistent equilibria of the fast subsystem (4.2), certified by PointClassifier.
+
+    Examples
+    --------
+    >>> from contactsym import atlas
+    >>> ds = atlas.sweep("brake", equilibrium_count(), {"mu": [0.5, 1.5]},
+    ...                  values={"alpha": 1.0, "m": 1, "F_x": 1, "F_y": -1}, scheduler="threads")
+    >>> ds.equilibrium_count.values.tolist()
+    [1.0, 1.0]
+    """
     return Quantity("equilibrium_count", _build_equilibrium_count)
 
 
 def cycle(**options) -> Quantity:
     """Amplitude (half the peak-to-peak of the reactions, largest over the contacts) and angular
-    frequency (stretched time) of the stable cycle from :func:`contactsym.numerics.fast_cycle`."""
+    frequency (stretched time) of the stable cycle from :func:`contactsym.numerics.fast_cycle`.
+
+    Examples
+    --------
+    The options go on to :func:`contactsym.numerics.fast_cycle` (a sweep of cycles integrates at every
+    point: see :func:`contactsym.atlas.sweep`):
+
+    >>> quantity = cycle(samples=512)
+    >>> quantity.name, quantity.options
+    ('cycle', {'samples': 512})
+    >>> as_quantity("cycle").name
+    'cycle'
+    """
     return Quantity("cycle", build_cycle, options)
 
 
 def catastrophe(eps, span, initial: Mapping, **options) -> Quantity:
-    """Time to the impact-type catastrophe in :func:`contactsym.numerics.simulate_full` (inf: none in span)."""
+    """Time to the impact-type catastrophe in :func:`contactsym.numerics.simulate_full` (inf: none in span).
+
+    Examples
+    --------
+    The catastrophe needs a start, so it has no default and is not a built-in name alone:
+
+    >>> quantity = catastrophe(0.01, (0, 5), {"x": 0.0})
+    >>> quantity.name, quantity.options["span"]
+    ('catastrophe', (0, 5))
+    >>> try:
+    ...     as_quantity("catastrophe")
+    ... except AtlasError as error:
+    ...     print(str(error).split(":")[0])
+    the catastrophe quantity needs eps, span and initial
+    """
     return Quantity("catastrophe", build_catastrophe, {"eps": eps, "span": tuple(span), "initial": initial, **options})
 
 
 def function(fn: Callable, outputs: Sequence[str] | None = None) -> Quantity:
-    """The user's own ``fn(values) -> number, sequence or mapping`` of a point's values by name."""
+    """The user's own ``fn(values) -> number, sequence or mapping`` of a point's values by name.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> from contactsym import atlas
+    >>> def friction_ratio(values):
+    ...     return values["mu"] / values["m"]
+    >>> grid = atlas.as_grid({"mu": [0.5, 1.5]})
+    >>> kernel = function(friction_ratio).build(cs.scene("brake"), grid, {"m": 2})
+    >>> kernel(grid.points(0, grid.size))[0].tolist()
+    [[0.25], [0.75]]
+    >>> try:
+    ...     function(42)
+    ... except AtlasError as error:
+    ...     print(error)
+    42 is not callable; give a function of a mapping of values.
+    """
     if not callable(fn):
         raise AtlasError(f"{fn!r} is not callable; give a function of a mapping of values.")
     names = tuple(outputs) if outputs is not None else (getattr(fn, "__name__", "value"),)
@@ -248,7 +347,22 @@ QUANTITIES = {
 
 
 def as_quantity(quantity) -> Quantity:
-    """A :class:`Quantity` from itself, a built-in name or a function."""
+    """A :class:`Quantity` from itself, a built-in name or a function.
+
+    Examples
+    --------
+    >>> as_quantity("leading-eigenvalue")
+    Quantity(name='leading_eigenvalue', options={'signs': None})
+    >>> def twice_mu(values):
+    ...     return 2 * values["mu"]
+    >>> as_quantity(twice_mu).options["outputs"]
+    ('twice_mu',)
+    >>> try:
+    ...     as_quantity("nope")
+    ... except AtlasError as error:
+    ...     print(str(error).split(";")[0])
+    unknown quantity 'nope'
+    """
     if isinstance(quantity, Quantity):
         return quantity
     if isinstance(quantity, str):

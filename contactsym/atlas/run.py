@@ -80,7 +80,20 @@ def _run_local(kernel, grid, chunk, todo, results, scheduler, workers, progress)
 
 
 def connect(client, timeout: float = 10.0):
-    """(a ``distributed.Client``, whether we opened it) from a Client, a cluster or an address."""
+    """(a ``distributed.Client``, whether we opened it) from a Client, a cluster or an address.
+
+    Examples
+    --------
+    A ``distributed.Client`` the caller opened is used as it is, and left open (``connect(client)`` is
+    ``(client, False)``); a scheduler address opens a client that :func:`sweep` closes; anything else is
+    refused with a clear error:
+
+    >>> try:
+    ...     connect(42)
+    ... except AtlasError as error:
+    ...     print(str(error).split(":")[0])
+    client = 42
+    """
     distributed = _require("distributed")
     if isinstance(client, distributed.Client):
         return client, False

@@ -17,7 +17,18 @@ __all__ = ["count_facts", "count_presentation", "sign_choices"]
 
 
 def count_presentation(scene) -> dict:
-    """The presentation the counts use: the scene's ``count_presentation``, or its presentation."""
+    """The presentation the counts use: the scene's ``count_presentation``, or its presentation.
+
+    Examples
+    --------
+    The guides present the friction coefficients through the speeds, mu_j = |v_j|/kappa:
+
+    >>> import sympy as sp
+    >>> import contactsym as cs
+    >>> presentation = count_presentation(cs.scene("painleve-klein-guides"))
+    >>> presentation[sp.Symbol("mu_1", positive=True)]
+    Abs(v_1)/kappa
+    """
     return dict(getattr(scene, "count_presentation", None) or scene.presentation)
 
 

@@ -36,7 +36,14 @@ def _count_name(counts: tuple[int, ...]) -> str:
 
 
 def uses_corners(scene) -> bool:
-    """k = 1 with bilateral contact: the corner cases (any number of corners)."""
+    """k = 1 with bilateral contact: the corner cases (any number of corners).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> uses_corners(cs.scene("painleve-klein-rod")), uses_corners(cs.scene("painleve-rod"))
+    (True, False)
+    """
     return scene.k == 1 and not scene.contacts[0].unilateral
 
 
@@ -221,7 +228,17 @@ def _corner_case(scene, facts: Facts, u, corners, blocks, ordering: list[Conditi
 
 
 def corner_regions(scene) -> dict[str, sp.Basic]:
-    """The count regions of a k = 1 scene: each count's disjuncts over every ordering of the corners, merged."""
+    """The count regions of a k = 1 scene: each count's disjuncts over every ordering of the corners, merged.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> regions = corner_regions(cs.scene("painleve-klein-rod"))
+    >>> sorted(regions)
+    ['one or three', 'two or none', 'unique stable']
+    >>> regions["two or none"]
+    Abs(mu_-) > 2
+    """
     by_name: dict[str, list[frozenset]] = {}
     for case in corner_cases(scene):
         for name, disjuncts in case._disjuncts.items():

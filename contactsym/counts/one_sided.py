@@ -43,6 +43,13 @@ class OneSidedCase:
         Where the case holds, in the scene's symbols.
     equilibria : tuple of (str, bool)
         ('sliding' or 'lift-off', stable) for each equilibrium that exists.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> case = one_sided_cases(cs.scene("painleve-rod"))[-1]
+    >>> isinstance(case, OneSidedCase), case.name, case.equilibria
+    (True, 'indeterminate', (('sliding', False), ('lift-off', True)))
     """
 
     name: str

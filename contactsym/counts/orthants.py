@@ -136,7 +136,16 @@ def _build(scene) -> SceneMap:
 
 
 def scene_map(scene) -> SceneMap:
-    """The orthant map of a scene (cached on it)."""
+    """The orthant map of a scene (cached on it).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> rod = cs.scene("painleve-rod")
+    >>> G = scene_map(rod)
+    >>> len(G.u), G.unilateral, scene_map(rod) is G
+    (1, (True,), True)
+    """
     return scene.cached("orthant map", lambda: _build(scene))
 
 

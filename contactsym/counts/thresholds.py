@@ -39,6 +39,16 @@ class Threshold:
         The critical angle, when the parameter is a cotangent of a scene angle.
     vertex : tuple
         The vertex of the unique region that meets the boundary there.
+
+    Examples
+    --------
+    For the guides the parameter is kappa = cot(phi), so the critical value and angle agree:
+
+    >>> import sympy as sp
+    >>> import contactsym as cs
+    >>> th = square_threshold(cs.scene("painleve-klein-guides"))
+    >>> isinstance(th, Threshold), th.parameter, sp.cot(th.angle) == th.value
+    (True, kappa, True)
     """
 
     parameter: sp.Symbol

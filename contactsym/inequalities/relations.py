@@ -78,7 +78,17 @@ def as_positive_relation(rel: Relational) -> tuple[sp.Expr, type]:
 
 
 def positive_part(rel: sp.Basic) -> tuple[sp.Expr, bool] | None:
-    """(P, strict) with rel equivalent to P > 0 (strict) or P >= 0, P expanded; None for == and !=."""
+    """(P, strict) with rel equivalent to P > 0 (strict) or P >= 0, P expanded; None for == and !=.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> x, y = sp.symbols("x y")
+    >>> positive_part(x < y), positive_part(2*(x - 1) >= 1)
+    ((-x + y, True), (2*x - 3, False))
+    >>> positive_part(sp.Eq(x, 1)) is None
+    True
+    """
     if not isinstance(rel, _ORDER):
         return None
     expr, op = as_positive_relation(rel)

@@ -29,6 +29,17 @@ class Compliance:
 
     Subclasses give ``Phi`` and ``Psi`` in the fast variables and the deformation
     ``q`` in terms of ``(u, v, eps)``.
+
+    Examples
+    --------
+    Every law answers the same questions; a scene's contacts take any of them:
+
+    >>> import sympy as sp
+    >>> u, v = sp.symbols("u v")
+    >>> for law in (Generic(), KelvinVoigt(2, 3)):
+    ...     print(type(law).__name__, isinstance(law, Compliance), law.constant, law.phi_psi(u, v, 1))
+    Generic True True (Phi_1, Psi_1)
+    KelvinVoigt True True (-2, -3)
     """
 
     #: True when Phi and Psi do not depend on the state (Proposition 5 applies).

@@ -19,6 +19,21 @@ class ImplicitDeformation(sp.Function):
     No closed-form inverse is needed: its derivatives follow from implicit
     differentiation, ``dQ/du = 1/N_Q`` and ``dQ/dv = -N_V/N_Q``, evaluated at Q itself.
     Each law makes its own subclass (``law.implicit(name)``), so ``sympy.diff`` knows N.
+
+    Examples
+    --------
+    A cubic spring has no closed-form Q(u, v); its Phi carries Q_1 and differentiates through it:
+
+    >>> import sympy as sp
+    >>> q, qd = sp.symbols("q qdot", real=True)
+    >>> eps, k, d, c = sp.symbols("epsilon k d c", positive=True)
+    >>> cubic = Law(-k*q/eps**2 - c*(q/eps**2)**3 - d*qd/eps, q, qd, eps)
+    >>> Phi, Psi = cubic.phi_psi(sp.Symbol("u"), sp.Symbol("v"), 1)
+    >>> (Q,) = Phi.atoms(ImplicitDeformation)
+    >>> Q
+    Q_1(u, v)
+    >>> sp.diff(Q, sp.Symbol("u")) == 1 / Phi  # dQ/du = 1/N_Q
+    True
     """
 
     law: Law | None = None

@@ -62,6 +62,20 @@ class HopfVectors:
         The frequency of the critical pair.
     q, p : ndarray
         The critical eigenvector and the adjoint one.
+
+    Examples
+    --------
+    The normal form ``z' = i z - z |z|^2`` (supercritical: l1 < 0):
+
+    >>> import sympy as sp
+    >>> x, y = sp.symbols("x y")
+    >>> r2 = x**2 + y**2
+    >>> J, H, T = derivative_tensors(sp.Matrix([-y - x*r2, x - y*r2]), [x, y], {x: 0, y: 0})
+    >>> h = lyapunov_numeric(J, H, T)
+    >>> isinstance(h, HopfVectors), round(h.omega, 12), round(h.l1, 12)
+    (True, 1.0, -2.0)
+    >>> h.radius(-0.01) is None  # the pair not yet unstable: no small cycle
+    True
     """
 
     l1: float
@@ -172,6 +186,16 @@ def hopf_vectors_45(A: sp.Matrix, Phi, Psi, omega: sp.Expr) -> tuple[sp.Matrix, 
     For the adjoint p = (a, b), ``J^T p = -i omega p`` gives ``b = i Phi a/omega`` and
     ``(A^T conj(D) + omega^2) a = 0``. Both small systems are singular exactly on the Hopf set;
     the null vector is read off the first row that is not zero, which holds for k = 2.
+
+    Examples
+    --------
+    One contact with A = 1, Phi = -4, Psi = 0: J has the pair +-2i; q and p are its eigenvectors:
+
+    >>> import sympy as sp
+    >>> q, p = hopf_vectors_45(sp.Matrix([[1]]), [-4], [0], 2)
+    >>> J = sp.Matrix([[0, -4], [1, 0]])
+    >>> J * q - 2*sp.I*q == sp.zeros(2, 1), J.T * p + 2*sp.I*p == sp.zeros(2, 1)
+    (True, True)
     """
     k = A.rows
     Phi_, Psi_ = sp.diag(*Phi), sp.diag(*Psi)

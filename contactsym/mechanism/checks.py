@@ -18,7 +18,20 @@ __all__ = ["check_eps", "check_equations", "check_scene", "with_friction"]
 
 
 def check_eps(eps) -> sp.Expr:
-    """eps is the small positive parameter of (1.6): a positive symbol or number."""
+    """eps is the small positive parameter of (1.6): a positive symbol or number.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from contactsym.errors import SceneError
+    >>> check_eps(None), check_eps(sp.Rational(1, 100))
+    (epsilon, 1/100)
+    >>> try:
+    ...     check_eps(-1)
+    ... except SceneError as error:
+    ...     print(error)
+    eps = -1 must be > 0: it is the small time scale of the deformations (1.6).
+    """
     if eps is None:
         return sp.Symbol("epsilon", positive=True)
     why = "it is the small time scale of the deformations (1.6)"
@@ -34,7 +47,19 @@ def check_eps(eps) -> sp.Expr:
 
 
 def check_equations(equations) -> dict:
-    """The paper's numbers of a scene: ``{formula key: (tuple of numbers, note)}``."""
+    """The paper's numbers of a scene: ``{formula key: (tuple of numbers, note)}``.
+
+    Examples
+    --------
+    >>> from contactsym.errors import SceneError
+    >>> check_equations({"A": (("6.2",), "")})
+    {'A': (('6.2',), '')}
+    >>> try:
+    ...     check_equations({"A": "6.2"})
+    ... except SceneError as error:
+    ...     print(error)
+    equations['A'] must be (numbers, note), e.g. (("6.2",), ""), not '6.2'.
+    """
     equations = dict(equations or {})
     for key, value in equations.items():
         if not (isinstance(key, str) and isinstance(value, tuple) and len(value) == 2):
@@ -46,7 +71,18 @@ def check_equations(equations) -> dict:
 
 
 def with_friction(coordinates, accelerations, contacts) -> list[sp.Expr]:
-    """The accelerations (1.4) with the force of each contact's attached friction law added."""
+    """The accelerations (1.4) with the force of each contact's attached friction law added.
+
+    Examples
+    --------
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> import contactsym as cs
+    >>> x, y = dynamicsymbols("x y")
+    >>> N, mu = sp.symbols("N mu", real=True)
+    >>> contact = cs.Contact(coordinate=y, reaction=N, friction=cs.Coulomb(mu, {x: 1}))
+    >>> with_friction([x, y], [0, N - 1], [contact])
+    [-mu*Abs(N), N - 1]
+    """
     accelerations = [sympy_only(g, "an acceleration") for g in accelerations]
     for contact in contacts:
         if contact.coordinate not in coordinates:
@@ -72,7 +108,25 @@ def with_friction(coordinates, accelerations, contacts) -> list[sp.Expr]:
 
 
 def check_scene(scene, parameters) -> None:
-    """Contacts, reactions and (when declared) parameters of a scene are consistent."""
+    """Contacts, reactions and (when declared) parameters of a scene are consistent.
+
+    Every :class:`~contactsym.mechanism.Scene` runs it when it is made, so an inconsistent scene is
+    never built.
+
+    Examples
+    --------
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> import contactsym as cs
+    >>> check_scene(cs.scene("brake"), None) is None
+    True
+    >>> y = dynamicsymbols("y")
+    >>> N, M = sp.symbols("N M", real=True)
+    >>> try:  # the acceleration names M, not the contact's reaction N
+    ...     cs.Scene.from_accelerations([y], [M - 1], [cs.Contact(coordinate=y, reaction=N)])
+    ... except cs.SceneError as error:
+    ...     print(str(error).split(";")[0])
+    no acceleration depends on the reactions ['N']
+    """
     if not scene.contacts:
         raise SceneError("a scene needs at least one Contact.")
     for contact in scene.contacts:

@@ -69,14 +69,36 @@ class Contact:
 
 
 def plain_symbol(symbol: sp.Expr, suffix: str = "") -> sp.Symbol:
-    """A plain real symbol for a frozen coordinate q(t) or its rate ('qdot', 'xdot_1': printed with a dot)."""
+    """A plain real symbol for a frozen coordinate q(t) or its rate ('qdot', 'xdot_1': printed with a dot).
+
+    Examples
+    --------
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> theta, x1 = dynamicsymbols("theta x_1")
+    >>> plain_symbol(theta), plain_symbol(theta, "dot"), plain_symbol(x1, "dot")
+    (theta, thetadot, xdot_1)
+    >>> plain_symbol(theta).is_real
+    True
+    """
     name = symbol.func.__name__ if isinstance(symbol, sp.core.function.AppliedUndef) else str(symbol)
     base, underscore, index = name.partition("_")
     return sp.Symbol(base + suffix + underscore + index, real=True)
 
 
 def solve_linear(equations: list[sp.Expr], candidates: list[sp.Symbol]) -> dict:
-    """Solve equations, linear in some of the candidates, uniquely for the fewest of them."""
+    """Solve equations, linear in some of the candidates, uniquely for the fewest of them.
+
+    Examples
+    --------
+    >>> a, b, c = sp.symbols("a b c")
+    >>> solution = solve_linear([a + b - 1, a - b - c], [a, b, c])
+    >>> solution
+    {a: c/2 + 1/2, b: 1/2 - c/2}
+    >>> [sp.expand(e.subs(solution)) for e in (a + b - 1, a - b - c)]
+    [0, 0]
+    >>> solve_linear([a**2 - 1], [a])  # not linear: no solution offered
+    {}
+    """
     equations = [e for e in (sp.expand(e) for e in equations) if e != 0]
     for size in range(1, len(equations) + 1):
         for chosen in itertools.combinations(candidates, size):
@@ -102,6 +124,18 @@ def contact_manifold(plain, frozen_symbols: dict, coordinates, gaps, at: dict) -
     ``plain`` freezes an expression (q(t) -> q, q' -> qdot, see ``frozen_symbols``).
     Coordinates and rates are eliminated where the gaps are linear in them; ``at``
     (coordinates or parameters at contact) fixes the rest.
+
+    Examples
+    --------
+    Painleve's rod touches where its gap y - l sin(theta) and the gap's rate vanish:
+
+    >>> import contactsym as cs
+    >>> rod = cs.scene("painleve-rod")
+    >>> at = contact_manifold(rod.plain, rod.frozen_symbols, rod.coordinates, rod.gaps, rod.at)
+    >>> at
+    {y: l*sin(theta), ydot: l*thetadot*cos(theta)}
+    >>> [sp.expand(rod.plain(g).subs(at)) for g in rod.gaps]
+    [0]
     """
     at = {plain(key): plain(value) for key, value in at.items()}
     frozen_gaps = [plain(g).subs(at) for g in gaps]

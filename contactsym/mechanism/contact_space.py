@@ -81,6 +81,20 @@ class ContactSpace:
     friction : tuple
         Per contact ``(D_j, phi_j(N_j))`` or None.
     reactions : tuple of Symbol
+
+    Examples
+    --------
+    Painleve's rod (x, y, theta), touching the floor with its end, y - l sin(theta) = 0:
+
+    >>> import contactsym as cs
+    >>> space = cs.scene("painleve-rod").contact_space
+    >>> isinstance(space, ContactSpace), space.coordinates
+    (True, (x(t), y(t), theta(t)))
+    >>> space.M, space.W.T, space.reactions
+    (Matrix([
+    [m, 0,        0],
+    [0, m,        0],
+    [0, 0, l**2*m/3]]), Matrix([[0, 1, -l*cos(theta(t))]]), (N,))
     """
 
     coordinates: tuple
@@ -147,7 +161,16 @@ def _check_mass_matrix(M: sp.Matrix, coordinates) -> None:
 def mass_determinant_is_zero(M: sp.Matrix) -> bool:
     """det M = 0 identically. A nonzero value at one exact point proves det M != 0: the point
     puts rationals (2t/(1 + t^2), (1 - t^2)/(1 + t^2)) for each angle's sine and cosine, so the
-    test is exact and costs one rational determinant; only a zero there needs the symbolic det."""
+    test is exact and costs one rational determinant; only a zero there needs the symbolic det.
+
+    Examples
+    --------
+    >>> q, m = sp.symbols("q m", positive=True)
+    >>> mass_determinant_is_zero(sp.Matrix([[2*m, m*sp.cos(q)], [m*sp.cos(q), m]]))
+    False
+    >>> mass_determinant_is_zero(sp.Matrix([[m, m*sp.cos(q)], [m*sp.cos(q), m*sp.cos(q)**2]]))
+    True
+    """
     field = TrigField(list(M))
     entries = [[field.element(x) for x in row] for row in M.tolist()]
     trig = {i for pair in field.pairs for i in pair}

@@ -270,6 +270,17 @@ class Classification:
     region : str or None
         ``"robustly stable"``, ``"robustly unstable"``, ``"law-dependent"`` or
         ``"undecided"`` (Propositions 3-8), when the robustness conditions could be decided.
+
+    Examples
+    --------
+    The brake at mu = 1/2 with a damping law: every Hurwitz condition is positive, so it is stable:
+
+    >>> import sympy as sp
+    >>> import contactsym as cs
+    >>> st = cs.scene("brake").stability()
+    >>> c = classify(st, {"alpha": sp.pi/2, "m": 1, "mu": 0.5, "Phi_1": -2, "Phi_2": -2, "Psi_1": -1, "Psi_2": -1})
+    >>> isinstance(c, Classification), c.stable, all(s == 1 for s in c.signs), c.region
+    (True, 1, True, 'law-dependent')
     """
 
     stable: int

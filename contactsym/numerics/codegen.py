@@ -53,6 +53,17 @@ class NumericFunction:
         What the function computes (after numeric substitution).
     function : callable
         The generated code, ``function(*args)``.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> x, y = sp.symbols("x y")
+    >>> exprs = sp.Matrix([x**2*y, x + y])
+    >>> F = NumericFunction((x, y), exprs, lambdify_cse([x, y], exprs))
+    >>> F(2.0, 3.0).ravel().tolist()
+    [12.0, 5.0]
+    >>> F.jacobian()(2.0, 3.0).tolist()  # [[2 x y, x^2], [1, 1]]
+    [[12.0, 4.0], [1.0, 1.0]]
     """
 
     args: tuple

@@ -34,6 +34,18 @@ class Cycle:
     contact_loss : bool
         Some reaction vanishes on part of the cycle (a unilateral contact opens).
     message : str
+
+    Examples
+    --------
+    Check ``converged`` before using a cycle: too few periods to settle give none (NaN period), with the
+    reason (:func:`fast_cycle` shows a converged one):
+
+    >>> import contactsym as cs
+    >>> values = {"m": 1, "mu": 1, "alpha": 1.5707963267948966, "F_x": 2, "F_y": -4,
+    ...           "Phi_1": -2.1, "Phi_2": -2.1, "Psi_1": -1, "Psi_2": -1}
+    >>> cycle = fast_cycle(cs.scene("brake"), values, periods=3, samples=64)
+    >>> isinstance(cycle, Cycle), cycle.converged, cycle.message
+    (True, False, 'no convergence to a cycle within 3 linear periods.')
     """
 
     converged: bool

@@ -61,6 +61,22 @@ class Simulation:
         Process (CPU) time and wall time of the integration.
     sol : OdeSolution or None
         Dense output when requested.
+
+    Examples
+    --------
+    A point sliding on the floor under constant forces X, Y < 0: N = -Y, and xdot grows at X - mu N:
+
+    >>> import sympy as sp
+    >>> import contactsym as cs
+    >>> from contactsym.numerics import simulate_reduced
+    >>> x, xdot = sp.symbols("x xdot", real=True)
+    >>> X, Y = sp.Function("X")(x, xdot), sp.Function("Y")(x, xdot)
+    >>> sim = simulate_reduced(cs.scene("sliding-point"), {"m": 1, "b": 1, "mu": 0.5, X: 2, Y: -1},
+    ...                        (0, 1), {x: 0, xdot: 1})
+    >>> isinstance(sim, Simulation), sim.status, sim.names, sim.reaction_names
+    (True, 'ok', ('x', 'xdot'), ('N',))
+    >>> bool(abs(sim.at(1.0, "xdot") - (1 + (2 - 0.5 * 1) * 1.0)) < 1e-9), float(sim.reactions[0, -1])
+    (True, 1.0)
     """
 
     t: np.ndarray

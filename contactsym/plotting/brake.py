@@ -25,7 +25,19 @@ __all__ = ["BrakeHopfData", "BrakeMapData", "brake_hopf_data", "brake_hopf_plot"
 
 @dataclass(frozen=True)
 class BrakeMapData:
-    """The brake's (alpha, mu) plane: stable for every law, law-dependent, mu = |cot alpha|."""
+    """The brake's (alpha, mu) plane: stable for every law, law-dependent, mu = |cot alpha|.
+
+    Examples
+    --------
+    The mask of the region stable for every law is the closed form mu <= |cot alpha| on the grid:
+
+    >>> import contactsym as cs
+    >>> data = brake_map_data(cs.scene("brake"), resolution=30)
+    >>> isinstance(data, BrakeMapData), data.alpha.shape
+    (True, (30, 30))
+    >>> bool(np.array_equal(data.masks["stable for every law"], data.mu <= np.abs(1 / np.tan(data.alpha))))
+    True
+    """
 
     alpha: np.ndarray  # radians
     mu: np.ndarray
@@ -108,7 +120,19 @@ def brake_map_plot(data: BrakeMapData, ax=None, *, legend=True) -> ContactPlot:
 
 @dataclass(frozen=True)
 class BrakeHopfData:
-    """The brake at alpha = 90 deg, Phi_j = Phi, Psi_j = Psi: (mu, Phi) plane at fixed Psi, m."""
+    """The brake at alpha = 90 deg, Phi_j = Phi, Psi_j = Psi: (mu, Phi) plane at fixed Psi, m.
+
+    Examples
+    --------
+    At Psi = -1, m = 1 the stable mask is -Phi mu^2 < mu^2 + 1 (6.4) on the grid:
+
+    >>> import contactsym as cs
+    >>> data = brake_hopf_data(cs.scene("brake"), Psi=-1.0, m=1.0, resolution=30)
+    >>> isinstance(data, BrakeHopfData), data.fixed, sorted(data.masks)
+    (True, {'Psi': -1.0, 'm': 1.0}, ['stable', 'unstable'])
+    >>> bool(np.array_equal(data.masks["stable"], -data.Phi * data.mu**2 < data.mu**2 + 1))
+    True
+    """
 
     mu: np.ndarray
     Phi: np.ndarray

@@ -34,7 +34,20 @@ def _angle_parameter(scene, angle):
 
 @dataclass(frozen=True)
 class Fig1Data:
-    """The (v1, v2) plane of the guides at one angle phi (Fig. 1)."""
+    """The (v1, v2) plane of the guides at one angle phi (Fig. 1).
+
+    Examples
+    --------
+    The three stability regions never overlap on the grid:
+
+    >>> import sympy as sp
+    >>> import contactsym as cs
+    >>> data = fig1_data(cs.scene("painleve-klein-guides"), sp.pi / 3, resolution=41)
+    >>> isinstance(data, Fig1Data), data.V1.shape, sorted(data.masks)
+    (True, (41, 41), ['law-dependent', 'stable for every law', 'unstable for every law'])
+    >>> int(sum(mask.astype(int) for mask in data.masks.values()).max())
+    1
+    """
 
     phi: sp.Expr
     kappa: sp.Expr

@@ -21,7 +21,17 @@ __all__ = ["PhasePortraitData", "phase_portrait_caption", "phase_portrait_data",
 
 @dataclass(frozen=True)
 class PhasePortraitData:
-    """The fast subsystem (2.1) of a k = 1 scene on a (u, v) grid, with its equilibria."""
+    """The fast subsystem (2.1) of a k = 1 scene on a (u, v) grid, with its equilibria.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> data = phase_portrait_data(cs.scene("sliding-point"), resolution=10)
+    >>> isinstance(data, PhasePortraitData), data.u.shape, data.du.shape, data.count
+    (True, (10, 10), (10, 10), 'unique stable')
+    >>> data.equilibria  # (u*, stable)
+    [(1.0, True)]
+    """
 
     scene: str
     count: str

@@ -63,7 +63,19 @@ def relational_fields(condition, values: dict, shape) -> list[np.ndarray]:
 
 @dataclass(frozen=True)
 class RegionData:
-    """A region on a grid: ``mask[i, j]`` is membership at ``(X[i, j], Y[i, j])``."""
+    """A region on a grid: ``mask[i, j]`` is membership at ``(X[i, j], Y[i, j])``.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from contactsym.stages.regions import Region
+    >>> a, b = sp.symbols("a b", real=True)
+    >>> data = region_data(Region(a + b < 1), x="a", y="b", resolution=5)
+    >>> isinstance(data, RegionData), data.x, data.y, data.X.shape
+    (True, 'a', 'b', (5, 5))
+    >>> bool(np.array_equal(data.mask, data.X + data.Y < 1))
+    True
+    """
 
     x: str
     y: str

@@ -152,12 +152,25 @@ class Numbering:
 
 
 def prime(symbol) -> str:
-    """LaTeX of ``symbol'``, a derivative in the stretched time."""
+    """LaTeX of ``symbol'``, a derivative in the stretched time.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> print(prime(sp.Symbol("u_1")))
+    u_{1}'
+    """
     return tex(symbol) + "'"
 
 
 def signs_latex(signs) -> str:
-    """A sign pattern as ``(+, -)``."""
+    r"""A sign pattern as ``(+, -)``.
+
+    Examples
+    --------
+    >>> print(signs_latex((1, -1)))
+    \left(+, -\right)
+    """
     return r"\left(" + ", ".join("+" if s == 1 else "-" for s in signs) + r"\right)"
 
 

@@ -25,7 +25,23 @@ __all__ = ["ReportError", "ReportResult", "compile_pdf", "write_report"]
 
 @dataclass
 class ReportResult:
-    """What :func:`write_report` wrote."""
+    """What :func:`write_report` wrote.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> import sympy as sp
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> import contactsym as cs
+    >>> x, y = dynamicsymbols("x y")
+    >>> N, mu = sp.Symbol("N", real=True), sp.Symbol("mu", positive=True)
+    >>> own = cs.Scene.from_accelerations([x, y], [-mu*sp.Abs(N), N - 1], [cs.Contact(y, N)], name="own")
+    >>> with tempfile.TemporaryDirectory() as directory:
+    ...     result = write_report(own, directory + "/report", pdf=False)
+    ...     print(isinstance(result, ReportResult), result.scene, result.tex.name, result.conditions.name,
+    ...           result.tex.exists(), result.pdf)
+    True own report.tex conditions.json True None
+    """
 
     scene: str
     directory: Path
@@ -40,9 +56,20 @@ class ReportResult:
 
 
 def compile_pdf(tex: Path, timeout: float = 120) -> Path | None:
-    """Run pdflatex on ``tex`` in its directory; the PDF, or None when pdflatex is not installed.
+    r"""Run pdflatex on ``tex`` in its directory; the PDF, or None when pdflatex is not installed.
 
     Raises ReportError (with the first LaTeX error line) when pdflatex fails.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> with tempfile.TemporaryDirectory() as directory:
+    ...     tex = Path(directory) / "hello.tex"
+    ...     _ = tex.write_text(r"\documentclass{article}\begin{document}Hello\end{document}")
+    ...     pdf = compile_pdf(tex)
+    ...     print(pdf is None or (pdf == tex.with_suffix(".pdf") and pdf.exists()))
+    True
     """
     pdflatex = shutil.which("pdflatex")
     if pdflatex is None:

@@ -41,7 +41,17 @@ __all__ = ["Figure", "report_tex"]
 
 @dataclass(frozen=True)
 class Figure:
-    """A PNG for the report: its path and caption (LaTeX)."""
+    r"""A PNG for the report: its path and caption (LaTeX).
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> import contactsym as cs
+    >>> figure = Figure(Path("figures/map.png"), r"The $(\alpha, \mu)$ plane")
+    >>> tex = report_tex(cs.scene("sliding-point"), figures=[figure])
+    >>> "map.png" in tex, r"The $(\alpha, \mu)$ plane" in tex
+    (True, True)
+    """
 
     path: Path
     caption: str
@@ -311,10 +321,19 @@ _PREAMBLE = r"""\documentclass[10pt,a4paper]{article}
 
 
 def report_tex(scene, figures: list[Figure] | tuple = (), notes: list[str] | tuple = ()) -> str:
-    """The standalone LaTeX document of one scene.
+    r"""The standalone LaTeX document of one scene.
 
     ``figures`` are PNGs in ``figures/`` beside the document; ``notes`` are plain-text
     remarks printed under the figures (e.g. a figure that could not be drawn).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> tex = report_tex(cs.scene("sliding-point"), notes=["The phase portrait needs values for b."])
+    >>> tex.startswith(r"\documentclass"), tex.rstrip().endswith(r"\end{document}")
+    (True, True)
+    >>> "The phase portrait needs values for b." in tex
+    True
     """
     named = _Named()
     paper = paper_name(scene) is not None  # the paper's own scene object, not one that shares its name

@@ -47,7 +47,14 @@ __all__ = [
 
 
 def rational_law(c, d, digits: int = 4) -> tuple[list, list]:
-    """A float law rounded to ``digits`` significant decimal digits, as exact rationals."""
+    """A float law rounded to ``digits`` significant decimal digits, as exact rationals.
+
+    Examples
+    --------
+    >>> c, d = rational_law([0.123456, 2.0], [1/3, 5.0])
+    >>> [str(x) for x in c], [str(x) for x in d]
+    (['247/2000', '2'], ['3333/10000', '5'])
+    """
     return [QQ.convert(Fraction(f"{x:.{digits}g}")) for x in c], [QQ.convert(Fraction(f"{x:.{digits}g}")) for x in d]
 
 
@@ -68,7 +75,17 @@ def _sqrt_lower_bound(x) -> Fraction:
 def amgm_certificate(g) -> str | None:
     """``"coefficients"`` if g has nonnegative coefficients (one positive), ``"amgm"`` if each
     negative term is absorbed by midpoint AM-GM pairs of positive terms (shares split evenly
-    among the pairs a positive term is in), else None. Either way g > 0 on the open orthant."""
+    among the pairs a positive term is in), else None. Either way g > 0 on the open orthant.
+
+    Examples
+    --------
+    >>> from contactsym.robustness import law_ring
+    >>> R, (c1, c2, d1, d2) = law_ring(2)
+    >>> amgm_certificate(c1*d2 + 2*c2), amgm_certificate(c1**2 - c1*c2 + c2**2)
+    ('coefficients', 'amgm')
+    >>> amgm_certificate(c1**2 - 3*c1*c2 + c2**2) is None  # negative at c1 = c2
+    True
+    """
     positive = {e: v for e, v in g.items() if v > 0}
     negative = {e: -v for e, v in g.items() if v < 0}
     if not positive:
@@ -97,7 +114,23 @@ def amgm_certificate(g) -> str | None:
 
 
 def fisher_fuller_laws(order, k) -> list[tuple[list, list]]:
-    """(P6) laws (c, d) = (diag C, diag C), C = diag(delta^r) along the nested sequence ``order``."""
+    """(P6) laws (c, d) = (diag C, diag C), C = diag(delta^r) along the nested sequence ``order``.
+
+    Examples
+    --------
+    For A = [[2, 1], [-1, 2]] both orders are nested sequences; the laws along (0, 1) are stable:
+
+    >>> import sympy as sp
+    >>> from contactsym.robustness import LawPolynomials, nested_sequences
+    >>> lp = LawPolynomials(sp.Matrix([[2, 1], [-1, 2]]))
+    >>> nested_sequences(lp.minors)
+    [(0, 1), (1, 0)]
+    >>> laws = fisher_fuller_laws((0, 1), 2)
+    >>> [str(x) for x in laws[0][0]]
+    ['1', '1/2']
+    >>> all(v > 0 for c, d in laws for v in lp.values_at(c, d))
+    True
+    """
     laws = []
     for delta in (sp.Rational(1, 2), sp.Rational(1, 10), sp.Rational(1, 100), sp.Rational(1, 10**4)):
         c = [None] * k
@@ -108,7 +141,20 @@ def fisher_fuller_laws(order, k) -> list[tuple[list, list]]:
 
 
 def sampled_laws(Af: np.ndarray, count: int, seed: int) -> tuple[list, list]:
-    """(stable-looking, unstable-looking) rational laws from log-uniform samples, best first."""
+    """(stable-looking, unstable-looking) rational laws from log-uniform samples, best first.
+
+    Examples
+    --------
+    A law-dependent A: the best sampled laws of each kind, checked by the eigenvalues of (4.5):
+
+    >>> A = np.array([[2.0, 1, 0], [-1, 2, 1], [0, -1, 2]])
+    >>> stable, unstable = sampled_laws(A, 50, seed=0)
+    >>> def abscissa(law):
+    ...     c, d = (np.array([[float(x) for x in part]]) for part in law)
+    ...     return float(fast_spectral_abscissa(A, c, d)[0])
+    >>> abscissa(stable[0]) < 0 < abscissa(unstable[0])
+    True
+    """
     k = Af.shape[0]
     rng = np.random.default_rng(seed)
     c = 10.0 ** rng.uniform(-3, 3, (count, k))
@@ -131,7 +177,17 @@ def weak_damping_laws(Af: np.ndarray, seed: int, count: int = 400) -> list:
     """Unstable laws with small damping. Left-multiplying lam^2 x + (lam D + C) A x = 0 by the left
     eigenvector y of CA (CA x = mu x) gives lam^2 + mu s lam + mu = 0 to first order in D, with
     s = sum_j (d_j / c_j) y_j x_j / (y.x): a non-real mu, or a real mu > 0 with some
-    y_j x_j / (y.x) < 0 (then d concentrated on j makes s < 0), has Re lam > 0 for small D."""
+    y_j x_j / (y.x) < 0 (then d concentrated on j makes s < 0), has Re lam > 0 for small D.
+
+    Examples
+    --------
+    >>> A = np.array([[2.0, 1, 0], [-1, 2, 1], [0, -1, 2]])
+    >>> c, d = weak_damping_laws(A, seed=0, count=50)[0]
+    >>> [str(x) for x in d]  # small damping
+    ['1/10000', '1/10000', '1/10000']
+    >>> float(fast_spectral_abscissa(A, np.array([[float(x) for x in c]]), np.array([[float(x) for x in d]]))[0]) > 0
+    True
+    """
     k = Af.shape[0]
     rng = np.random.default_rng(seed + 2)
     stiffness = np.vstack([np.ones(k), 10.0 ** rng.uniform(-3, 3, (count, k))])
@@ -154,7 +210,17 @@ def weak_damping_laws(Af: np.ndarray, seed: int, count: int = 400) -> list:
 
 def climbed_laws(Af: np.ndarray, sign: float, seed: int, starts: int = 3) -> list:
     """Rational laws found by Nelder-Mead on log(c, d) maximising sign * (normalized abscissa), from
-    the best of wide log-uniform samples (1e-6..1e6): the rare unstable (stable) laws sampling misses."""
+    the best of wide log-uniform samples (1e-6..1e6): the rare unstable (stable) laws sampling misses.
+
+    Examples
+    --------
+    ``sign = 1`` climbs towards instability:
+
+    >>> A = np.array([[2.0, 1, 0], [-1, 2, 1], [0, -1, 2]])
+    >>> c, d = climbed_laws(A, 1.0, seed=0, starts=1)[0]
+    >>> float(fast_spectral_abscissa(A, np.array([[float(x) for x in c]]), np.array([[float(x) for x in d]]))[0]) > 0
+    True
+    """
     k = Af.shape[0]
     rng = np.random.default_rng(seed + 1)
     x = rng.uniform(-6, 6, (4000, 2 * k))
@@ -242,7 +308,19 @@ def _vertices(points: list) -> list:
 
 def vertex_laws(lp, conditions, per_condition: int = 2, tries: int = 12) -> list[tuple[list, list]]:
     """Laws t^w on which a negative vertex coefficient of a condition dominates (P3); at most
-    ``tries`` negative terms per condition, largest first."""
+    ``tries`` negative terms per condition, largest first.
+
+    Examples
+    --------
+    Each law makes some Liénard–Chipart condition negative, exactly:
+
+    >>> import sympy as sp
+    >>> from contactsym.robustness import LawPolynomials
+    >>> lp = LawPolynomials(sp.Matrix([[2, 1, 0], [-1, 2, 1], [0, -1, 2]]))
+    >>> laws = vertex_laws(lp, lp.conditions())
+    >>> len(laws) > 0, all(min(lp.values_at(c, d)) < 0 for c, d in laws)
+    (True, True)
+    """
     laws = []
     for g in conditions:
         if g is None:
@@ -277,7 +355,22 @@ def _multipliers(gens, degree: int) -> list:
 
 def positivstellensatz_certificate(lp, conditions, degrees: tuple | None = None) -> str | None:
     """(P5): monomial multipliers s_i >= 0 with every coefficient of sum s_i g_i <= 0, checked exactly;
-    multipliers of degree ``degrees[0]``, then ``degrees[1]``, ..."""
+    multipliers of degree ``degrees[0]``, then ``degrees[1]``, ...
+
+    Examples
+    --------
+    An A with det A > 0 but no nested sequence, unstable for every law:
+
+    >>> import sympy as sp
+    >>> from contactsym.robustness import LawPolynomials
+    >>> lp = LawPolynomials(sp.Matrix([[13, -17, -13], [-11, -13, 12], [15, 3, -19]]) / 10)
+    >>> p = [g for (kind, _), g in zip(lp.labels, lp.conditions()) if kind == "p"]
+    >>> print(positivstellensatz_certificate(lp, p))
+    a combination of 6 Liénard–Chipart conditions times monomials of degree <= 2 has every coefficient <= 0
+    >>> stable = LawPolynomials(sp.eye(2))  # stable for every law: no certificate of the contrary
+    >>> positivstellensatz_certificate(stable, stable.p) is None
+    True
+    """
     for degree in degrees or ((2, 3) if lp.k <= 3 else (1, 2)):
         statement = _positivstellensatz(lp, conditions, degree)
         if statement:
@@ -363,7 +456,19 @@ def _solve_and_check(lp, matrix, scale, products, monomials, margin, degree) -> 
 
 def damped_positivstellensatz_certificate(lp, conditions, degree: int = 4) -> str | None:
     """(P8): P5 on the other conditions after d_i = u + sum_(j != i) (-a_jj / a_ii) d_j, when a_ii > 0 is the
-    only positive diagonal entry: u > 0 exactly when p_(2k-1) = sum a_jj d_j > 0 (u reuses the generator d_i)."""
+    only positive diagonal entry: u > 0 exactly when p_(2k-1) = sum a_jj d_j > 0 (u reuses the generator d_i).
+
+    Examples
+    --------
+    It applies only when exactly one diagonal entry of A is positive (a search where it applies takes
+    seconds: ``decide`` runs it last):
+
+    >>> import sympy as sp
+    >>> from contactsym.robustness import LawPolynomials
+    >>> lp = LawPolynomials(sp.Matrix([[2, 1, 0], [-1, 2, 1], [0, -1, 2]]))
+    >>> damped_positivstellensatz_certificate(lp, lp.conditions()) is None
+    True
+    """
     diagonal = [lp.minors[(j,)] for j in range(lp.k)]
     positive = [j for j, a in enumerate(diagonal) if a > 0]
     if len(positive) != 1:

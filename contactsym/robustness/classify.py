@@ -129,6 +129,18 @@ class WitnessLaw:
 
     ``conditions`` are the exact Liénard–Chipart values (order of ``Hurwitz.labels``);
     ``abscissa`` is max Re of the eigenvalues of (4.5) in floating point.
+
+    Examples
+    --------
+    The witness laws of a law-dependent A agree in exact signs and in eigenvalues:
+
+    >>> import sympy as sp
+    >>> r = decide(sp.Matrix([[2, 1, 0], [-1, 2, 1], [0, -1, 2]]))
+    >>> law = r.unstable_law
+    >>> isinstance(law, Law), law.stable, min(law.conditions) < 0, law.abscissa > 0
+    (True, False, True, True)
+    >>> r.stable_law.stable, r.stable_law.abscissa < 0
+    (True, True)
     """
 
     Phi: tuple
@@ -143,7 +155,17 @@ class WitnessLaw:
 
 @dataclass(frozen=True)
 class Certificate:
-    """Why the equilibrium is stable (unstable) for every law."""
+    """Why the equilibrium is stable (unstable) for every law.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> certificate = decide(sp.Matrix([[1, 0, 0], [0, -1, 0], [0, 0, 1]])).certificate
+    >>> isinstance(certificate, Certificate), certificate.verdict, certificate.kind
+    (True, 'unstable', 'coefficients')
+    >>> print(certificate.statement)
+    every coefficient of p_1 in (c, d) = (-Phi, -Psi) is <= 0, so p_1 <= 0 for every law
+    """
 
     verdict: str
     kind: str
@@ -152,7 +174,17 @@ class Certificate:
 
 @dataclass(frozen=True)
 class Robustness:
-    """The three-valued answer with its evidence (or ``undecided``)."""
+    """The three-valued answer with its evidence (or ``undecided``).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> r = decide(sp.Matrix([[2, 1, 0], [-1, 2, 1], [0, -1, 2]]))
+    >>> isinstance(r, Robustness), r.verdict, r.certificate
+    (True, 'law-dependent', None)
+    >>> print(r.summary().splitlines()[0])
+    robustness to the law: law-dependent
+    """
 
     verdict: str
     certificate: Certificate | None = None
@@ -175,7 +207,17 @@ class Robustness:
 
 
 def nested_sequences(minors: dict) -> list[tuple[int, ...]]:
-    """Orderings i1..ik along which every leading principal minor is positive."""
+    """Orderings i1..ik along which every leading principal minor is positive.
+
+    Examples
+    --------
+    ``minors`` maps index tuples (from 0) to det A_S, as :attr:`LawPolynomials.minors` gives them:
+
+    >>> nested_sequences({(0,): 1, (1,): -1, (0, 1): 2})  # a_11 > 0, det A > 0; a_22 < 0
+    [(0, 1)]
+    >>> nested_sequences({(0,): -1, (1,): -1, (0, 1): 2})
+    []
+    """
     k = max(len(S) for S in minors)
     found = []
     for order in itertools.permutations(range(k)):

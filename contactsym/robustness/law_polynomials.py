@@ -122,6 +122,17 @@ class LawPolynomials:
     ----------
     A : matrix of numbers
         Floats are taken at their exact binary value.
+
+    Examples
+    --------
+    One contact, A = [[a]]: (4.5) is lambda^2 + a d lambda + a c = 0, stable for every law when a > 0:
+
+    >>> import sympy as sp
+    >>> lp = LawPolynomials(sp.Matrix([[3]]))
+    >>> lp.labels
+    [('p', 1), ('p', 0)]
+    >>> [str(v) for v in lp.values_at([2], [5])]  # a d, a c at c = 2, d = 5
+    ['15', '6']
     """
 
     def __init__(self, A):

@@ -42,7 +42,14 @@ lam = sp.Symbol("lambda")
 
 
 def principal_minors(A: sp.Matrix) -> dict[tuple[int, ...], sp.Expr]:
-    """det(A_S) for every subset S of the indices (the empty set gives 1)."""
+    """det(A_S) for every subset S of the indices (the empty set gives 1).
+
+    Examples
+    --------
+    >>> a, b, c, d = sp.symbols("a b c d")
+    >>> principal_minors(sp.Matrix([[a, b], [c, d]]))
+    {(): 1, (0,): a, (1,): d, (0, 1): a*d - b*c}
+    """
     k = A.rows
     minors = {(): sp.S.One}
     for size in range(1, k + 1):

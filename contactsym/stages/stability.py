@@ -322,7 +322,19 @@ def generic_minors(n: int) -> dict[int, sp.Expr]:
 
 
 def robustness_formulas(robustness) -> tuple[Formula, ...]:
-    """The point decision of :func:`contactsym.robustness.classify.decide_robustness`: verdict, certificate, witness laws."""
+    """The point decision of :func:`contactsym.robustness.classify.decide_robustness`: verdict, certificate, witness laws.
+
+    Examples
+    --------
+    >>> from contactsym.robustness import decide_robustness
+    >>> rows = robustness_formulas(decide_robustness(sp.Matrix([[1, 0, 0], [0, -1, 0], [0, 0, 1]])))
+    >>> [row.key for row in rows]
+    ['robustness', 'certificate']
+    >>> print(rows[0].rhs)
+    \\text{unstable}
+    >>> robustness_formulas(None)
+    ()
+    """
     if robustness is None:
         return ()
     rows = [Formula("robustness", r"\text{robustness}", r"\text{" + robustness.verdict + "}", ":")]

@@ -35,6 +35,18 @@ class LawKind:
 
     With ``local``, its formulas may use ``q`` (the deformation), ``q'`` (its rate) and
     ``eps`` (the small parameter), which inside the law mean only that.
+
+    Examples
+    --------
+    The laws a file may name, and what the Kelvin-Voigt entry takes and builds:
+
+    >>> sorted(COMPLIANCE_LAWS)
+    ['generic', 'kelvin-voigt', 'law']
+    >>> kind = COMPLIANCE_LAWS["kelvin-voigt"]
+    >>> isinstance(kind, LawKind), kind.keys
+    (True, ('name', 'stiffness', 'damping'))
+    >>> kind.build({"stiffness": 2, "damping": 3}, {}, None)
+    KelvinVoigt(stiffness=2, damping=3)
     """
 
     build: Callable

@@ -206,7 +206,21 @@ def read_spec(
 
 
 def build_scene(spec: SceneSpec) -> Scene:
-    """The Scene of a spec: the mechanics, the contacts and every option, in one constructor call."""
+    """The Scene of a spec: the mechanics, the contacts and every option, in one constructor call.
+
+    Examples
+    --------
+    >>> spec = read_spec('[scene]\\nname = "drop"\\ncoordinates = ["y"]\\n[accelerations]\\ny = "N - 1"\\n'
+    ...                  '[[contacts]]\\ngap = "y"\\nreaction = "N"\\n', "a.toml")
+    >>> scene = build_scene(spec)
+    >>> scene.name, scene.k, scene.accelerations
+    ('drop', 1, {y(t): N - 1})
+    >>> try:
+    ...     build_scene("drop.toml")
+    ... except SceneFileError as error:
+    ...     print(error)
+    build_scene takes a SceneSpec (from read_spec), not 'drop.toml'.
+    """
     if not isinstance(spec, SceneSpec):
         raise SceneFileError(f"build_scene takes a SceneSpec (from read_spec), not {shown(spec)}.")
     plane = Plane(spec.points) if spec.lagrangian else None

@@ -143,6 +143,19 @@ class Limits:
     Pass ``limits=Limits(max_contacts=8)`` to :func:`~contactsym.mechanism.files.reader.load_scene`
     or :func:`~contactsym.mechanism.files.reader.read_scene` to read a larger scene. The
     formulas have their own caps, in :mod:`contactsym.parse`.
+
+    Examples
+    --------
+    >>> from contactsym.mechanism.files import SceneFileError, read_scene
+    >>> text = ('[scene]\\ncoordinates = ["x", "y"]\\n[accelerations]\\nx = "N_1"\\ny = "N_2"\\n'
+    ...         '[[contacts]]\\ngap = "x"\\nreaction = "N_1"\\n[[contacts]]\\ngap = "y"\\nreaction = "N_2"\\n')
+    >>> read_scene(text, "two.toml").k
+    2
+    >>> try:
+    ...     read_scene(text, "two.toml", limits=Limits(max_contacts=1))
+    ... except SceneFileError as error:
+    ...     print(str(error).split(";")[0])
+    two.toml:1: 2 contacts, more than the cap of 1 (Limits.max_contacts)
     """
 
     #: Largest file, in bytes.
@@ -171,6 +184,17 @@ class FigurePlan:
 
     ``x``, ``y`` and the keys of ``values`` are the names the pipeline prints (``mu_+`` for a
     parameter ``mu_p = {symbol = "mu_+"}``, ``thetadot`` for a rate ``theta'``).
+
+    Examples
+    --------
+    The ``[figures]`` table of a scene file, as read:
+
+    >>> from contactsym.mechanism.files import read_spec
+    >>> spec = read_spec('[scene]\\ncoordinates = ["y"]\\n[parameters]\\nm = "positive"\\nk = "positive"\\n'
+    ...                  '[accelerations]\\ny = "N/m - k"\\n[[contacts]]\\ngap = "y"\\nreaction = "N"\\n'
+    ...                  '[figures]\\nx = "m"\\ny = "k"\\nx_range = [0.5, 2]\\ny_range = [0, 1]\\n', "a.toml")
+    >>> spec.figures
+    FigurePlan(x='m', y='k', x_range=(0.5, 2.0), y_range=(0.0, 1.0), values={})
     """
 
     x: str
@@ -275,7 +299,18 @@ class ContactSpec:
 
 @dataclass(frozen=True)
 class SceneSpec:
-    """Everything a scene file says, read and checked; :func:`build_scene` makes the Scene of it."""
+    """Everything a scene file says, read and checked; :func:`build_scene` makes the Scene of it.
+
+    Examples
+    --------
+    >>> from contactsym.mechanism.files import read_spec
+    >>> spec = read_spec('[scene]\\ncoordinates = ["y"]\\n[accelerations]\\ny = "N - 1"\\n'
+    ...                  '[[contacts]]\\ngap = "y"\\nreaction = "N"\\n', "a.toml", "drop")
+    >>> isinstance(spec, SceneSpec), spec.name, spec.source, spec.accelerations
+    (True, 'drop', 'a.toml', (N - 1,))
+    >>> [c.name for c in spec.coordinates], spec.contacts[0].law.name
+    (['y'], 'generic')
+    """
 
     source: str
     name: str

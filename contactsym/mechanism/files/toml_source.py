@@ -25,7 +25,13 @@ _KEY = re.compile(r"""\s*(?:"([^"]*)"|'([^']*)'|([A-Za-z0-9_\-]+))\s*=""")
 
 
 def shown(value) -> str:
-    """A value as a message shows it: its repr, cut as every message cuts it (:func:`contactsym.validate.shorten`)."""
+    """A value as a message shows it: its repr, cut as every message cuts it (:func:`contactsym.validate.shorten`).
+
+    Examples
+    --------
+    >>> shown("y")
+    "'y'"
+    """
     return shorten(value)
 
 
