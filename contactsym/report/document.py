@@ -21,6 +21,7 @@ True
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 
 import sympy as sp
@@ -33,7 +34,7 @@ from ..scenes import paper_name
 from ..stages.stability import generic_minors, hurwitz_names, robustness_formulas
 from .errata import AGREE, latex_table, text_to_latex
 from .scene_parts import _count_tag, _special_cases
-from .summary import _counts
+from .summary import _counts, conditions
 from .typesetting import WIDTH, _describe, _display, _escape, _Named, width
 
 __all__ = ["Figure", "report_tex"]
@@ -181,11 +182,39 @@ def _linearization_section(scene, named: _Named) -> str:
     return "\n".join(text)
 
 
+#: Past this many nodes an expression is displayed as derived: cancelling it costs more than reading it.
+TIDY_NODES = 3000
+#: Terms times generators of the cancelled numerator up to which ``factor`` is tried (a multivariate
+#: factorization grows steeply with both: 130 terms in 12 symbols took 50 s, 124 in 7 took 1 s).
+TIDY_FACTOR_WORK = 1000
+
+
+@lru_cache(maxsize=512)
 def _tidy(expr):
-    """A readable form: the common denominator pulled out, the numerator factored when that is short."""
-    expr = sp.factor_terms(sp.cancel(expr))
-    factored = sp.factor(expr)
-    return factored if len(str(factored)) <= len(str(expr)) else expr
+    """A readable form: the common denominator pulled out, the numerator factored when that is short.
+
+    Cheap rules decide how much work the display gets: a large expression is shown as derived,
+    and ``factor`` runs only on a numerator small enough (see ``TIDY_FACTOR_WORK``); otherwise
+    the shorter of the derived form and the cancelled one is shown. Cached per expression.
+    """
+    if _nodes(expr, TIDY_NODES) > TIDY_NODES:
+        return expr
+    cancelled = sp.factor_terms(sp.cancel(expr))
+    numerator = sp.fraction(cancelled)[0]
+    work = len(sp.Add.make_args(sp.expand(numerator))) * len(numerator.free_symbols | numerator.atoms(sp.Function))
+    if work > TIDY_FACTOR_WORK:
+        return cancelled if len(str(cancelled)) <= len(str(expr)) else expr
+    factored = sp.factor(cancelled)
+    return factored if len(str(factored)) <= len(str(cancelled)) else cancelled
+
+
+def _nodes(expr, limit: int) -> int:
+    """The number of nodes of ``expr``, counted up to ``limit + 1``."""
+    count = 0
+    for count, _ in enumerate(sp.preorder_traversal(expr), 1):
+        if count > limit:
+            break
+    return count
 
 
 def _hurwitz_section(scene, named: _Named) -> str:
@@ -193,13 +222,14 @@ def _hurwitz_section(scene, named: _Named) -> str:
     names = hurwitz_names(st)
     n = st.linearization.charpoly.degree()
     generic = generic_minors(n)
-    text = [
-        _section(
-            "6. Routh--Hurwitz conditions (4.7)",
-            r"Li\'enard--Chipart form: all roots of (4.6) have negative real parts exactly when "
-            f"${', '.join(names)} > 0$" + r" (coefficients that are positive numbers are left out).",
-        )
-    ]
+    always = {entry["name"]: entry["always"] for entry in conditions(scene)["hurwitz"] if "always" in entry}
+    needed = [name for name in names if name not in always]
+    intro = r"Li\'enard--Chipart form: all roots of (4.6) have negative real parts " + (
+        f"exactly when ${', '.join(needed)} > 0$" if needed else "always"
+    )
+    intro += r" (coefficients that are positive numbers are left out"
+    intro += "".join(f"; ${name} > 0$ always: {_escape(reason)}" for name, reason in always.items()) + ")."
+    text = [_section("6. Routh--Hurwitz conditions (4.7)", intro)]
     show = scene.present if scene.presentation else (lambda e: e)
     numbers, _ = paper_equations(scene, "hurwitz")
     for name, condition in zip(names, st.hurwitz):

@@ -13,8 +13,12 @@ Examples
 
 from __future__ import annotations
 
+import copy
+import weakref
+
 import sympy as sp
 
+from ..algebra.reductions import known_sign, quotient_sign
 from ..errors import ContactsymError
 from ..mechanism.scene import paper_equations
 from ..printing.latex_output import tex
@@ -22,7 +26,7 @@ from ..stages.regions import Region
 from ..stages.stability import hurwitz_names
 from .scene_parts import _count_tag
 
-__all__ = ["conditions", "summary_text"]
+__all__ = ["always_positive", "conditions", "summary_text"]
 
 
 def _counts(scene) -> tuple[dict[str, Region], str]:
@@ -42,11 +46,40 @@ def _entry(expr, paper=(), note="") -> dict:
     return entry
 
 
+def always_positive(scene, condition) -> str | None:
+    """Why ``condition > 0`` holds throughout the scene's domain, or None when that is not proved.
+
+    The proof is exact (:func:`contactsym.algebra.reductions.known_sign`); the answer names it.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> s = cs.scene("double-pendulum-tip")
+    >>> [always_positive(s, h) for h in s.stability().hurwitz]
+    ['a positive multiple of det M', None, None]
+    """
+    positive = tuple(scene.positive_expressions)
+    factor = getattr(scene, "mass_matrix_factor", None)
+    if factor is not None and quotient_sign(condition, factor, positive) == 1:
+        return "a positive multiple of det M"
+    if known_sign(condition, positive) != 1:
+        return None
+    if known_sign(condition) != 1:
+        return "positive on the scene's declared intervals"
+    return "positive for all values of its symbols"
+
+
+#: conditions() of each scene, computed once: the report, the summary and the JSON share them.
+_COMPUTED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
 def conditions(scene, signs=None) -> dict:
     """The scene's conditions as JSON-ready data: regions, Hurwitz conditions, A, branches.
 
     Each expression is given as SymPy text (``sympy``) and LaTeX (``latex``), with the
-    paper's equation numbers where it has them. ``signs`` selects one sign pattern.
+    paper's equation numbers where it has them. ``signs`` selects one sign pattern. A Hurwitz
+    condition that always holds has a note ``always`` that says why (see :func:`always_positive`).
+    Computed once per scene and sign pattern; each call returns its own copy.
 
     Examples
     --------
@@ -55,6 +88,17 @@ def conditions(scene, signs=None) -> dict:
     >>> data["regions"]["stable for every law"]["sympy"], data["regions"]["stable for every law"]["paper"]
     ('mu <= Abs(cot(alpha))', ['(4.4)', '(6.3)'])
     """
+    key = None if signs is None else tuple(signs)
+    try:
+        computed = _COMPUTED.setdefault(scene, {})
+    except TypeError:  # an object that cannot be weakly referenced: nothing to share
+        computed = {}
+    if key not in computed:
+        computed[key] = _conditions(scene, signs)
+    return copy.deepcopy(computed[key])
+
+
+def _conditions(scene, signs) -> dict:
     st = scene.stability(signs)
     lin = scene.linearization(signs)
     data = {
@@ -81,7 +125,11 @@ def conditions(scene, signs=None) -> dict:
         data["regions"][name] = _entry(region.condition, *paper_equations(scene, name))
     for name, condition in zip(hurwitz_names(st), st.hurwitz):
         key = "coefficient" if name.startswith("p") else "hurwitz"
-        data["hurwitz"].append({"name": name, **_entry(condition, *paper_equations(scene, key))})
+        entry = {"name": name, **_entry(condition, *paper_equations(scene, key))}
+        reason = always_positive(scene, condition)
+        if reason:
+            entry["always"] = reason
+        data["hurwitz"].append(entry)
     if st.hopf_frequency is not None:
         data["hopf_frequency"] = _entry(st.hopf_frequency)
     if st.robustness is not None:
