@@ -140,6 +140,7 @@ def one_sided_cases(scene) -> list[OneSidedCase]:
     (sliding,) = equilibria.branches
     (lift,) = equilibria.lift_offs
     hurwitz = scene.stability(sliding.signs).hurwitz
+    pushing = sp.And(sliding.condition, sp.Gt(sliding.u_star[0], 0))  # the contact pushes: N* > 0
 
     def stable(known, splits) -> bool | None:
         try:
@@ -151,7 +152,7 @@ def one_sided_cases(scene) -> list[OneSidedCase]:
 
     def evaluate(known, splits) -> tuple:
         found = []
-        if _holds(sliding.condition, known, positive):
+        if _holds(pushing, known, positive):
             found.append(("sliding", stable(known, splits)))
         if _holds(lift.condition, known, positive):
             found.append(("lift-off", lift.stable == sp.true or _holds(lift.stable, known, positive)))

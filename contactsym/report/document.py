@@ -32,6 +32,7 @@ from ..mechanism.scene import paper_equations
 from ..printing.latex_output import Formula, formulas, tex
 from ..scenes import paper_name
 from ..stages.stability import generic_minors, hurwitz_names, robustness_formulas
+from ..validate import cut
 from .errata import AGREE, latex_table, text_to_latex
 from .scene_parts import _count_tag, _special_cases
 from .summary import _counts, conditions
@@ -281,11 +282,41 @@ def _one_sided_section(scene, named: _Named) -> list[str]:
     if scene.k != 1 or not scene.contacts[0].unilateral:
         return []
     text = [r"\subsection*{One-sided contact: consistent, inconsistent, indeterminate}"]
-    for case in one_sided_cases(scene):
-        found = ", ".join(f"{kind} ({'stable' if stable else 'unstable'})" for kind, stable in case.equilibria)
+    try:
+        cases = one_sided_cases(scene)
+    except Exception as error:  # a section that cannot be derived must not cost the rest of the report
+        return text + [_not_derived(scene, "the one-sided cases", error)]
+    words = {True: "stable", False: "unstable", None: "stability not decided"}
+    if any(case.assumed for case in cases):
+        text.append(
+            "Where a sign does not follow from those of $a$ and $b$ (nor from the mechanics), the case is "
+            "split in two, as in the paper: the undecided expression positive, then negative."
+        )
+    for case in cases:
+        found = ", ".join(f"{kind} ({words[stable]})" for kind, stable in case.equilibria)
         text.append(f"\\paragraph{{{_escape(case.name.capitalize())}.}} " + _escape(found or "no equilibrium"))
+        for expr, sign in case.assumed:
+            text.append("The sign of this expression was not decided; this case takes it " + _sign_word(sign) + ":")
+            text.append(_display(Formula(case.name, "0", expr, "<" if sign > 0 else ">", (), ""), named))
         text.append(_display(Formula(case.name, "", case.region.condition, "", (), ""), named))
     return text
+
+
+#: What a user can do when a sign or a closed form does not follow.
+ADVICE = (
+    "Declaring the intervals of the angles ([intervals] in a scene file) or the signs of the parameters "
+    '([parameters], e.g. m = "positive") lets more signs be decided.'
+)
+
+
+def _not_derived(scene, stage: str, error: Exception) -> str:
+    """A paragraph in place of a section that could not be derived: the stage, the scene, the reason cut short."""
+    reason = cut(str(error) or type(error).__name__, 300)
+    return _escape(f"Not derived: {stage} of scene '{scene.name}' ({type(error).__name__}: {reason}). {ADVICE}")
+
+
+def _sign_word(sign: int) -> str:
+    return "positive" if sign > 0 else "negative"
 
 
 def _figures_section(figures: list[Figure], notes: list[str]) -> str:
@@ -385,7 +416,10 @@ def _reduced_section(scene, named: _Named) -> str:
             "The slow motion with the reactions of an equilibrium branch: the classical rigid-contact model.",
         )
     ]
-    branches = scene.equilibria().branches
+    try:
+        branches = scene.equilibria().branches
+    except Exception as error:  # the reduced system is an extra: its failure must not cost the report
+        return "\n".join(text + [_not_derived(scene, "the reduced system", error)])
     if len(branches) != 1:
         text.append(
             _escape(
@@ -394,5 +428,9 @@ def _reduced_section(scene, named: _Named) -> str:
             )
         )
         return "\n".join(text)
-    text += [_display(f, named) for f in formulas(scene.reduced_system()) if f.key == "reduced"]
+    try:
+        rows = [f for f in formulas(scene.reduced_system()) if f.key == "reduced"]
+    except Exception as error:  # as above
+        return "\n".join(text + [_not_derived(scene, "the reduced system", error)])
+    text += [_display(f, named) for f in rows]
     return "\n".join(text)
