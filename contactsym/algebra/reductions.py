@@ -279,6 +279,8 @@ def _dominated_sign(expr: sp.Expr, positive: tuple, depth: int) -> int | None:
     if found is None:
         return None
     (poly,), pairs = found
+    if not poly:
+        return None  # zero: no sign
     gens = poly.ring.symbols
     trig = sorted(i for pair in pairs for i in pair)
     scale = {i: _assumed_sign(g, positive) for i, g in enumerate(gens) if i not in trig}
