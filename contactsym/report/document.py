@@ -21,7 +21,6 @@ True
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
 from pathlib import Path
 
 import sympy as sp
@@ -36,7 +35,7 @@ from ..validate import cut
 from .errata import AGREE, latex_table, text_to_latex
 from .scene_parts import _count_tag, _special_cases
 from .summary import _counts, conditions
-from .typesetting import WIDTH, _describe, _display, _escape, _Named, width
+from .typesetting import WIDTH, _describe, _display, _escape, _Named, _tidy, width
 
 __all__ = ["Figure", "report_tex"]
 
@@ -181,41 +180,6 @@ def _linearization_section(scene, named: _Named) -> str:
         numbers, _ = paper_equations(scene, "coefficient")
         text.append(_display(Formula("coefficient", f"p_{{{s}}}", _tidy(show(c)), "=", numbers, ""), named))
     return "\n".join(text)
-
-
-#: Past this many nodes an expression is displayed as derived: cancelling it costs more than reading it.
-TIDY_NODES = 3000
-#: Terms times generators of the cancelled numerator up to which ``factor`` is tried (a multivariate
-#: factorization grows steeply with both: 130 terms in 12 symbols took 50 s, 124 in 7 took 1 s).
-TIDY_FACTOR_WORK = 1000
-
-
-@lru_cache(maxsize=512)
-def _tidy(expr):
-    """A readable form: the common denominator pulled out, the numerator factored when that is short.
-
-    Cheap rules decide how much work the display gets: a large expression is shown as derived,
-    and ``factor`` runs only on a numerator small enough (see ``TIDY_FACTOR_WORK``); otherwise
-    the shorter of the derived form and the cancelled one is shown. Cached per expression.
-    """
-    if _nodes(expr, TIDY_NODES) > TIDY_NODES:
-        return expr
-    cancelled = sp.factor_terms(sp.cancel(expr))
-    numerator = sp.fraction(cancelled)[0]
-    work = len(sp.Add.make_args(sp.expand(numerator))) * len(numerator.free_symbols | numerator.atoms(sp.Function))
-    if work > TIDY_FACTOR_WORK:
-        return cancelled if len(str(cancelled)) <= len(str(expr)) else expr
-    factored = sp.factor(cancelled)
-    return factored if len(str(factored)) <= len(str(cancelled)) else cancelled
-
-
-def _nodes(expr, limit: int) -> int:
-    """The number of nodes of ``expr``, counted up to ``limit + 1``."""
-    count = 0
-    for count, _ in enumerate(sp.preorder_traversal(expr), 1):
-        if count > limit:
-            break
-    return count
 
 
 def _hurwitz_section(scene, named: _Named) -> str:
