@@ -34,7 +34,7 @@ from ..stages.stability import generic_minors, hurwitz_names, robustness_formula
 from ..validate import cut
 from .errata import AGREE, latex_table, text_to_latex
 from .scene_parts import _count_tag, _special_cases
-from .summary import _counts, conditions
+from .summary import ADVICE, _counts, conditions
 from .typesetting import WIDTH, _describe, _display, _escape, _Named, _tidy, width
 
 __all__ = ["Figure", "report_tex"]
@@ -264,13 +264,6 @@ def _one_sided_section(scene, named: _Named) -> list[str]:
             text.append(_display(Formula(case.name, "0", expr, "<" if sign > 0 else ">", (), ""), named))
         text.append(_display(Formula(case.name, "", case.region.condition, "", (), ""), named))
     return text
-
-
-#: What a user can do when a sign or a closed form does not follow.
-ADVICE = (
-    "Declaring the intervals of the angles ([intervals] in a scene file) or the signs of the parameters "
-    '([parameters], e.g. m = "positive") lets more signs be decided.'
-)
 
 
 def _not_derived(scene, stage: str, error: Exception) -> str:

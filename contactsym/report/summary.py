@@ -24,6 +24,7 @@ from ..mechanism.scene import paper_equations
 from ..printing.latex_output import tex
 from ..stages.regions import Region
 from ..stages.stability import hurwitz_names
+from ..validate import cut
 from .scene_parts import _count_tag
 
 __all__ = ["always_positive", "conditions", "summary_text"]
@@ -94,8 +95,31 @@ def conditions(scene, signs=None) -> dict:
     except TypeError:  # an object that cannot be weakly referenced: nothing to share
         computed = {}
     if key not in computed:
-        computed[key] = _conditions(scene, signs)
+        try:
+            computed[key] = _conditions(scene, signs)
+        except ContactsymError as error:
+            raise _located(error, scene) from error
     return copy.deepcopy(computed[key])
+
+
+#: What a user can do when a sign or a closed form does not follow.
+ADVICE = (
+    "Declaring the intervals of the angles ([intervals] in a scene file) or the signs of the parameters "
+    '([parameters], e.g. m = "positive") lets more signs be decided.'
+)
+
+
+def _located(error: ContactsymError, scene) -> ContactsymError:
+    """The error again, its message cut to a readable length and naming the scene and what to do."""
+    message = cut(str(error), 400)
+    if f"'{scene.name}'" not in message:
+        message = f"scene '{scene.name}', deriving its conditions: {message}"
+    if ADVICE not in message:
+        message += " " + ADVICE
+    try:
+        return type(error)(message)
+    except TypeError:  # an error class with other arguments: the package's base class says the same
+        return ContactsymError(message)
 
 
 def _conditions(scene, signs) -> dict:
