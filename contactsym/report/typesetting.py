@@ -343,10 +343,37 @@ def _tidy(expr):
     cancelled = sp.factor_terms(sp.cancel(expr))
     numerator = sp.fraction(cancelled)[0]
     work = len(sp.Add.make_args(sp.expand(numerator))) * len(numerator.free_symbols | numerator.atoms(sp.Function))
-    if work > TIDY_FACTOR_WORK:
-        return cancelled if len(str(cancelled)) <= len(str(expr)) else expr
-    factored = sp.factor(cancelled)
+    factored = sp.factor(cancelled) if work <= TIDY_FACTOR_WORK else _trial_factored(expr, numerator, cancelled)
     return factored if len(str(factored)) <= len(str(cancelled)) else cancelled
+
+
+def _trial_factored(expr, numerator, cancelled):
+    """``cancelled`` with the factors it shares with the small sums inside ``expr`` divided out (exact
+    polynomial division), the rest left whole: what ``factor`` finds when the rest is irreducible,
+    without proving that it is (which is where ``factor`` spends its time)."""
+    candidates = set()
+    for sub in sp.preorder_traversal(expr):
+        if sub.is_Add and len(sub.args) <= 12 and sub.is_polynomial():
+            candidates |= {f for f, _ in sp.factor_list(sub)[1] if f.is_Add}
+    gens = sorted(numerator.free_symbols, key=sp.default_sort_key)
+    if not candidates or not gens:
+        return cancelled
+    try:
+        exponents, rest = sp.Poly(numerator, *gens).terms_gcd()
+    except sp.PolynomialError:
+        return cancelled
+    found = []
+    for factor in sorted(candidates, key=sp.default_sort_key):
+        divisor = sp.Poly(factor, *gens)
+        while True:
+            quotient, remainder = rest.div(divisor)
+            if not remainder.is_zero:
+                break
+            rest = quotient
+            found.append(factor)
+    content, primitive = rest.primitive()
+    monomial = sp.Mul(*[g**k for g, k in zip(gens, exponents)])
+    return content * monomial * sp.Mul(*found) * primitive.as_expr() / sp.factor(sp.fraction(cancelled)[1])
 
 
 def _nodes(expr, limit: int) -> int:
