@@ -131,7 +131,9 @@ def conditions_text(data: dict) -> str:
     lines.append("Routh-Hurwitz conditions (4.7), all > 0:")
     for entry in data["hurwitz"]:
         name = entry["name"].replace("\\", "").replace("{", "").replace("}", "")
-        lines.append(f"  {name} = {entry['sympy']}")
+        lines.append(
+            f"  {name} > 0 always: {entry['always']}" if entry.get("always") else f"  {name} = {entry['sympy']}"
+        )
     if data.get("hopf_frequency"):
         lines.append(f"Hopf frequency omega (stretched time tau) = {data['hopf_frequency']['sympy']}")
     return "\n".join(lines)

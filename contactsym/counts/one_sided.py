@@ -14,6 +14,11 @@ an impact without collision), one is *consistent* (b > 0: sliding if a < 0, lift
 a > 0), two is *indeterminate* (b < 0, a > 0: lift-off, and a sliding equilibrium that
 is unstable). The signs of every condition are decided from the derived expressions,
 not from this table; the tests compare both.
+
+A sign that does not follow from those of a and b (nor from the mechanics: det M > 0, bounds
+on sin and cos, see :func:`contactsym.algebra.reductions.known_sign`) splits its case in two,
+as the paper does: one with the expression positive, one with it negative, each with its own
+region and equilibria, and the case records which sign it assumed.
 """
 
 from __future__ import annotations
@@ -22,13 +27,17 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from ..algebra.reductions import known_sign, quotient_sign
 from ..errors import ContactsymError
-from ..stages.regions import Region, closed_form, known_sign
+from ..stages.regions import Region, closed_form
 from .orthants import scene_map
 
 __all__ = ["OneSidedCase", "one_sided_cases"]
 
 _NAMES = {0: "inconsistent", 1: "consistent", 2: "indeterminate"}
+
+#: Splits on undecided Hurwitz signs per case beyond which a stability is left undecided (None).
+STABILITY_SPLITS = 3
 
 
 @dataclass(frozen=True)
@@ -41,8 +50,12 @@ class OneSidedCase:
         'consistent', 'inconsistent' or 'indeterminate'.
     region : Region
         Where the case holds, in the scene's symbols.
-    equilibria : tuple of (str, bool)
-        ('sliding' or 'lift-off', stable) for each equilibrium that exists.
+    equilibria : tuple of (str, bool or None)
+        ('sliding' or 'lift-off', stable) for each equilibrium that exists; stable is None
+        when its sign could not be decided even after splitting.
+    assumed : tuple of (Expr, int)
+        Expressions whose sign does not follow from those of a and b, with the sign this
+        case assumes (the case split); empty when the signs of a and b decide everything.
 
     Examples
     --------
@@ -55,21 +68,56 @@ class OneSidedCase:
     name: str
     region: Region
     equilibria: tuple
+    assumed: tuple = ()
 
 
-def _sign_of(expr, signs: dict, positive) -> int:
-    """The sign of ``expr`` from the signs of a and b: expr is a known-sign multiple of a, b, a b or a/b."""
-    (a, a_sign), (b, b_sign) = signs.items()
-    for ratio, sign in ((b, b_sign), (a, a_sign), (a * b, a_sign * b_sign), (a / b, a_sign * b_sign)):
-        known = known_sign(sp.cancel(expr / ratio), positive)
-        if known is not None:
-            return known * sign
-    raise ContactsymError(f"the sign of {expr} does not follow from those of a = {a} and b = {b}.")
+class _Undecided(Exception):
+    """The sign of ``expr`` does not follow from the signs known so far."""
+
+    def __init__(self, expr):
+        super().__init__()
+        self.expr = expr
 
 
-def _holds(condition, signs: dict, positive) -> bool:
-    """A conjunction of ``e > 0``, decided from the signs of a and b."""
-    return all(_sign_of(rel.lhs - rel.rhs, signs, positive) > 0 for rel in sp.And.make_args(condition))
+def _sign_of(expr, known: tuple, positive) -> int | None:
+    """The sign of ``expr`` as a known-sign multiple of 1, of a known expression, of a b or of a/b."""
+    (a, a_sign), (b, b_sign) = known[:2]
+    candidates = ((1, 1),) + known + ((a * b, a_sign * b_sign), (a / b, a_sign * b_sign))
+    for ratio, sign in candidates:
+        if expr == ratio:
+            return sign
+        found = quotient_sign(expr, ratio, positive)
+        if found is None:  # not a polynomial multiple: what cancelling the fraction shows
+            found = known_sign(sp.cancel(expr / ratio), positive)
+        if found is not None:
+            return found * sign
+    return None
+
+
+def _holds(condition, known: tuple, positive) -> bool:
+    """A conjunction of strict inequalities, decided from the known signs; _Undecided names the first gap."""
+    if condition in (sp.true, sp.false):
+        return bool(condition)
+    for rel in sp.And.make_args(condition):
+        if not isinstance(rel, (sp.StrictGreaterThan, sp.StrictLessThan)):
+            raise ContactsymError(f"one_sided_cases expects strict inequalities, not {type(rel).__name__}.")
+        difference = rel.gts - rel.lts
+        sign = _sign_of(difference, known, positive)
+        if sign is None:
+            raise _Undecided(difference)
+        if sign < 0:
+            return False
+    return True
+
+
+def _split(evaluate, known: tuple, splits: int = 0) -> list:
+    """[(known signs, result)] of ``evaluate(known, splits)``, split on every sign it cannot decide."""
+    try:
+        return [(known, evaluate(known, splits))]
+    except _Undecided as gap:
+        if any(gap.expr == expr for expr, _ in known):  # cannot happen (a known sign decides itself): no loop
+            raise ContactsymError("one_sided_cases: a case split did not decide its own sign.") from None
+        return [case for sign in (1, -1) for case in _split(evaluate, known + ((gap.expr, sign),), splits + 1)]
 
 
 def one_sided_cases(scene) -> list[OneSidedCase]:
@@ -84,11 +132,11 @@ def one_sided_cases(scene) -> list[OneSidedCase]:
     --------
     >>> import contactsym as cs
     >>> for case in one_sided_cases(cs.scene("painleve-rod")):
-    ...     print(case.name, case.equilibria)
-    consistent (('sliding', True),)
-    consistent (('lift-off', True),)
-    inconsistent ()
-    indeterminate (('sliding', False), ('lift-off', True))
+    ...     print(case.name, case.equilibria, case.assumed)
+    consistent (('sliding', True),) ()
+    consistent (('lift-off', True),) ()
+    inconsistent () ()
+    indeterminate (('sliding', False), ('lift-off', True)) ()
     """
     if scene.k != 1 or not scene.contacts[0].unilateral:
         raise ContactsymError(f"one_sided_cases needs one unilateral contact; scene '{scene.name}' is not one.")
@@ -99,18 +147,32 @@ def one_sided_cases(scene) -> list[OneSidedCase]:
     (sliding,) = equilibria.branches
     (lift,) = equilibria.lift_offs
     hurwitz = scene.stability(sliding.signs).hurwitz
+    pushing = sp.And(sliding.condition, sp.Gt(sliding.u_star[0], 0))  # the contact pushes: N* > 0
+
+    def stable(known, splits) -> bool | None:
+        try:
+            return all(_holds(h > 0, known, positive) for h in hurwitz)
+        except _Undecided:
+            if splits >= STABILITY_SPLITS:
+                return None
+            raise
+
+    def evaluate(known, splits) -> tuple:
+        found = []
+        if _holds(pushing, known, positive):
+            found.append(("sliding", stable(known, splits)))
+        if _holds(lift.condition, known, positive):
+            found.append(("lift-off", lift.stable == sp.true or _holds(lift.stable, known, positive)))
+        return tuple(found)
+
     cases = []
     for slope_sign in (1, -1):
         for a_sign in (-1, 1):
-            signs = {a: a_sign, slope: slope_sign}
-            found = []
-            if _holds(sliding.condition, signs, positive):
-                found.append(("sliding", all(_sign_of(h, signs, positive) > 0 for h in hurwitz)))
-            if _holds(lift.condition, signs, positive):
-                found.append(("lift-off", lift.stable == sp.true))
-            condition = sp.And(closed_form(slope_sign * slope > 0, scene), closed_form(a_sign * a > 0, scene))
-            if condition == sp.false:
-                continue
-            name = _NAMES[len(found)]
-            cases.append(OneSidedCase(name, Region(condition, name=name), tuple(found)))
+            for known, found in _split(evaluate, ((a, a_sign), (slope, slope_sign))):
+                assumed = known[2:]
+                condition = sp.And(*(closed_form(sign * expr > 0, scene) for expr, sign in known))
+                if condition == sp.false:
+                    continue
+                name = _NAMES[len(found)]
+                cases.append(OneSidedCase(name, Region(condition, name=name), found, assumed))
     return cases

@@ -220,17 +220,23 @@ class Scene(LatexReprMixin):
     @cached_property
     def positive_expressions(self) -> tuple:
         """Expressions positive throughout the scene's domain: the declared ones (e.g.
-        sin(alpha), 0 < alpha < pi) and, for a Lagrangian scene, the factor of det M > 0
-        on the contact manifold that is not a monomial (when it is irreducible)."""
+        sin(alpha), 0 < alpha < pi) and, for a Lagrangian scene, ``mass_matrix_factor``."""
+        factor = self.mass_matrix_factor
+        return self._declared_positive + (() if factor is None else (factor,))
+
+    @cached_property
+    def mass_matrix_factor(self) -> sp.Expr | None:
+        """For a Lagrangian scene, the factor of det M > 0 on the contact manifold that is not a
+        monomial, with the sign that makes it positive (M is positive definite); else None."""
         if self.contact_space is None:
-            return self._declared_positive
+            return None
         inverse = mass_determinant(self.contact_space.M.applyfunc(self.freeze))
         monomial, rest = inverse.denominator_split()
         sign = known_sign(monomial / inverse.numerator_expr(), self._declared_positive)
         if sign is None or rest == 1:
-            return self._declared_positive
+            return None
         form, scale = present_factor(rest, inverse.pairs)
-        return self._declared_positive + ((1 if scale > 0 else -1) * sign * form,)
+        return (1 if scale > 0 else -1) * sign * form
 
     @cached_property
     def accelerations(self) -> dict:

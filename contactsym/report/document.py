@@ -31,10 +31,11 @@ from ..mechanism.scene import paper_equations
 from ..printing.latex_output import Formula, formulas, tex
 from ..scenes import paper_name
 from ..stages.stability import generic_minors, hurwitz_names, robustness_formulas
+from ..validate import cut
 from .errata import AGREE, latex_table, text_to_latex
 from .scene_parts import _count_tag, _special_cases
-from .summary import _counts
-from .typesetting import WIDTH, _describe, _display, _escape, _Named, width
+from .summary import ADVICE, _counts, conditions
+from .typesetting import WIDTH, _describe, _display, _escape, _Named, _tidy, width
 
 __all__ = ["Figure", "report_tex"]
 
@@ -191,25 +192,19 @@ def _linearization_section(scene, named: _Named) -> str:
     return "\n".join(text)
 
 
-def _tidy(expr):
-    """A readable form: the common denominator pulled out, the numerator factored when that is short."""
-    expr = sp.factor_terms(sp.cancel(expr))
-    factored = sp.factor(expr)
-    return factored if len(str(factored)) <= len(str(expr)) else expr
-
-
 def _hurwitz_section(scene, named: _Named) -> str:
     st = scene.stability()
     names = hurwitz_names(st)
     n = st.linearization.charpoly.degree()
     generic = generic_minors(n)
-    text = [
-        _section(
-            "6. Routh--Hurwitz conditions (4.7)",
-            r"Li\'enard--Chipart form: all roots of (4.6) have negative real parts exactly when "
-            f"${', '.join(names)} > 0$" + r" (coefficients that are positive numbers are left out).",
-        )
-    ]
+    always = {entry["name"]: entry["always"] for entry in conditions(scene)["hurwitz"] if "always" in entry}
+    needed = [name for name in names if name not in always]
+    intro = r"Li\'enard--Chipart form: all roots of (4.6) have negative real parts " + (
+        f"exactly when ${', '.join(needed)} > 0$" if needed else "always"
+    )
+    intro += r" (coefficients that are positive numbers are left out"
+    intro += "".join(f"; ${name} > 0$ always: {_escape(reason)}" for name, reason in always.items()) + ")."
+    text = [_section("6. Routh--Hurwitz conditions (4.7)", intro)]
     show = scene.present if scene.presentation else (lambda e: e)
     numbers, _ = paper_equations(scene, "hurwitz")
     for name, condition in zip(names, st.hurwitz):
@@ -261,11 +256,34 @@ def _one_sided_section(scene, named: _Named) -> list[str]:
     if scene.k != 1 or not scene.contacts[0].unilateral:
         return []
     text = [r"\subsection*{One-sided contact: consistent, inconsistent, indeterminate}"]
-    for case in one_sided_cases(scene):
-        found = ", ".join(f"{kind} ({'stable' if stable else 'unstable'})" for kind, stable in case.equilibria)
+    try:
+        cases = one_sided_cases(scene)
+    except Exception as error:  # a section that cannot be derived must not cost the rest of the report
+        return text + [_not_derived(scene, "the one-sided cases", error)]
+    words = {True: "stable", False: "unstable", None: "stability not decided"}
+    if any(case.assumed for case in cases):
+        text.append(
+            "Where a sign does not follow from those of $a$ and $b$ (nor from the mechanics), the case is "
+            "split in two, as in the paper: the undecided expression positive, then negative."
+        )
+    for case in cases:
+        found = ", ".join(f"{kind} ({words[stable]})" for kind, stable in case.equilibria)
         text.append(f"\\paragraph{{{_escape(case.name.capitalize())}.}} " + _escape(found or "no equilibrium"))
+        for expr, sign in case.assumed:
+            text.append("The sign of this expression was not decided; this case takes it " + _sign_word(sign) + ":")
+            text.append(_display(Formula(case.name, "0", expr, "<" if sign > 0 else ">", (), ""), named))
         text.append(_display(Formula(case.name, "", case.region.condition, "", (), ""), named))
     return text
+
+
+def _not_derived(scene, stage: str, error: Exception) -> str:
+    """A paragraph in place of a section that could not be derived: the stage, the scene, the reason cut short."""
+    reason = cut(str(error) or type(error).__name__, 300)
+    return _escape(f"Not derived: {stage} of scene '{scene.name}' ({type(error).__name__}: {reason}). {ADVICE}")
+
+
+def _sign_word(sign: int) -> str:
+    return "positive" if sign > 0 else "negative"
 
 
 def _figures_section(figures: list[Figure], notes: list[str]) -> str:
@@ -374,7 +392,10 @@ def _reduced_section(scene, named: _Named) -> str:
             "The slow motion with the reactions of an equilibrium branch: the classical rigid-contact model.",
         )
     ]
-    branches = scene.equilibria().branches
+    try:
+        branches = scene.equilibria().branches
+    except Exception as error:  # the reduced system is an extra: its failure must not cost the report
+        return "\n".join(text + [_not_derived(scene, "the reduced system", error)])
     if len(branches) != 1:
         text.append(
             _escape(
@@ -383,5 +404,9 @@ def _reduced_section(scene, named: _Named) -> str:
             )
         )
         return "\n".join(text)
-    text += [_display(f, named) for f in formulas(scene.reduced_system()) if f.key == "reduced"]
+    try:
+        rows = [f for f in formulas(scene.reduced_system()) if f.key == "reduced"]
+    except Exception as error:  # as above
+        return "\n".join(text + [_not_derived(scene, "the reduced system", error)])
+    text += [_display(f, named) for f in rows]
     return "\n".join(text)

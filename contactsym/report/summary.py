@@ -13,8 +13,12 @@ Examples
 
 from __future__ import annotations
 
+import copy
+import weakref
+
 import sympy as sp
 
+from ..algebra.reductions import known_sign, quotient_sign
 from ..errors import ContactsymError
 from ..mechanism.scene import paper_equations
 from ..printing.latex_output import tex
@@ -23,7 +27,7 @@ from ..stages.stability import hurwitz_names
 from ..validate import cut
 from .scene_parts import _count_tag
 
-__all__ = ["conditions", "summary_text"]
+__all__ = ["always_positive", "conditions", "summary_text"]
 
 
 def _counts(scene) -> tuple[dict[str, Region], str]:
@@ -43,11 +47,40 @@ def _entry(expr, paper=(), note="") -> dict:
     return entry
 
 
+def always_positive(scene, condition) -> str | None:
+    """Why ``condition > 0`` holds throughout the scene's domain, or None when that is not proved.
+
+    The proof is exact (:func:`contactsym.algebra.reductions.known_sign`); the answer names it.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> s = cs.scene("double-pendulum-tip")
+    >>> [always_positive(s, h) for h in s.stability().hurwitz]
+    ['a positive multiple of det M', None, None]
+    """
+    positive = tuple(scene.positive_expressions)
+    factor = getattr(scene, "mass_matrix_factor", None)
+    if factor is not None and quotient_sign(condition, factor, positive) == 1:
+        return "a positive multiple of det M"
+    if known_sign(condition, positive) != 1:
+        return None
+    if known_sign(condition) != 1:
+        return "positive on the scene's declared intervals"
+    return "positive for all values of its symbols"
+
+
+#: conditions() of each scene, computed once: the report, the summary and the JSON share them.
+_COMPUTED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
 def conditions(scene, signs=None) -> dict:
     """The scene's conditions as JSON-ready data: regions, Hurwitz conditions, A, branches.
 
     Each expression is given as SymPy text (``sympy``) and LaTeX (``latex``), with the
-    paper's equation numbers where it has them. ``signs`` selects one sign pattern.
+    paper's equation numbers where it has them. ``signs`` selects one sign pattern. A Hurwitz
+    condition that always holds has a note ``always`` that says why (see :func:`always_positive`).
+    Computed once per scene and sign pattern; each call returns its own copy.
 
     Examples
     --------
@@ -56,6 +89,40 @@ def conditions(scene, signs=None) -> dict:
     >>> data["regions"]["stable for every law"]["sympy"], data["regions"]["stable for every law"]["paper"]
     ('mu <= Abs(cot(alpha))', ['(4.4)', '(6.3)'])
     """
+    key = None if signs is None else tuple(signs)
+    try:
+        computed = _COMPUTED.setdefault(scene, {})
+    except TypeError:  # an object that cannot be weakly referenced: nothing to share
+        computed = {}
+    if key not in computed:
+        try:
+            computed[key] = _conditions(scene, signs)
+        except ContactsymError as error:
+            raise _located(error, scene) from error
+    return copy.deepcopy(computed[key])
+
+
+#: What a user can do when a sign or a closed form does not follow.
+ADVICE = (
+    "Declaring the intervals of the angles ([intervals] in a scene file) or the signs of the parameters "
+    '([parameters], e.g. m = "positive") lets more signs be decided.'
+)
+
+
+def _located(error: ContactsymError, scene) -> ContactsymError:
+    """The error again, its message cut to a readable length and naming the scene and what to do."""
+    message = cut(str(error), 400)
+    if f"'{scene.name}'" not in message:
+        message = f"scene '{scene.name}', deriving its conditions: {message}"
+    if ADVICE not in message:
+        message += " " + ADVICE
+    try:
+        return type(error)(message)
+    except TypeError:  # an error class with other arguments: the package's base class says the same
+        return ContactsymError(message)
+
+
+def _conditions(scene, signs) -> dict:
     st = scene.stability(signs)
     lin = scene.linearization(signs)
     data = {
@@ -82,7 +149,11 @@ def conditions(scene, signs=None) -> dict:
         data["regions"][name] = _entry(region.condition, *paper_equations(scene, name))
     for name, condition in zip(hurwitz_names(st), st.hurwitz):
         key = "coefficient" if name.startswith("p") else "hurwitz"
-        data["hurwitz"].append({"name": name, **_entry(condition, *paper_equations(scene, key))})
+        entry = {"name": name, **_entry(condition, *paper_equations(scene, key))}
+        reason = always_positive(scene, condition)
+        if reason:
+            entry["always"] = reason
+        data["hurwitz"].append(entry)
     if st.hopf_frequency is not None:
         data["hopf_frequency"] = _entry(st.hopf_frequency)
     if st.robustness is not None:
