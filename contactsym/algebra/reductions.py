@@ -2,7 +2,9 @@
 
 - ``SignSymbol`` and ``reduce_signs``: s**2 = 1 for the sign symbols of open sign patterns;
 - ``reduce_trig``: cos(x)**2 = 1 - sin(x)**2, a polynomial reduction;
-- ``known_sign``: +1 or -1 when assumptions and declared positive expressions decide it.
+- ``known_sign``: +1 or -1 when assumptions and declared positive expressions decide it;
+- ``PaperSymbol``: the theory's own symbols (u_j, v_j, Phi_j, Psi_j, epsilon, tau, lambda), never
+  equal to a user's symbol of the same name.
 
 A leaf module: :mod:`contactsym.algebra.canonical_form` builds its normal form on these rules, and
 :mod:`contactsym.algebra.basic` gathers both for the stages.
@@ -14,7 +16,26 @@ import sympy as sp
 
 from ..parse import sympy_only
 
-__all__ = ["SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "known_sign"]
+__all__ = ["PaperSymbol", "SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "known_sign"]
+
+
+class PaperSymbol(sp.Symbol):
+    """A symbol the theory introduces (u_j, v_j, Phi_j, Psi_j, epsilon, tau, lambda), printed with the paper's name.
+
+    It never equals a user's ``Symbol`` of the same name and assumptions, so a parameter called
+    ``u`` stays the user's ``u``; it sorts as a plain symbol of its name, so formulas print in the
+    same order as with plain symbols.
+
+    Examples
+    --------
+    >>> u = PaperSymbol("u", real=True)
+    >>> u == sp.Symbol("u", real=True), str(u), sp.latex(PaperSymbol("Phi_1", negative=True))
+    (False, 'u', '\\Phi_{1}')
+    """
+
+    @classmethod
+    def class_key(cls):
+        return sp.Symbol.class_key()
 
 
 class SignSymbol(sp.Symbol):

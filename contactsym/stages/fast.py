@@ -15,7 +15,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from ..algebra.basic import normalize, present
+from ..algebra.basic import PaperSymbol, normalize, present
 from ..algebra.fraction_free import solve_fraction_free, t
 from ..errors import ContactsymError, SceneError, SingularJacobianError
 from ..printing.latex_output import Formula, Numbering, _repr_latex, prime, tex
@@ -255,9 +255,22 @@ class FastSubsystem:
         return tuple(sorted(free, key=str))
 
     def _names(self, letter: str) -> tuple[sp.Symbol, ...]:
-        if self.k == 1:
-            return (sp.Symbol(letter, real=True),)
-        return tuple(sp.Symbol(f"{letter}_{j}", real=True) for j in range(1, self.k + 1))
+        """u or u_1..u_k: the paper's names, as symbols no user symbol equals (``PaperSymbol``).
+
+        Where a symbol of the scene already prints as one of them (a parameter or coordinate
+        called ``u``), the fast variables print with a hat (``uhat``, LaTeX ``\\hat{u}``), so that
+        no printed formula shows two different symbols under one name.
+        """
+        taken = set(getattr(self.scene, "symbol_names", ()))
+
+        def names(base: str) -> list[str]:
+            return [base] if self.k == 1 else [f"{base}_{j}" for j in range(1, self.k + 1)]
+
+        bases = [letter + mark for mark in ("", "hat", "check", "tilde", "breve")]
+        base = next((b for b in bases if not taken.intersection(names(b))), letter * 2)
+        while taken.intersection(names(base)):  # every decorated name taken: lengthen the letter
+            base += letter
+        return tuple(PaperSymbol(name, real=True) for name in names(base))
 
     @cached_property
     def u(self) -> tuple[sp.Symbol, ...]:

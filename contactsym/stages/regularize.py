@@ -16,7 +16,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from ..algebra.basic import normalize
+from ..algebra.basic import PaperSymbol, normalize
 from ..algebra.fraction_free import t
 from ..errors import ContactsymError
 from ..printing.latex_output import Formula, Numbering, _repr_latex, prime, tex
@@ -62,7 +62,8 @@ class Regularized:
 
     @cached_property
     def tau(self) -> sp.Symbol:
-        return sp.Symbol("tau", positive=True)
+        taken = set(getattr(self.scene, "symbol_names", ()))
+        return PaperSymbol(next((n for n in ("tau", "tauhat", "taucheck") if n not in taken), "tau_0"), positive=True)
 
     @cached_property
     def slow_coordinates(self) -> tuple:
@@ -94,7 +95,7 @@ class Regularized:
     def x(self) -> sp.Matrix:
         plain = [self.scene.plain(q) for q in self.slow_coordinates]
         rates = [self.scene.plain(sp.diff(q, t)) for q in self.slow_coordinates]
-        return sp.Matrix([sp.Symbol("t", real=True), *plain, *rates])
+        return sp.Matrix([PaperSymbol("t", real=True), *plain, *rates])
 
     @cached_property
     def X(self) -> sp.Matrix:
