@@ -235,7 +235,7 @@ def check_inertia(scene) -> str:
             raise SceneError(
                 f"the mass matrix is not positive definite: the kinetic energy of coordinate {names[i]} is "
                 f"{shorten(M[i, i])}/2 * {names[i]}'^2{where}, not positive; masses and moments of inertia must be "
-                "positive: declare them positive (e.g. m = \"positive\") and give each body a positive mass and inertia."
+                'positive: declare them positive (e.g. m = "positive") and give each body a positive mass and inertia.'
             )
         raise SceneError(
             f"the mass matrix is not positive definite in the coordinates {names[: i + 1]}{where}: the kinetic "

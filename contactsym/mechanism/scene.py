@@ -252,7 +252,9 @@ class Scene:
         """The names of the symbols the user gave (parameters, reactions, coordinates), without the frozen state."""
         if self.contact_space is not None:
             space = self.contact_space
-            stated = [*space.M, *space.F, *space.W] + [x for term in space.friction if term for x in (*term[0], term[1])]
+            stated = [*space.M, *space.F, *space.W] + [
+                x for term in space.friction if term for x in (*term[0], term[1])
+            ]
         else:
             stated = list(self.accelerations.values())
         stated += [*self.gaps, *self.reactions, *self.at, *self.at.values(), *self.declared_parameters]

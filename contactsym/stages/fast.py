@@ -169,6 +169,15 @@ def _no_real_root(f: sp.Matrix, u: tuple) -> bool:
     return bool(complete) and all(any(sp.im(root[z]).is_nonzero for z in free) for root in roots)
 
 
+def _decorated(name: str, taken) -> str:
+    """``name`` with a hat (Phi_1 -> Phihat_1, LaTeX \\hat{\\Phi}_{1}), or another accent, not in ``taken``."""
+    base, underscore, index = name.partition("_")
+    for mark in ("hat", "check", "tilde", "breve"):
+        if base + mark + underscore + index not in taken:
+            return base + mark + underscore + index
+    return _decorated(base + base[-1] + underscore + index, taken)
+
+
 @dataclass(frozen=True, eq=False)
 class FastSubsystem:
     """The fast subsystem (2.1) of a scene. All attributes are SymPy objects.
@@ -305,7 +314,15 @@ class FastSubsystem:
     @cached_property
     def _laws(self) -> tuple[tuple[sp.Expr, sp.Expr], ...]:
         index = (lambda j: None) if self.k == 1 else (lambda j: j + 1)
-        return tuple(law.phi_psi(self.u[j], self.v[j], index(j)) for j, law in enumerate(self.compliances))
+        taken = set(getattr(self.scene, "symbol_names", ()))
+        laws = []
+        for j, law in enumerate(self.compliances):
+            phi_psi = law.phi_psi(self.u[j], self.v[j], index(j))
+            # a generic law's Phi, Psi print with a hat where a scene symbol has their name
+            own = [c for c in law.coefficients(index(j)) if isinstance(c, PaperSymbol) and c.name in taken]
+            hats = {c: PaperSymbol(_decorated(c.name, taken), **c.assumptions0) for c in own}
+            laws.append(tuple(sp.sympify(x).xreplace(hats) for x in phi_psi))
+        return tuple(laws)
 
     @cached_property
     def Phi(self) -> tuple[sp.Expr, ...]:

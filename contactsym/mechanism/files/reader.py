@@ -179,6 +179,16 @@ class _Reader(PlaneMixin, ContactsMixin):
                 )
             self.declare(name, symbol, "parameters", name)
             if interval is not None:
+                if (
+                    (symbol.is_positive and high <= 0)
+                    or (symbol.is_nonnegative and high < 0)
+                    or (symbol.is_negative and low >= 0)
+                ):
+                    self.doc.fail(
+                        "parameters",
+                        name,
+                        f"the interval [{low}, {high}] has no {spec} value; change the interval or the assumption",
+                    )
                 self.positive += _positive_on(symbol, low, high)
 
     def intervals(self) -> None:
@@ -268,6 +278,7 @@ class _Reader(PlaneMixin, ContactsMixin):
         name = head.get("name", self.default_name)
         if not isinstance(name, str) or not _SCENE_NAME.match(name):
             self.doc.fail("scene", "name", f"the name {shown(name)} must be letters, digits, '-', '_' or '.'")
+        frozen = {q.func.__name__ for q in coordinates}
         options = dict(
             name=name,
             description=str(head.get("description", "")),
@@ -275,6 +286,9 @@ class _Reader(PlaneMixin, ContactsMixin):
             presentation=self.substitutions("presentation", plain=True),
             positive=tuple(self.positive),
             solve_for=solve_for,
+            # a parameter called ydot stays a parameter, apart from the frozen rate of y; one printed as a
+            # coordinate (symbol = "theta") is that frozen coordinate, for [at]
+            parameters=[v for v in self.names.values() if isinstance(v, sp.Symbol) and str(v) not in frozen],
         )
         try:
             if lagrangian:
