@@ -200,7 +200,7 @@ def _positive_definite(M: sp.Matrix, positive) -> str | tuple[int, dict | None]:
         return "proved"
     points = _sample_points(list(M), positive)
     for point in points:
-        at = M.applyfunc(lambda e: _at(e, point))
+        at = sp.Matrix(n, n, [_at(e, point) for e in M])
         for i in range(1, n + 1):
             if _sign_at(at[:i, :i].det(method="berkowitz"), {}) != 1:
                 return i - 1, point
@@ -233,9 +233,10 @@ def check_inertia(scene) -> str:
         where = f" at {_shown_point(point)}" if point else ""
         if point is None or i == 0 or _sign_at(M[i, i], point) != 1:
             raise SceneError(
-                f"the mass matrix is not positive definite: the kinetic energy of coordinate {names[i]} is "
-                f"{shorten(M[i, i])}/2 * {names[i]}'^2{where}, not positive; masses and moments of inertia must be "
-                'positive: declare them positive (e.g. m = "positive") and give each body a positive mass and inertia.'
+                f"the mass matrix is not positive definite: its entry M[{names[i]}, {names[i]}] = {shorten(M[i, i])}"
+                f"{where} is not positive, so moving {names[i]} alone has no positive kinetic energy; masses and "
+                'moments of inertia must be positive: declare them positive (e.g. m = "positive") and give each '
+                "body a positive mass and inertia."
             )
         raise SceneError(
             f"the mass matrix is not positive definite in the coordinates {names[: i + 1]}{where}: the kinetic "
@@ -254,15 +255,18 @@ def _check_push(scene, positive) -> str:
         friction = {a: 0 for a in g.atoms(sp.Abs, sp.sign) if a.has(*reactions)}
         push = sp.diff(g.xreplace(friction), contact.reaction)
         gap = scene.plain(contact.coordinate)
+        if push == 0 or push.has(*reactions):  # no push (refused with f), or a force not linear in N: no mass
+            verdicts.append("unchecked")
+            continue
         sign = known_sign(push, positive)
         point = None
-        if push != 0 and sign is None:
+        if sign is None:
             points = _sample_points([push], positive)
             point = next((p for p in points if _sign_at(push, p) != 1), None)
             verdicts.append("sampled" if points else "unchecked")
         else:
             verdicts.append("proved")
-        if push == 0 or sign == -1 or point is not None:
+        if sign == -1 or point is not None:
             where = f" at {_shown_point(point)}" if point else ""
             raise SceneError(
                 f"the reaction {contact.reaction} does not push its contact {gap} open: d({gap})''/d{contact.reaction} "
