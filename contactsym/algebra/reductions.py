@@ -20,7 +20,7 @@ __all__ = ["PaperSymbol", "SignSymbol", "sign_symbols", "reduce_signs", "reduce_
 
 
 class PaperSymbol(sp.Symbol):
-    """A symbol the theory introduces (u_j, v_j, Phi_j, Psi_j, epsilon, tau, lambda), printed with the paper's name.
+    r"""A symbol the theory introduces (u_j, v_j, Phi_j, Psi_j, epsilon, tau, lambda), printed with the paper's name.
 
     It never equals a user's ``Symbol`` of the same name and assumptions, so a parameter called
     ``u`` stays the user's ``u``; it sorts as a plain symbol of its name, so formulas print in the

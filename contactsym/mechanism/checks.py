@@ -218,9 +218,8 @@ def check_inertia(scene) -> str:
 
     Proved from the declared assumptions where Sylvester's criterion decides it (positive masses
     and inertias), otherwise checked exactly at sample points (sin and cos of each angle on a
-    rational point of the circle). A scene given by accelerations has no mass matrix; there each
-    reaction must push its own contact open, d g_j''/dN_j > 0 (a diagonal entry of W^T M^-1 W).
-    Returns 'proved', 'sampled' or 'unchecked'; raises SceneError naming the coordinates.
+    rational point of the circle). Returns 'proved', 'sampled' or 'unchecked' (a scene given by
+    its accelerations has no mass matrix); raises SceneError naming the coordinates.
     """
     positive = scene._declared_positive
     if scene.contact_space is not None:
@@ -243,34 +242,6 @@ def check_inertia(scene) -> str:
             "energy can be zero or negative for a motion of them; check the signs of the masses and inertias "
             "(they must be positive) and of the lengths that couple these coordinates."
         )
-    return _check_push(scene, positive)
-
-
-def _check_push(scene, positive) -> str:
-    """Each reaction pushes its contact open: d g_j''/dN_j > 0 without friction (Abs and sign of N set to 0)."""
-    reactions = scene.reactions
-    verdicts = []
-    for contact, g in zip(scene.contacts, scene.gap_accelerations):
-        g = scene.plain(g)
-        friction = {a: 0 for a in g.atoms(sp.Abs, sp.sign) if a.has(*reactions)}
-        push = sp.diff(g.xreplace(friction), contact.reaction)
-        gap = scene.plain(contact.coordinate)
-        if push == 0 or push.has(*reactions):  # no push (refused with f), or a force not linear in N: no mass
-            verdicts.append("unchecked")
-            continue
-        sign = known_sign(push, positive)
-        point = None
-        if sign is None:
-            points = _sample_points([push], positive)
-            point = next((p for p in points if _sign_at(push, p) != 1), None)
-            verdicts.append("sampled" if points else "unchecked")
-        else:
-            verdicts.append("proved")
-        if sign == -1 or point is not None:
-            where = f" at {_shown_point(point)}" if point else ""
-            raise SceneError(
-                f"the reaction {contact.reaction} does not push its contact {gap} open: d({gap})''/d{contact.reaction} "
-                f"= {shorten(push)}{where}, not positive, as with a negative or zero mass; masses and moments of "
-                "inertia must be positive (declare them positive) and each reaction must act along its contact's normal."
-            )
-    return min(verdicts, key=("unchecked", "sampled", "proved").index) if verdicts else "proved"
+    # accelerations may hold friction on a piece (mu |N| = mu N for N > 0), so dg''/dN of either sign is
+    # admissible there (the Painleve paradox is A < 0): without a mass matrix there is nothing to check
+    return "unchecked"

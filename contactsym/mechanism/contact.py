@@ -77,7 +77,7 @@ def plain_symbol(symbol: sp.Expr, suffix: str = "") -> sp.Symbol:
 
 
 def frozen_symbol(symbol: sp.Expr, suffix: str = "", taken=()) -> sp.Symbol:
-    """The frozen coordinate or rate (see :func:`plain_symbol`); a ``PaperSymbol`` with a hat when
+    r"""The frozen coordinate or rate (see :func:`plain_symbol`); a ``PaperSymbol`` with a hat when
     ``taken`` (declared parameters' names) has its plain name, so the two never merge.
 
     Examples

@@ -95,7 +95,7 @@ class Regularized:
     def x(self) -> sp.Matrix:
         plain = [self.scene.plain(q) for q in self.slow_coordinates]
         rates = [self.scene.plain(sp.diff(q, t)) for q in self.slow_coordinates]
-        return sp.Matrix([PaperSymbol("t", real=True), *plain, *rates])
+        return sp.Matrix([sp.Symbol("t", real=True), *plain, *rates])
 
     @cached_property
     def X(self) -> sp.Matrix:
