@@ -62,6 +62,19 @@ def test_a_file_parameter_called_u_gives_the_verdict_of_any_other_name(tmp_path)
         assert verdicts[name][2] == (2 * p,)  # ydot is the parameter, not the frozen rate y' = 0
 
 
+def test_a_file_parameter_printed_as_u(tmp_path):
+    path = tmp_path / "printed.toml"
+    path.write_text(
+        '[scene]\nname = "one"\ncoordinates = ["x", "y"]\n[parameters]\nw = { assume = "real", symbol = "u" }\n'
+        '[accelerations]\nx = "0"\ny = "N - 2*w"\n[[contacts]]\ngap = "y"\nreaction = "N"\n'
+    )
+    s = cs.load_scene(path)
+    (u,) = s.fast_subsystem().u
+    (w,) = [p for p in s.fast_subsystem().parameters if str(p) == "u"]
+    assert (str(u), str(w)) == ("uhat", "u") and u != w
+    assert s.equilibria().branches[0].u_star == (2 * w,) and s.stability().robustly_stable == sp.true
+
+
 def test_a_coordinate_called_u_and_a_parameter_called_v():
     u_, w = dynamicsymbols("u w")
     v_ = sp.Symbol("v", real=True)
