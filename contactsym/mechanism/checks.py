@@ -1,8 +1,10 @@
 """Checks of a scene's mechanical input, with messages that say how to fix it.
 
 The small parameter eps (1.6), the paper's numbers of a built-in scene, the friction of
-attached laws folded into the accelerations (1.4), and the consistency of coordinates,
-contacts, reactions and declared parameters.
+attached laws folded into the accelerations (1.4), the consistency of coordinates,
+contacts, reactions and declared parameters, the names the user's symbols take (the
+pipeline's own symbols print apart from them), and positive masses and inertias (a
+positive definite mass matrix).
 """
 
 from __future__ import annotations
@@ -15,9 +17,10 @@ from ..algebra.basic import PaperSymbol, known_sign
 from ..errors import SceneError
 from ..parse import sympy_only
 from ..validate import finite_expression, positive_parameter, reactions_act, shorten
+from .contact import plain_symbol
 from .contact_space import t
 
-__all__ = ["check_eps", "check_equations", "check_inertia", "check_scene", "with_friction"]
+__all__ = ["check_eps", "check_equations", "check_inertia", "check_scene", "user_names", "with_friction"]
 
 
 def check_eps(eps, taken=()) -> sp.Expr:
@@ -117,6 +120,22 @@ def check_scene(scene, parameters) -> None:
                 f"symbols {sorted(map(str, unknown))} are not among the declared parameters; "
                 "declare them or fix the spelling."
             )
+
+
+def user_names(scene) -> frozenset:
+    """The names of the symbols the user gave a scene (parameters, reactions, coordinates and their rates)."""
+    if scene.contact_space is not None:
+        space = scene.contact_space
+        stated = [*space.M, *space.F, *space.W] + [x for term in space.friction if term for x in (*term[0], term[1])]
+    else:
+        stated = list(scene.accelerations.values())
+    stated += [*scene.gaps, *scene.reactions, *scene.at, *scene.at.values(), *scene.declared_parameters]
+    for contact in scene.contacts:
+        stated += [*contact.compliance.parameters()]
+    names = {str(s) for x in stated for s in sp.sympify(x).free_symbols}
+    for q in scene.coordinates:
+        names |= {str(plain_symbol(q)), str(plain_symbol(q, "dot"))}
+    return frozenset(names)
 
 
 # --- physical admissibility: positive masses and inertias --------------------------------

@@ -32,7 +32,7 @@ from ..stages.regions import scene_regions
 from ..stages.regularize import ReducedSystem, Regularized
 from ..stages.stability import Stability
 from ..validate import lagrangian_parts, scene_options, scene_parts, shorten, sign_pattern
-from .checks import check_eps, check_equations, check_inertia, check_scene, with_friction
+from .checks import check_eps, check_equations, check_inertia, check_scene, user_names, with_friction
 from .contact import Contact, contact_manifold, frozen_symbol, plain_symbol
 from .contact_space import contact_space, mass_determinant, t
 
@@ -250,20 +250,7 @@ class Scene:
     @cached_property
     def _user_names(self) -> frozenset:
         """The names of the symbols the user gave (parameters, reactions, coordinates), without the frozen state."""
-        if self.contact_space is not None:
-            space = self.contact_space
-            stated = [*space.M, *space.F, *space.W] + [
-                x for term in space.friction if term for x in (*term[0], term[1])
-            ]
-        else:
-            stated = list(self.accelerations.values())
-        stated += [*self.gaps, *self.reactions, *self.at, *self.at.values(), *self.declared_parameters]
-        for contact in self.contacts:
-            stated += [*contact.compliance.parameters()]
-        names = {str(s) for x in stated for s in sp.sympify(x).free_symbols}
-        for q in self.coordinates:
-            names |= {str(plain_symbol(q)), str(plain_symbol(q, "dot"))}
-        return frozenset(names)
+        return user_names(self)
 
     @cached_property
     def symbol_names(self) -> frozenset:
