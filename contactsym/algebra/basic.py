@@ -15,9 +15,18 @@ import sympy as sp
 
 from ..parse import sympy_only
 from .canonical_form import canonical
-from .reductions import SignSymbol, known_sign, reduce_signs, reduce_trig, sign_symbols
+from .reductions import PaperSymbol, SignSymbol, known_sign, reduce_signs, reduce_trig, sign_symbols
 
-__all__ = ["SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "normalize", "known_sign", "present"]
+__all__ = [
+    "PaperSymbol",
+    "SignSymbol",
+    "sign_symbols",
+    "reduce_signs",
+    "reduce_trig",
+    "normalize",
+    "known_sign",
+    "present",
+]
 
 
 def normalize(expr: sp.Expr) -> sp.Expr:

@@ -5,6 +5,8 @@
 - ``known_sign``: +1 or -1 when it is proved from assumptions, declared positive expressions
   (and exact multiples of them, such as the factor of det M a scene registers) and bounds
   |sin|, |cos| <= 1 on trigonometric polynomials; None otherwise.
+- ``PaperSymbol``: the theory's own symbols (u_j, v_j, Phi_j, Psi_j, epsilon, tau, lambda), never
+  equal to a user's symbol of the same name.
 
 Below :mod:`contactsym.algebra.canonical_form`, which builds its normal form on these rules;
 :mod:`contactsym.algebra.basic` gathers both for the stages.
@@ -21,7 +23,26 @@ from sympy.polys.rings import ring
 from ..parse import sympy_only
 from .fourier import _fourier_terms
 
-__all__ = ["SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "known_sign", "quotient_sign"]
+__all__ = ["PaperSymbol", "SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "known_sign", "quotient_sign"]
+
+
+class PaperSymbol(sp.Symbol):
+    r"""A symbol the theory introduces (u_j, v_j, Phi_j, Psi_j, epsilon, tau, lambda), printed with the paper's name.
+
+    It never equals a user's ``Symbol`` of the same name and assumptions, so a parameter called
+    ``u`` stays the user's ``u``; it sorts as a plain symbol of its name, so formulas print in the
+    same order as with plain symbols.
+
+    Examples
+    --------
+    >>> u = PaperSymbol("u", real=True)
+    >>> u == sp.Symbol("u", real=True), str(u), sp.latex(PaperSymbol("Phi_1", negative=True))
+    (False, 'u', '\\Phi_{1}')
+    """
+
+    @classmethod
+    def class_key(cls):
+        return sp.Symbol.class_key()
 
 
 class SignSymbol(sp.Symbol):

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from ..algebra.reductions import PaperSymbol
 from ..errors import ComplianceError
 from ..parse import sympy_only
 from ..validate import positive_parameter, shorten
@@ -92,7 +93,7 @@ class Generic(Compliance):
 
     def phi_psi(self, u, v, index):
         suffix = "" if index is None else f"_{index}"
-        return (sp.Symbol(f"Phi{suffix}", negative=True), sp.Symbol(f"Psi{suffix}", negative=True))
+        return (PaperSymbol(f"Phi{suffix}", negative=True), PaperSymbol(f"Psi{suffix}", negative=True))
 
     def deformation(self, u, v, eps, index):
         suffix = "" if index is None else f"_{index}"

@@ -1,24 +1,33 @@
 """Checks of a scene's mechanical input, with messages that say how to fix it.
 
 The small parameter eps (1.6), the paper's numbers of a built-in scene, the friction of
-attached laws folded into the accelerations (1.4), and the consistency of coordinates,
-contacts, reactions and declared parameters.
+attached laws folded into the accelerations (1.4), the consistency of coordinates,
+contacts, reactions and declared parameters, the names the user's symbols take (the
+pipeline's own symbols print apart from them), and positive masses and inertias (a
+positive definite mass matrix).
 """
 
 from __future__ import annotations
 
+import itertools
+
 import sympy as sp
 
+from ..algebra.basic import PaperSymbol, known_sign
 from ..errors import SceneError
 from ..parse import sympy_only
 from ..validate import finite_expression, positive_parameter, reactions_act, shorten
+from .contact import plain_symbol
 from .contact_space import t
 
-__all__ = ["check_eps", "check_equations", "check_scene", "with_friction"]
+__all__ = ["check_eps", "check_equations", "check_inertia", "check_scene", "user_names", "with_friction"]
 
 
-def check_eps(eps) -> sp.Expr:
+def check_eps(eps, taken=()) -> sp.Expr:
     """eps is the small positive parameter of (1.6): a positive symbol or number.
+
+    By default the paper's ``epsilon``, a ``PaperSymbol`` (``epsilonhat`` when a symbol of the
+    scene, ``taken``, is called epsilon).
 
     Examples
     --------
@@ -33,7 +42,10 @@ def check_eps(eps) -> sp.Expr:
     eps = -1 must be > 0: it is the small time scale of the deformations (1.6).
     """
     if eps is None:
-        return sp.Symbol("epsilon", positive=True)
+        free = [n for n in ("epsilon", "epsilonhat", "epsiloncheck", "epsilontilde") if n not in taken]
+        if not free:
+            raise SceneError("the scene's symbols take every name of eps; pass eps=<a positive Symbol> yourself.")
+        return PaperSymbol(free[0], positive=True)
     why = "it is the small time scale of the deformations (1.6)"
     eps = sympy_only(eps, "eps")
     positive_parameter(eps, "eps", why)
@@ -161,3 +173,147 @@ def check_scene(scene, parameters) -> None:
                 f"symbols {sorted(map(str, unknown))} are not among the declared parameters; "
                 "declare them or fix the spelling."
             )
+
+
+def user_names(scene) -> frozenset:
+    """The names of the symbols the user gave a scene (parameters, reactions, coordinates and their rates)."""
+    if scene.contact_space is not None:
+        space = scene.contact_space
+        stated = [*space.M, *space.F, *space.W] + [x for term in space.friction if term for x in (*term[0], term[1])]
+    else:
+        stated = list(scene.accelerations.values())
+    stated += [*scene.gaps, *scene.reactions, *scene.at, *scene.at.values(), *scene.declared_parameters]
+    for contact in scene.contacts:
+        stated += [*contact.compliance.parameters()]
+    names = {str(s) for x in stated for s in sp.sympify(x).free_symbols}
+    for q in scene.coordinates:
+        names |= {str(plain_symbol(q)), str(plain_symbol(q, "dot"))}
+    return frozenset(names)
+
+
+# --- physical admissibility: positive masses and inertias --------------------------------
+
+#: Rational points on the unit circle (cos, sin) in the first quadrant, one per angle.
+_CIRCLE = ((4, 3, 5), (12, 5, 13), (15, 8, 17), (24, 7, 25), (40, 9, 41), (60, 11, 61))
+
+
+def _sample_points(exprs, positive=(), count: int = 3) -> list[dict]:
+    """Exact points for the free symbols of ``exprs`` (after ``expand_trig``), consistent with assumptions.
+
+    A symbol gets a rational of its declared sign (positive when undeclared); an angle's sin and
+    cos get a rational point of the unit circle, in the quadrant where the declared positive
+    expressions hold. Returns substitutions for :func:`_at`.
+    """
+    trig = sorted(
+        {a.args[0] for e in exprs for a in sp.expand_trig(e).atoms(sp.sin, sp.cos) if a.args[0].is_Symbol}, key=str
+    )
+    symbols = sorted(set().union(*(sp.sympify(e).free_symbols for e in exprs)) - set(trig), key=str)
+    points = []
+    for n in range(count):
+        point = {}
+        for i, s in enumerate(symbols):
+            value = sp.Rational(i + n + 2, 2 * i + n + 3) + n
+            point[s] = -value if (s.is_negative or s.is_nonpositive) else value
+        for quadrants in _quadrant_choices(len(trig)):
+            angles = {}
+            for i, (x, (cs, sn)) in enumerate(zip(trig, quadrants)):
+                c, s, r = _CIRCLE[(i + n) % len(_CIRCLE)]
+                angles[sp.cos(x)], angles[sp.sin(x)] = cs * sp.Rational(c, r), sn * sp.Rational(s, r)
+            trial = {**point, **angles}
+            if all(_sign_at(p, trial) == 1 for p in positive):
+                points.append(trial)
+                break
+    return points
+
+
+def _quadrant_choices(count: int):
+    signs = ((1, 1), (-1, 1), (-1, -1), (1, -1))
+    yield from itertools.product(signs, repeat=count)
+
+
+def _at(expr, point: dict) -> sp.Expr:
+    """``expr`` at a sample point: sin and cos of the angles first, then the other symbols."""
+    expr = sp.expand_trig(sp.sympify(expr))
+    trig = {k: v for k, v in point.items() if isinstance(k, (sp.sin, sp.cos))}
+    return expr.xreplace(trig).xreplace({k: v for k, v in point.items() if k not in trig})
+
+
+def _sign_at(expr, point: dict) -> int | None:
+    """The sign of ``expr`` at ``point`` (exact where the value is rational), None if undecided."""
+    value = _at(expr, point)
+    if value.free_symbols:
+        return None
+    if value.is_zero:
+        return 0
+    if value.is_positive:
+        return 1
+    if value.is_negative:
+        return -1
+    estimate = value.evalf(60)
+    if estimate.is_number and abs(estimate) > sp.Float("1e-40"):
+        return 1 if estimate > 0 else -1
+    return None
+
+
+def _name(q) -> str:
+    return q.func.__name__ if isinstance(q, sp.core.function.AppliedUndef) else str(q)
+
+
+def _positive_definite(M: sp.Matrix, positive) -> str | tuple[int, dict | None]:
+    """'proved' (Sylvester, every leading minor positive by the assumptions), 'sampled' (positive
+    definite at every sample point), or (index, point) of the first leading minor that is not positive."""
+    n = M.rows
+    for i in range(n):
+        sign = known_sign(M[i, i], positive)
+        if M[i, i] == 0 or sign == -1:
+            return i, None
+    minors = [M[:i, :i].det(method="berkowitz") for i in range(1, n + 1)] if n <= 4 else []
+    if minors and all(known_sign(m, positive) == 1 for m in minors):
+        return "proved"
+    points = _sample_points(list(M), positive)
+    for point in points:
+        at = sp.Matrix(n, n, [_at(e, point) for e in M])
+        for i in range(1, n + 1):
+            if _sign_at(at[:i, :i].det(method="berkowitz"), {}) != 1:
+                return i - 1, point
+    return "sampled" if points else "unchecked"
+
+
+def _shown_point(point: dict) -> str:
+    shown = {str(k): v for k, v in point.items() if not isinstance(k, (sp.sin, sp.cos))}
+    shown.update({str(k): v for k, v in point.items() if isinstance(k, (sp.sin, sp.cos))})
+    return ", ".join(f"{k} = {v}" for k, v in sorted(shown.items()))
+
+
+def check_inertia(scene) -> str:
+    """The scene's masses and inertias are positive: its mass matrix is positive definite.
+
+    Proved from the declared assumptions where Sylvester's criterion decides it (positive masses
+    and inertias), otherwise checked exactly at sample points (sin and cos of each angle on a
+    rational point of the circle). Returns 'proved', 'sampled' or 'unchecked' (a scene given by
+    its accelerations has no mass matrix); raises SceneError naming the coordinates.
+    """
+    positive = scene._declared_positive
+    if scene.contact_space is not None:
+        M = scene.contact_space.M.applyfunc(scene.plain)
+        verdict = _positive_definite(M, positive)
+        if isinstance(verdict, str):
+            return verdict
+        i, point = verdict
+        names = [_name(q) for q in scene.coordinates]
+        where = f" at {_shown_point(point)}" if point else ""
+        if point is None or i == 0 or _sign_at(M[i, i], point) != 1:
+            raise SceneError(
+                f"the mass matrix is not positive definite: its entry M[{names[i]}, {names[i]}] = {shorten(M[i, i])}"
+                f"{where} is not positive, so moving {names[i]} alone has no positive kinetic energy; masses and "
+                'moments of inertia must be positive: declare them positive (e.g. m = "positive") and give each '
+                "body a positive mass and inertia."
+            )
+        raise SceneError(
+            f"the mass matrix is not positive definite in the coordinates {names[: i + 1]}{where}: the kinetic "
+            "energy can be zero or negative for a motion of them; check the signs of the masses and inertias "
+            "(they must be positive) and of the lengths that couple these coordinates."
+        )
+    # accelerations may hold friction on a piece (mu |N| = mu N for N > 0), so dg''/dN of either sign is
+    # admissible there (the Painleve paradox is A < 0): without a mass matrix there is nothing to check
+    return "unchecked"

@@ -12,13 +12,14 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from ..algebra.basic import PaperSymbol
 from ..errors import SceneError
 from ..laws import Compliance, Coulomb, Generic, Viscous
 from ..parse import sympy_only
 from ..validate import contact_fields, shorten
 from .contact_space import t
 
-__all__ = ["Contact", "contact_manifold", "plain_symbol", "solve_linear"]
+__all__ = ["Contact", "contact_manifold", "frozen_symbol", "plain_symbol", "solve_linear"]
 
 
 @dataclass(frozen=True)
@@ -83,6 +84,28 @@ def plain_symbol(symbol: sp.Expr, suffix: str = "") -> sp.Symbol:
     name = symbol.func.__name__ if isinstance(symbol, sp.core.function.AppliedUndef) else str(symbol)
     base, underscore, index = name.partition("_")
     return sp.Symbol(base + suffix + underscore + index, real=True)
+
+
+def frozen_symbol(symbol: sp.Expr, suffix: str = "", taken=()) -> sp.Symbol:
+    r"""The frozen coordinate or rate (see :func:`plain_symbol`); a ``PaperSymbol`` with a hat when
+    ``taken`` (declared parameters' names) has its plain name, so the two never merge.
+
+    Examples
+    --------
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> y = dynamicsymbols("y")
+    >>> frozen_symbol(y, "dot"), frozen_symbol(y, "dot", {"ydot"}), sp.latex(frozen_symbol(y, "dot", {"ydot"}))
+    (ydot, ydothat, '\\hat{\\dot{y}}')
+    """
+    plain = plain_symbol(symbol, suffix)
+    if plain.name not in taken:
+        return plain
+    base, underscore, index = plain.name.partition("_")
+    for mark in ("hat", "check", "tilde", "breve"):
+        name = base + mark + underscore + index
+        if name not in taken:
+            return PaperSymbol(name, real=True)
+    raise SceneError(f"rename the parameters {sorted(taken)}: they take every name of the frozen {plain}.")
 
 
 def solve_linear(equations: list[sp.Expr], candidates: list[sp.Symbol]) -> dict:

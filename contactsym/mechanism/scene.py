@@ -32,8 +32,8 @@ from ..stages.regions import scene_regions
 from ..stages.regularize import ReducedSystem, Regularized
 from ..stages.stability import Stability, stability_of
 from ..validate import lagrangian_parts, scene_options, scene_parts, shorten, sign_pattern
-from .checks import check_eps, check_equations, check_scene, with_friction
-from .contact import Contact, contact_manifold, plain_symbol
+from .checks import check_eps, check_equations, check_inertia, check_scene, user_names, with_friction
+from .contact import Contact, contact_manifold, frozen_symbol, plain_symbol
 from .contact_space import contact_space, mass_determinant, t
 
 __all__ = ["Contact", "Scene", "paper_equations", "plain_symbol", "t"]
@@ -148,8 +148,10 @@ class Scene(LatexReprMixin):
         self.contact_space = contact_space
         if accelerations is not None:
             self.accelerations = dict(zip(self.coordinates, (sympy_only(g, "an acceleration") for g in accelerations)))
-        self.eps = check_eps(eps)
+        #: The symbols declared as parameters (they are never the pipeline's frozen state).
+        self.declared_parameters = tuple(parameters) if parameters is not None else ()
         self.at = {sympy_only(k, "a key of at"): sympy_only(v, "a value of at") for k, v in (at or {}).items()}
+        self.eps = check_eps(eps, self._user_names)
         self.presentation = {
             sympy_only(k, "a presentation key"): sympy_only(v, "a presentation value")
             for k, v in (presentation or {}).items()
@@ -180,6 +182,8 @@ class Scene(LatexReprMixin):
         self.solve_for = solve_for
         self._stage_cache: dict = {}
         check_scene(self, parameters)
+        #: How the masses and inertias were found positive: 'proved', 'sampled' or 'unchecked'.
+        self.inertia = check_inertia(self)
 
     # --- construction ------------------------------------------------------------
 
@@ -266,10 +270,28 @@ class Scene(LatexReprMixin):
 
     @cached_property
     def frozen_symbols(self) -> dict:
-        """Plain symbols for the slow state frozen in the fast subsystem: q(t) -> q, q' -> qdot."""
-        symbols = {sp.diff(q, t): plain_symbol(q, "dot") for q in self.coordinates}
-        symbols.update({q: plain_symbol(q) for q in self.coordinates})
+        """Plain symbols for the slow state frozen in the fast subsystem: q(t) -> q, q' -> qdot.
+
+        A declared parameter of the same name (``parameters=[ydot]``) stays the user's: the
+        frozen state is then a ``PaperSymbol`` printed with a hat (``ydothat``).
+        """
+        taken = {str(p) for p in self.declared_parameters}
+        symbols = {sp.diff(q, t): frozen_symbol(q, "dot", taken) for q in self.coordinates}
+        symbols.update({q: frozen_symbol(q, "", taken) for q in self.coordinates})
         return symbols
+
+    @cached_property
+    def _user_names(self) -> frozenset:
+        """The names of the symbols the user gave (parameters, reactions, coordinates), without the frozen state."""
+        return user_names(self)
+
+    @cached_property
+    def symbol_names(self) -> frozenset:
+        """The printed names of the scene's own symbols: its parameters, reactions and frozen state.
+
+        The pipeline's symbols (u_j, v_j, epsilon, tau) avoid these names when they print.
+        """
+        return self._user_names | {str(s) for s in self.frozen_symbols.values()}
 
     def plain(self, expr: sp.Expr) -> sp.Expr:
         """``expr`` with the slow state in plain symbols: q(t) -> q, q'(t) -> qdot (see ``frozen_symbols``)."""

@@ -15,7 +15,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from ..algebra.basic import normalize, present
+from ..algebra.basic import PaperSymbol, normalize, present
 from ..algebra.fraction_free import solve_fraction_free, t
 from ..errors import ContactsymError, SceneError, SingularJacobianError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, prime, tex
@@ -29,27 +29,50 @@ NUMBERS = Numbering({key: (("3.1",), ("4.1",), ("2.1",)) for key in ("fast", "f"
 log = logging.getLogger("contactsym")
 
 
-def fast_variables(k: int) -> tuple[tuple[sp.Symbol, ...], tuple[sp.Symbol, ...]]:
+def fast_variables(k: int, taken=()) -> tuple[tuple[sp.Symbol, ...], tuple[sp.Symbol, ...]]:
     """The fast variables (1.6) of k contacts: the reactions u_j and the scaled rates v_j (u, v for k = 1).
+
+    They are :class:`~contactsym.algebra.reductions.PaperSymbol` objects, which no user symbol
+    equals. Where a name of ``taken`` (the names the scene's own symbols print with) is one of
+    theirs, they print with a hat (``uhat``, LaTeX ``\\hat{u}``), so that no printed formula
+    shows two different symbols under one name.
 
     Examples
     --------
     >>> fast_variables(1), fast_variables(2)
     (((u,), (v,)), ((u_1, u_2), (v_1, v_2)))
+    >>> fast_variables(1, taken={"u"})
+    ((uhat,), (v,))
     """
+    taken = set(taken)
 
     def names(letter: str) -> tuple[sp.Symbol, ...]:
-        if k == 1:
-            return (sp.Symbol(letter, real=True),)
-        return tuple(sp.Symbol(f"{letter}_{j}", real=True) for j in range(1, k + 1))
+        def spelled(base: str) -> list[str]:
+            return [base] if k == 1 else [f"{base}_{j}" for j in range(1, k + 1)]
+
+        bases = [letter + mark for mark in ("", "hat", "check", "tilde", "breve")]
+        base = next((b for b in bases if not taken.intersection(spelled(b))), letter * 2)
+        while taken.intersection(spelled(base)):  # every decorated name taken: lengthen the letter
+            base += letter
+        return tuple(PaperSymbol(name, real=True) for name in spelled(base))
 
     return names("u"), names("v")
 
 
-def law_coefficients(compliances, u, v) -> tuple[tuple[sp.Expr, sp.Expr], ...]:
-    """(Phi_j, Psi_j) of (2.1) for each contact's compliance law at (u_j, v_j); indexed j when k > 1."""
+def law_coefficients(compliances, u, v, taken=()) -> tuple[tuple[sp.Expr, sp.Expr], ...]:
+    """(Phi_j, Psi_j) of (2.1) for each contact's compliance law at (u_j, v_j); indexed j when k > 1.
+
+    A generic law's Phi, Psi print with a hat where a name of ``taken`` is theirs.
+    """
     index = (lambda j: None) if len(compliances) == 1 else (lambda j: j + 1)
-    return tuple(law.phi_psi(u[j], v[j], index(j)) for j, law in enumerate(compliances))
+    taken = set(taken)
+    laws = []
+    for j, law in enumerate(compliances):
+        phi_psi = law.phi_psi(u[j], v[j], index(j))
+        own = [c for c in law.coefficients(index(j)) if isinstance(c, PaperSymbol) and c.name in taken]
+        hats = {c: PaperSymbol(_decorated(c.name, taken), **c.assumptions0) for c in own}
+        laws.append(tuple(sp.sympify(x).xreplace(hats) for x in phi_psi))
+    return tuple(laws)
 
 
 def _canonical(arg: sp.Expr, u) -> tuple[sp.Expr, int]:
@@ -192,6 +215,15 @@ def _no_real_root(f: sp.Matrix, u: tuple) -> bool:
     return bool(complete) and all(any(sp.im(root[z]).is_nonzero for z in free) for root in roots)
 
 
+def _decorated(name: str, taken) -> str:
+    """``name`` with a hat (Phi_1 -> Phihat_1, LaTeX \\hat{\\Phi}_{1}), or another accent, not in ``taken``."""
+    base, underscore, index = name.partition("_")
+    for mark in ("hat", "check", "tilde", "breve"):
+        if base + mark + underscore + index not in taken:
+            return base + mark + underscore + index
+    return _decorated(base + base[-1] + underscore + index, taken)
+
+
 @dataclass(frozen=True, eq=False)
 class FastSubsystem(LatexReprMixin):
     """The fast subsystem (2.1) of a scene. All attributes are SymPy objects.
@@ -278,12 +310,17 @@ class FastSubsystem(LatexReprMixin):
         return tuple(sorted(free, key=str))
 
     @cached_property
+    def _taken(self) -> frozenset:
+        """The names the scene's own symbols print with (the paper's symbols avoid them)."""
+        return frozenset(getattr(self.scene, "symbol_names", ()))
+
+    @cached_property
     def u(self) -> tuple[sp.Symbol, ...]:
-        return fast_variables(self.k)[0]
+        return fast_variables(self.k, self._taken)[0]
 
     @cached_property
     def v(self) -> tuple[sp.Symbol, ...]:
-        return fast_variables(self.k)[1]
+        return fast_variables(self.k, self._taken)[1]
 
     @cached_property
     def state(self) -> sp.Matrix:
@@ -309,7 +346,7 @@ class FastSubsystem(LatexReprMixin):
 
     @cached_property
     def _laws(self) -> tuple[tuple[sp.Expr, sp.Expr], ...]:
-        return law_coefficients(self.compliances, self.u, self.v)
+        return law_coefficients(self.compliances, self.u, self.v, self._taken)
 
     @cached_property
     def Phi(self) -> tuple[sp.Expr, ...]:

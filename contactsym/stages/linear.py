@@ -17,7 +17,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from ..algebra.basic import normalize, sign_symbols
+from ..algebra.basic import PaperSymbol, normalize, sign_symbols
 from ..algebra.canonical_form import to_fraction
 from ..deprecation import deprecated_property
 from ..errors import ContactsymError
@@ -38,7 +38,7 @@ NUMBERS = Numbering(
 log = logging.getLogger("contactsym")
 
 #: The eigenvalue variable of characteristic polynomials.
-lam = sp.Symbol("lambda")
+lam = PaperSymbol("lambda")
 
 
 def principal_minors(A: sp.Matrix) -> dict[tuple[int, ...], sp.Expr]:

@@ -16,7 +16,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from ..algebra.basic import normalize
+from ..algebra.basic import PaperSymbol, normalize
 from ..algebra.fraction_free import t
 from ..errors import ContactsymError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, prime, tex
@@ -62,7 +62,8 @@ class Regularized(LatexReprMixin):
 
     @cached_property
     def tau(self) -> sp.Symbol:
-        return sp.Symbol("tau", positive=True)
+        taken = set(getattr(self.scene, "symbol_names", ()))
+        return PaperSymbol(next((n for n in ("tau", "tauhat", "taucheck") if n not in taken), "tau_0"), positive=True)
 
     @cached_property
     def slow_coordinates(self) -> tuple:
@@ -70,14 +71,19 @@ class Regularized(LatexReprMixin):
         return self.scene.free_coordinates
 
     @cached_property
+    def _taken(self) -> frozenset:
+        """The names the scene's own symbols print with (the fast variables avoid them, as in the fast subsystem)."""
+        return frozenset(getattr(self.scene, "symbol_names", ()))
+
+    @cached_property
     def u(self) -> tuple[sp.Symbol, ...]:
         """The fast variables u_j = N_j (1.6), one per contact."""
-        return fast_variables(self.scene.k)[0]
+        return fast_variables(self.scene.k, self._taken)[0]
 
     @cached_property
     def v(self) -> tuple[sp.Symbol, ...]:
         """The fast variables v_j = q_j'/eps (1.6), one per contact."""
-        return fast_variables(self.scene.k)[1]
+        return fast_variables(self.scene.k, self._taken)[1]
 
     @cached_property
     def _deformed(self) -> dict:
@@ -116,7 +122,7 @@ class Regularized(LatexReprMixin):
 
     @cached_property
     def Y(self) -> sp.Matrix:
-        laws = law_coefficients(tuple(c.compliance for c in self.scene.contacts), self.u, self.v)
+        laws = law_coefficients(tuple(c.compliance for c in self.scene.contacts), self.u, self.v, self._taken)
         G = [self._on_fast(g) for g in self.scene.gap_accelerations]
         du = [phi * self.v[j] + psi * G[j] for j, (phi, psi) in enumerate(laws)]
         return sp.Matrix(du + G)

@@ -241,8 +241,8 @@ def test_rod_fast_subsystem_matches_newton_euler():
     assert fast.switching == (u,)
     assert s.sign_patterns() == [(1,)]
     # Phi, Psi of the generic law; rhs (3.1)
-    Phi, Psi = sp.Symbol("Phi", negative=True), sp.Symbol("Psi", negative=True)
-    assert (fast.Phi, fast.Psi) == ((Phi,), (Psi,))
+    (Phi,), (Psi,) = fast.Phi, fast.Psi
+    assert (str(Phi), str(Psi)) == ("Phi", "Psi") and Phi.is_negative and Psi.is_negative
     assert fast.rhs == sp.Matrix([Phi * fast.v[0] + Psi * fast.f[0], fast.f[0]])
 
 
@@ -321,7 +321,7 @@ def test_rod_hurwitz_conditions_agree_with_proposition_3(theta_value, mu_value, 
     """k = 1 with Phi, Psi < 0: all Hurwitz conditions > 0 iff f' > 0, for any such Phi, Psi."""
     assume(abs(painleve(theta_value, mu_value)) > 1e-6)
     s = uniform_rod()
-    Phi, Psi = sp.Symbol("Phi", negative=True), sp.Symbol("Psi", negative=True)
+    (Phi,), (Psi,) = s.fast_subsystem().Phi, s.fast_subsystem().Psi
     values = {theta: theta_value, mu: mu_value, m: 1, l: 1, Phi: Phi_value, Psi: Psi_value}
     hurwitz = [float(h.subs(values)) for h in s.stability().hurwitz]
     slope = float(s.linearization().A[0].subs(values))

@@ -42,7 +42,7 @@ def block_charpoly(M):
 
 def fast_charpoly(M):
     """det(lam I - M) through SymPy's own charpoly (fast for k >= 4)."""
-    return M.charpoly(lam).as_expr()
+    return M.charpoly(lam).as_expr(lam)  # SymPy names its own lambda: put the pipeline's in
 
 
 # --- charpoly ---------------------------------------------------------------------

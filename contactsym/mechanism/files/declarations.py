@@ -190,6 +190,18 @@ def _parameter(reader: FormulaReader, name: str, entry) -> ParameterSpec:
             name,
             f"unknown assumption {shown(assume)}; use one of {', '.join(ASSUMPTIONS)}, sign, or an interval [low, high]",
         )
+    if interval is not None:
+        low, high = interval
+        if (
+            (symbol.is_positive and high <= 0)
+            or (symbol.is_nonnegative and high < 0)
+            or (symbol.is_negative and low >= 0)
+        ):
+            reader.doc.fail(
+                "parameters",
+                name,
+                f"the interval [{low}, {high}] has no {assume} value; change the interval or the assumption",
+            )
     reader.declare(name, symbol, "parameter", "parameters", name)
     return ParameterSpec(name, symbol, assume, interval, reader.doc.line("parameters", name))
 

@@ -238,6 +238,9 @@ def build_scene(spec: SceneSpec) -> Scene:
         solve_for=spec.solve_for,
         count_presentation=count_presentation,
         figure_plan=spec.figures,
+        # a parameter called ydot stays a parameter, apart from the frozen rate of y; one printed as a
+        # coordinate (symbol = "theta") is that frozen coordinate, for [at]
+        parameters=[p.symbol for p in spec.parameters if str(p.symbol) not in {c.name for c in spec.coordinates}],
     )
     coordinates = [c.symbol for c in spec.coordinates]
     try:
