@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 import sympy as sp
@@ -57,11 +58,18 @@ class Quantity:
 
 
 def _classifier(setup: Setup, conditions, what: str, extra=()) -> numerics.PointClassifier:
-    conditions = [setup.prepare(c, what, extra) for c in conditions]
+    conditions = tuple(setup.prepare(c, what, extra) for c in conditions)
     try:
-        return numerics.PointClassifier(conditions, setup.symbols + tuple(extra))
+        return _built_classifier(conditions, setup.symbols + tuple(extra))
     except numerics.NumericsError as error:
         raise AtlasError(f"{what}: {error}") from None
+
+
+@lru_cache(maxsize=32)
+def _built_classifier(conditions: tuple, symbols: tuple) -> numerics.PointClassifier:
+    """One classifier per scene and quantity: building one factors every condition (``sp.factor``),
+    which costs far more than a sweep's chunk; the classifier is read-only once built."""
+    return numerics.PointClassifier(conditions, symbols)
 
 
 def _strict(condition) -> list:
@@ -117,14 +125,15 @@ class _Classification(Kernel):
 
     def evaluate(self, points):
         n = len(points)
+        columns = self.setup.columns(points)
         stable, unstable, dependent = (
-            np.broadcast_to(np.asarray(m, dtype=bool), (n,)) for m in self.function(*self.setup.columns(points))
+            np.broadcast_to(np.asarray(m, dtype=bool), (n,)) for m in self.function(*columns)
         )
-        region = np.select([stable, unstable, dependent], [1.0, -1.0, 0.0], np.nan)
-        hurwitz = np.full(n, np.nan)
+        out = np.full((n, 2), np.nan)
+        out[:, 0] = np.select([stable, unstable, dependent], [1.0, -1.0, 0.0], np.nan)
         if self.classifier is not None:
-            hurwitz = self.classifier(*self.setup.columns(points)).stable.astype(float)
-        return np.column_stack([region, hurwitz])
+            out[:, 1] = self.classifier(*columns).stable
+        return out
 
 
 def _build_classification(scene, grid, values, signs=None):

@@ -354,3 +354,31 @@ def test_cli_writes_the_atlas_all_or_nothing(tmp_path, capsys):
         f"contactsym: error: --out {tmp_path / 'a.txt'}: the atlas is written as NetCDF; give a file name ending in .nc.",
         "contactsym: error: grid axis 'mu': mu = -1.0 must be > 0 (the symbol is declared positive).",
     ]
+
+
+def test_the_classifier_is_built_once_per_scene_and_quantity(monkeypatch):
+    """A second sweep of the same scene and quantity reuses the classifier (building one factors
+    every Hurwitz condition), also with other fixed values (they are arguments of its code);
+    the verdicts agree with the first sweep's; another quantity builds its own."""
+    from contactsym.atlas import quantities
+
+    quantities._built_classifier.cache_clear()
+    built = []
+    original = numerics.PointClassifier.__init__
+
+    def counted(self, *args, **kwargs):
+        built.append(args[1])
+        original(self, *args, **kwargs)
+
+    monkeypatch.setattr(numerics.PointClassifier, "__init__", counted)
+    grid = {"alpha": np.linspace(0.3, 2.8, 4), "mu": [0.3, 2.5]}
+    first = atlas.sweep("brake", "classification", grid, values=BRAKE_LAW, scheduler="sync")
+    again = atlas.sweep(
+        "brake", "classification", {"alpha": grid["alpha"], "mu": [2.5]}, values=BRAKE_LAW, scheduler="sync"
+    )
+    assert len(built) == 1
+    assert np.array_equal(first.stable.values[:, 1], again.stable.values[:, 0])
+    other_law = atlas.sweep("brake", "classification", grid, values={**BRAKE_LAW, "Phi_1": -3.0}, scheduler="sync")
+    assert len(built) == 1 and set(np.unique(other_law.stable.values)) <= {-1.0, 1.0}
+    atlas.sweep("brake", "equilibrium_count", {"alpha": grid["alpha"]}, values={"m": 1, "mu": 0.8, "F_x": 2, "F_y": -4})
+    assert len(built) > 1
