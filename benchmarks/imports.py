@@ -40,7 +40,7 @@ def _seconds(code: str) -> tuple[float, list[str]]:
 
 
 def run(quick: bool, out: Path) -> list[dict]:
-    rounds = 5 if quick else 11
+    rounds = 3 if quick else 11
     times: dict[str, list[float]] = {"import sympy": [], **{name: [] for name in CASES}}
     loaded: dict[str, list[str]] = {}
     for _ in range(rounds):  # interleaved, so a load change on the machine hits every row alike
