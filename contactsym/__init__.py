@@ -96,10 +96,19 @@ __version__ = "0.1.0"
 
 
 def __getattr__(name: str):
-    """Import the module that defines ``name`` on first use, then keep the name here."""
-    if name not in _LAZY:
+    """Import the module that defines ``name`` on first use, then keep the name here; a
+    subpackage or a 0.1 module path (``cs.numerics``, ``cs.regions``) is imported when asked for."""
+    if name in _LAZY:
+        value = getattr(importlib.import_module(_LAZY[name], __name__), name)
+    elif not name.startswith("_"):
+        try:
+            value = importlib.import_module(f"{__name__}.{name}")
+        except ModuleNotFoundError as error:
+            if error.name != f"{__name__}.{name}":
+                raise
+            raise AttributeError(f"module 'contactsym' has no attribute {name!r}") from None
+    else:
         raise AttributeError(f"module 'contactsym' has no attribute {name!r}")
-    value = getattr(importlib.import_module(_LAZY[name], __name__), name)
     globals()[name] = value
     return value
 

@@ -62,6 +62,17 @@ def test_an_unknown_name_is_an_attribute_error():
         contactsym.no_such_name  # noqa: B018
 
 
+def test_subpackages_and_old_module_paths_load_as_attributes():
+    """``cs.numerics`` and the 0.1 path ``cs.regions`` work without an import statement, as in notebooks."""
+    loaded = _loaded_after("import contactsym as cs\ncs.regions.closed_form\ncs.numerics.simulate_full")
+    assert loaded["contactsym.numerics"] and not loaded["matplotlib"]
+    assert cs_module("regions") is sys.modules["contactsym.stages.regions"]
+
+
+def cs_module(name):
+    return getattr(contactsym, name)
+
+
 def test_the_old_scene_path_keeps_the_function():
     """Importing the 0.1 module path ``contactsym.scene`` never replaces the function ``contactsym.scene``."""
     import importlib
