@@ -22,11 +22,12 @@ import sympy as sp
 from .. import numerics
 from .grid import AtlasError, Grid
 from .kernel import Kernel, Setup, setup_for
-from .pointwise import PointFailure, build_catastrophe, build_cycle, build_function
+from .pointwise import SQUEAL_METHODS, PointFailure, build_catastrophe, build_cycle, build_function, build_squeal
 
 __all__ = [
     "PointFailure",
     "QUANTITIES",
+    "SQUEAL_METHODS",
     "Kernel",
     "Quantity",
     "as_quantity",
@@ -36,6 +37,7 @@ __all__ = [
     "equilibrium_count",
     "function",
     "leading_eigenvalue",
+    "squeal",
     "stable_fraction",
 ]
 
@@ -230,6 +232,24 @@ def cycle(**options) -> Quantity:
     """Amplitude (half the peak-to-peak of the reactions, largest over the contacts) and angular
     frequency (stretched time) of the stable cycle from :func:`contactsym.numerics.fast_cycle`."""
     return Quantity("cycle", build_cycle, options)
+
+
+def squeal(
+    parameter: str, *, laws: Mapping | None = None, tol: float = 0.02, simulate: bool = True, **options
+) -> Quantity:
+    """The squeal's amplitude (half peak-to-peak of the reactions, largest over the contacts) and
+    frequency (tau) near a Hopf line crossed along ``parameter``, with per point the ``method``
+    (codes in ``SQUEAL_METHODS``: 0 stable equilibrium, 1 normal form, 2 simulation), its
+    estimated relative ``error`` and ``contact_loss`` (1 where a reaction reaches 0).
+
+    The Hopf normal form (one Hopf point per line of the grid along ``parameter``) gives the
+    value where its estimated error is below ``tol``, the small cycle is stable (l1 < 0) and
+    the pads keep contact; elsewhere :func:`contactsym.numerics.fast_cycle` (``options``)
+    simulates, unless ``simulate=False`` (then NaN with the reason).
+    """
+    return Quantity(
+        "squeal", build_squeal, {"parameter": parameter, "laws": laws, "tol": tol, "simulate": simulate, **options}
+    )
 
 
 def catastrophe(eps, span, initial: Mapping, **options) -> Quantity:

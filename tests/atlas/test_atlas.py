@@ -382,3 +382,36 @@ def test_the_classifier_is_built_once_per_scene_and_quantity(monkeypatch):
     assert len(built) == 1 and set(np.unique(other_law.stable.values)) <= {-1.0, 1.0}
     atlas.sweep("brake", "equilibrium_count", {"alpha": grid["alpha"]}, values={"m": 1, "mu": 0.8, "F_x": 2, "F_y": -4})
     assert len(built) > 1
+
+
+def test_squeal_from_the_normal_form_near_the_line_against_a_long_simulation():
+    """Hertz pads: the normal form gives a value at 0.1-0.5% past the line (where a simulation to a
+    Poincare section does not converge), within 2% of a long simulation of the fast subsystem at
+    0.5% (runs from inside and outside the predicted cycle bracket it); before the line the
+    equilibrium is stable (amplitude 0); far out, with simulate=False, NaN with its reason."""
+    from contactsym.atlas.quantities import SQUEAL_METHODS, squeal
+    from contactsym.laws.library import Hertz
+
+    laws = {0: Hertz(), 1: Hertz()}
+    disc = {"m": 1, "alpha": np.pi / 2, "F_x": 0, "F_y": -4}
+    h = numerics.hopf_point(cs.scene("brake"), {**disc, "mu": 1.0}, "mu", laws=laws)
+    distances = np.array([-0.01, 0.001, 0.003, 0.005, 0.05])
+    grid = {"mu": h.value * (1 + distances)}
+    ds = atlas.sweep("brake", squeal("mu", laws=laws, tol=0.01, simulate=False), grid, values=disc, scheduler="sync")
+    assert ds.method.values.tolist()[:4] == [0.0, 1.0, 1.0, 1.0] and set(SQUEAL_METHODS) >= {0, 1, 2}
+    assert ds.amplitude.values[0] == 0 and np.all(ds.amplitude.values[1:4] > 0)
+    assert np.all(np.diff(ds.amplitude.values[1:4]) > 0) and np.all(ds.error.values[1:4] < 0.01)
+    assert np.isnan(ds.amplitude.values[4]) and "contact loss" in str(ds.reason.values[4])
+    mu = grid["mu"][3]
+    duration, period = 1.5 / (h.dalpha * (mu - h.value)), 2 * np.pi / h.omega
+    simulated = []
+    for factor in (0.8, 1.2):
+        run = numerics.simulate_fast(
+            cs.scene("brake"), {**disc, "mu": mu}, (0, duration), initial=h.cycle_start(mu, factor), laws=laws,
+            method="DOP853", rtol=1e-8, t_eval=np.linspace(duration - 2 * period, duration, 1000),
+        )  # fmt: skip
+        simulated.append(float(np.max(np.ptp(run.reactions, axis=1)) / 2))
+    assert abs(ds.amplitude.values[3] - np.mean(simulated)) / np.mean(simulated) < 0.02, (
+        ds.amplitude.values[3],
+        simulated,
+    )
