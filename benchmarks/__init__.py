@@ -18,6 +18,7 @@ BENCHMARKS = (
     "counts",
     "regions_k3",
     "hopf_direction",
+    "squeal",
 )
 
 

@@ -186,7 +186,7 @@ def _first_line(error: BaseException) -> str:
     return (str(error).strip().splitlines() or [""])[0][:200]
 
 
-def build_squeal(scene, grid, values, parameter=None, laws=None, tol=0.02, simulate=True, **options):
+def build_squeal(scene, grid, values, parameter=None, laws=None, tol=0.002, simulate=True, **options):
     if parameter is None:
         raise AtlasError("the squeal quantity needs the bifurcation parameter: squeal(parameter='mu').")
     if not 0 < float(tol) < 1:

@@ -235,7 +235,7 @@ def cycle(**options) -> Quantity:
 
 
 def squeal(
-    parameter: str, *, laws: Mapping | None = None, tol: float = 0.02, simulate: bool = True, **options
+    parameter: str, *, laws: Mapping | None = None, tol: float = 0.002, simulate: bool = True, **options
 ) -> Quantity:
     """The squeal's amplitude (half peak-to-peak of the reactions, largest over the contacts) and
     frequency (tau) near a Hopf line crossed along ``parameter``, with per point the ``method``
@@ -243,9 +243,12 @@ def squeal(
     estimated relative ``error`` and ``contact_loss`` (1 where a reaction reaches 0).
 
     The Hopf normal form (one Hopf point per line of the grid along ``parameter``) gives the
-    value where its estimated error is below ``tol``, the small cycle is stable (l1 < 0) and
-    the pads keep contact; elsewhere :func:`contactsym.numerics.fast_cycle` (``options``)
-    simulates, unless ``simulate=False`` (then NaN with the reason).
+    value where its estimated error ``|c1| r^2 / omega`` (the size of the neglected terms) is
+    below ``tol``, the small cycle is stable (l1 < 0) and the pads keep contact; elsewhere
+    :func:`contactsym.numerics.fast_cycle` (``options``) simulates, unless ``simulate=False``
+    (then NaN with the reason). The estimate gives the order, not the constant: against long
+    simulations of the brake with Hertz pads the amplitude's error was several times it
+    (``benchmarks/squeal.py`` reports the ratio), hence the small default ``tol``.
     """
     return Quantity(
         "squeal", build_squeal, {"parameter": parameter, "laws": laws, "tol": tol, "simulate": simulate, **options}
