@@ -7,6 +7,7 @@ and writes its PNG plots to ``out_dir``.
 """
 
 BENCHMARKS = (
+    "imports",
     "classification",
     "region_evaluate",
     "work_precision",
@@ -17,6 +18,7 @@ BENCHMARKS = (
     "counts",
     "regions_k3",
     "hopf_direction",
+    "squeal",
 )
 
 

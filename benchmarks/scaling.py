@@ -38,9 +38,12 @@ def _notes(o: dict | None, n: dict | None, ours_limit: float, naive_limit: float
 
 
 def run(quick: bool, out_dir) -> list[dict]:
-    ours_limit, naive_limit = (300.0, 20.0) if quick else (900.0, 600.0)
-    cases = [(f"chain n={n}", f"chain-{n}", n) for n in range(1, 7)]
-    cases += [("stepladder", "stepladder", 4), ("brake", "brake", 3), ("guides", "painleve-klein-guides", 3)]
+    # --quick (under 3 minutes for the whole bench): chains up to n = 4, naive cut at 5 s; the full
+    # bench keeps the long rows (n = 5, 6 and the stepladder, against their targets)
+    ours_limit, naive_limit = (120.0, 5.0) if quick else (900.0, 600.0)
+    cases = [(f"chain n={n}", f"chain-{n}", n) for n in range(1, 5 if quick else 7)]
+    cases += [] if quick else [("stepladder", "stepladder", 4)]
+    cases += [("brake", "brake", 3), ("guides", "painleve-klein-guides", 3)]
     records, rows = [], []
     for label, target, size in cases:
         o = _worker("ours", target, ours_limit)

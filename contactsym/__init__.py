@@ -12,32 +12,63 @@ Examples
 mu**2*sin(alpha)**2/m**2 + sin(alpha)**2/m**2
 """
 
+import importlib
 import sys
 
 from . import _aliases
-from .algebra.basic import SignSymbol
 from .errors import (
     AtlasError,
     ComplianceError,
     ContactsymError,
     HopfError,
     NumericsError,
+    ParseError,
+    ReportError,
     SceneError,
+    SceneFileError,
     SignPatternError,
     SingularJacobianError,
     UsageError,
 )
-from .laws import Compliance, Coulomb, Generic, KelvinVoigt, Law, Viscous
-from .laws.library import CubicStiffening, Hertz, HuntCrossley, with_laws
-from .mechanism.files.reader import FigurePlan, SceneFileError, load_scene, read_scene
-from .mechanism.scene import Contact, Scene
-from .parse import ParseError, parse_expression
-from .printing.latex_output import latex
-from .report import ReportError, ReportResult, conditions, report_tex, write_report
-from .scenes import DEFAULT_SCENE, scene, scene_names
-from .stages import Equilibria, FastSubsystem, Linearization, Regularized, Stability
-from .stages.linear import lam
-from .stages.regions import Region, closed_form
+
+# Everything else loads on first use (module ``__getattr__``): ``import contactsym`` stays
+# about as cheap as ``import sympy``; the report, plotting, numerics and matplotlib load only
+# when a program asks for them. Name -> the module that defines it.
+_LAZY = {
+    "Compliance": ".laws",
+    "Coulomb": ".laws",
+    "Generic": ".laws",
+    "KelvinVoigt": ".laws",
+    "Law": ".laws",
+    "Viscous": ".laws",
+    "SignSymbol": ".algebra.basic",
+    "FigurePlan": ".mechanism.files.reader",
+    "load_scene": ".mechanism.files.reader",
+    "read_scene": ".mechanism.files.reader",
+    "Contact": ".mechanism.scene",
+    "Scene": ".mechanism.scene",
+    "parse_expression": ".parse",
+    "latex": ".printing.latex_output",
+    "ReportResult": ".report",
+    "conditions": ".report",
+    "report_tex": ".report",
+    "write_report": ".report",
+    "DEFAULT_SCENE": ".scenes",
+    "scene": ".scenes",
+    "scene_names": ".scenes",
+    "lam": ".stages.linear",
+    "Region": ".stages.regions",
+    "closed_form": ".stages.regions",
+    "Equilibria": ".stages",
+    "FastSubsystem": ".stages",
+    "Linearization": ".stages",
+    "Regularized": ".stages",
+    "Stability": ".stages",
+    "CubicStiffening": ".laws.library",
+    "Hertz": ".laws.library",
+    "HuntCrossley": ".laws.library",
+    "with_laws": ".laws.library",
+}
 
 __all__ = [
     "AtlasError",
@@ -88,5 +119,28 @@ __all__ = [
 ]
 
 __version__ = "0.1.0"
+
+
+def __getattr__(name: str):
+    """Import the module that defines ``name`` on first use, then keep the name here; a
+    subpackage or a 0.1 module path (``cs.numerics``, ``cs.regions``) is imported when asked for."""
+    if name in _LAZY:
+        value = getattr(importlib.import_module(_LAZY[name], __name__), name)
+    elif not name.startswith("_"):
+        try:
+            value = importlib.import_module(f"{__name__}.{name}")
+        except ModuleNotFoundError as error:
+            if error.name != f"{__name__}.{name}":
+                raise
+            raise AttributeError(f"module 'contactsym' has no attribute {name!r}") from None
+    else:
+        raise AttributeError(f"module 'contactsym' has no attribute {name!r}")
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
+
 
 _aliases.install(sys.modules[__name__])

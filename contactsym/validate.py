@@ -325,7 +325,11 @@ def solver_method(method, allowed: Sequence[str] = ("Radau", "BDF", "LSODA", "RK
 
 
 def real_array(values, what: str) -> np.ndarray:
-    """Real floats from numbers or arrays; complex values are an error, not cut to their real part."""
+    """Real floats from numbers or arrays; complex values are an error, not cut to their real part.
+
+    A float64 array comes back as a read-only view (no copy: a classifier reads its inputs
+    once, and nothing downstream can write into the caller's data).
+    """
     if isinstance(values, (str, bytes)):
         raise NumericsError(f"{what} = {shorten(values)} is text; pass numbers.")
     try:
@@ -336,7 +340,11 @@ def real_array(values, what: str) -> np.ndarray:
         raise NumericsError(f"complex values in {what}; pass real numbers (the imaginary parts would be lost).")
     if array.dtype.kind not in "biuf":
         raise NumericsError(f"{what} must hold real numbers, not {array.dtype} values.")
-    return array.astype(float)
+    if array.dtype != np.float64:
+        return array.astype(float)
+    view = array.view()  # the caller's float64 data, not copied and not writable through the result
+    view.flags.writeable = False
+    return view
 
 
 def output_times(t_eval, span: tuple[float, float]) -> np.ndarray | None:

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 import sympy as sp
@@ -21,11 +22,12 @@ import sympy as sp
 from .. import numerics
 from .grid import AtlasError, Grid
 from .kernel import Kernel, Setup, setup_for
-from .pointwise import PointFailure, build_catastrophe, build_cycle, build_function
+from .pointwise import SQUEAL_METHODS, PointFailure, build_catastrophe, build_cycle, build_function, build_squeal
 
 __all__ = [
     "PointFailure",
     "QUANTITIES",
+    "SQUEAL_METHODS",
     "Kernel",
     "Quantity",
     "as_quantity",
@@ -35,6 +37,7 @@ __all__ = [
     "equilibrium_count",
     "function",
     "leading_eigenvalue",
+    "squeal",
     "stable_fraction",
 ]
 
@@ -65,11 +68,18 @@ class Quantity:
 
 
 def _classifier(setup: Setup, conditions, what: str, extra=()) -> numerics.PointClassifier:
-    conditions = [setup.prepare(c, what, extra) for c in conditions]
+    conditions = tuple(setup.prepare(c, what, extra) for c in conditions)
     try:
-        return numerics.PointClassifier(conditions, setup.symbols + tuple(extra))
+        return _built_classifier(conditions, setup.symbols + tuple(extra))
     except numerics.NumericsError as error:
         raise AtlasError(f"{what}: {error}") from None
+
+
+@lru_cache(maxsize=32)
+def _built_classifier(conditions: tuple, symbols: tuple) -> numerics.PointClassifier:
+    """One classifier per scene and quantity: building one factors every condition (``sp.factor``),
+    which costs far more than a sweep's chunk; the classifier is read-only once built."""
+    return numerics.PointClassifier(conditions, symbols)
 
 
 def _strict(condition) -> list:
@@ -125,14 +135,15 @@ class _Classification(Kernel):
 
     def evaluate(self, points):
         n = len(points)
+        columns = self.setup.columns(points)
         stable, unstable, dependent = (
-            np.broadcast_to(np.asarray(m, dtype=bool), (n,)) for m in self.function(*self.setup.columns(points))
+            np.broadcast_to(np.asarray(m, dtype=bool), (n,)) for m in self.function(*columns)
         )
-        region = np.select([stable, unstable, dependent], [1.0, -1.0, 0.0], np.nan)
-        hurwitz = np.full(n, np.nan)
+        out = np.full((n, 2), np.nan)
+        out[:, 0] = np.select([stable, unstable, dependent], [1.0, -1.0, 0.0], np.nan)
         if self.classifier is not None:
-            hurwitz = self.classifier(*self.setup.columns(points)).stable.astype(float)
-        return np.column_stack([region, hurwitz])
+            out[:, 1] = self.classifier(*columns).stable
+        return out
 
 
 def _build_classification(scene, grid, values, signs=None):
@@ -289,6 +300,27 @@ def cycle(**options) -> Quantity:
     'cycle'
     """
     return Quantity("cycle", build_cycle, options)
+
+
+def squeal(
+    parameter: str, *, laws: Mapping | None = None, tol: float = 0.002, simulate: bool = True, **options
+) -> Quantity:
+    """The squeal's amplitude (half peak-to-peak of the reactions, largest over the contacts) and
+    frequency (tau) near a Hopf line crossed along ``parameter``, with per point the ``method``
+    (codes in ``SQUEAL_METHODS``: 0 stable equilibrium, 1 normal form, 2 simulation), its
+    estimated relative ``error`` and ``contact_loss`` (1 where a reaction reaches 0).
+
+    The Hopf normal form (one Hopf point per line of the grid along ``parameter``) gives the
+    value where its estimated error ``|c1| r^2 / omega`` (the size of the neglected terms) is
+    below ``tol``, the small cycle is stable (l1 < 0) and the pads keep contact; elsewhere
+    :func:`contactsym.numerics.fast_cycle` (``options``) simulates, unless ``simulate=False``
+    (then NaN with the reason). The estimate gives the order, not the constant: against long
+    simulations of the brake with Hertz pads the amplitude's error was several times it
+    (``benchmarks/squeal.py`` reports the ratio), hence the small default ``tol``.
+    """
+    return Quantity(
+        "squeal", build_squeal, {"parameter": parameter, "laws": laws, "tol": tol, "simulate": simulate, **options}
+    )
 
 
 def catastrophe(eps, span, initial: Mapping, **options) -> Quantity:

@@ -28,6 +28,7 @@ from functools import cached_property
 import sympy as sp
 from sympy.physics.mechanics import LagrangesMethod
 from sympy.physics.vector import Point, Vector
+from sympy.polys.matrices import DomainMatrix
 
 from ..algebra.canonical_form import TrigField
 from ..algebra.fraction_free import adjugate_and_det, adjugate_and_det_in_field, solve_fraction_free, t
@@ -159,40 +160,64 @@ def _check_mass_matrix(M: sp.Matrix, coordinates) -> None:
 
 
 def mass_determinant_is_zero(M: sp.Matrix) -> bool:
-    """det M = 0 identically. A nonzero value at one exact point proves det M != 0: the point
-    puts rationals (2t/(1 + t^2), (1 - t^2)/(1 + t^2)) for each angle's sine and cosine, so the
-    test is exact and costs one rational determinant; only a zero there needs the symbolic det.
+    """det M = 0 identically.
+
+    A nonzero value at one exact point proves det M != 0: the point puts rationals
+    (2t/(1 + t^2), (1 - t^2)/(1 + t^2)) for each angle's sine and cosine, 1 for each sign
+    symbol and a rational for every other generator, so it respects the only relations of
+    the field (sin^2 + cos^2 = 1, s^2 = 1) and evaluating there is a ring homomorphism: a
+    nonzero value means det M != 0 in the same field in which the symbolic determinant is
+    computed. The test is exact and costs one rational determinant; only a zero there (or a
+    pole of an entry) needs the symbolic det. Coordinates q(t), their rates and t are
+    generators like symbols (q is independent of sin q and cos q: e^(iq) is transcendental
+    over the rational functions of q), so det M != 0 in the field means not identically zero.
 
     Examples
     --------
-    >>> q, m = sp.symbols("q m", positive=True)
-    >>> mass_determinant_is_zero(sp.Matrix([[2*m, m*sp.cos(q)], [m*sp.cos(q), m]]))
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> q, m = dynamicsymbols("q"), sp.Symbol("m", positive=True)
+    >>> mass_determinant_is_zero(sp.Matrix([[m, m*sp.cos(q)], [m*sp.cos(q), m]]))
     False
-    >>> mass_determinant_is_zero(sp.Matrix([[m, m*sp.cos(q)], [m*sp.cos(q), m*sp.cos(q)**2]]))
+    >>> mass_determinant_is_zero(sp.Matrix([[m*sp.cos(q)**2, m*sp.cos(q)], [m*sp.cos(q), m]]))
     True
     """
     field = TrigField(list(M))
     entries = [[field.element(x) for x in row] for row in M.tolist()]
-    trig = {i for pair in field.pairs for i in pair}
-    if any(not g.is_Symbol and i not in trig for i, g in enumerate(field.ring.symbols)):
-        return not adjugate_and_det(entries, field.reduce)[1]  # sqrt(m) and m are not independent
-    point = [sp.Rational(k + 2, 2 * k + 7) for k in range(field.ring.ngens)]
-    for c, s in field.pairs:
-        t = sp.Rational(c + 1, c + 5)
-        point[c], point[s] = (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
-    try:
-        values = sp.Matrix([[_evaluate(x, point) for x in row] for row in entries])
-        if values.det() != 0:
-            return False
-    except ZeroDivisionError:  # the point hit a pole of an entry: decide symbolically
-        pass
+    value = _value_at_a_point(field, entries)
+    if value:
+        return False
     return not adjugate_and_det(entries, field.reduce)[1]
 
 
+def _value_at_a_point(field, entries):
+    """det of the entries at one exact point of the field's generators, or None at a pole of an entry."""
+    point = [sp.QQ(k + 2, 2 * k + 7) for k in range(field.ring.ngens)]
+    for i in field.signs:
+        point[i] = sp.QQ(1)
+    for c, s in field.pairs:
+        t = sp.QQ(c + 1, c + 5)
+        point[c], point[s] = (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
+    try:
+        values = [[_evaluate(x, point) for x in row] for row in entries]
+    except ZeroDivisionError:  # the point hit a pole of an entry: decide symbolically
+        return None
+    return DomainMatrix(values, (len(values), len(values)), sp.QQ).det()
+
+
 def _evaluate(value, point) -> sp.Rational:
-    numer = value.numer.evaluate(list(zip(value.numer.ring.gens, point)))
-    denom = value.denom.evaluate(list(zip(value.denom.ring.gens, point)))
-    return sp.Rational(numer) / sp.Rational(denom)
+    """A field element at a point of rationals, term by term (no ring per generator)."""
+    return _evaluate_poly(value.numer, point) / _evaluate_poly(value.denom, point)
+
+
+def _evaluate_poly(poly, point):
+    total = sp.QQ(0)
+    for monomial, coefficient in poly.terms():
+        term = sp.QQ(coefficient)
+        for x, e in zip(point, monomial):
+            if e:
+                term *= x**e
+        total += term
+    return total
 
 
 def contact_space(lagrangian, coordinates, contacts, loads=(), frame=None) -> ContactSpace:

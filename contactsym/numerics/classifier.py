@@ -143,7 +143,13 @@ class PointClassifier:
             raise NumericsError(
                 f"give {len(self.parameters)} arrays, one per parameter {list(map(str, self.parameters))}."
             )
-        return [validate.real_array(array, f"the values of {symbol}") for symbol, array in zip(self.parameters, arrays)]
+        return [validate.real_array(array, what) for what, array in zip(self._what(), arrays)]
+
+    def _what(self) -> list[str]:
+        """The parameters' names for messages, printed once (SymPy's printer costs more than a small chunk)."""
+        if getattr(self, "_names", None) is None:
+            self._names = [f"the values of {symbol}" for symbol in self.parameters]
+        return self._names
 
     def _check_values(self, arrays) -> None:
         for symbol, a in zip(self.parameters, arrays):
@@ -184,8 +190,16 @@ class PointClassifier:
         out = np.empty((len(self.kept), size), dtype=np.int8)
         for position, part in enumerate(self.parts):
             groups = [_as_array(next(values), size) for _ in part]
-            out[position] = _certain_sign(groups, max(self.band, 2 * self.gammas[position]), part)
+            out[position] = _certain_sign(
+                groups, max(self.band, 2 * self.gammas[position]), self._zero_parts()[position]
+            )
         return out
+
+    def _zero_parts(self) -> list[tuple[bool, bool]]:
+        """Per kept factor, (P = 0, M = 0): compared once, not per chunk (a SymPy comparison of large sums)."""
+        if getattr(self, "_zeros", None) is None:
+            self._zeros = [(part[0] == 0, part[1] == 0) for part in self.parts]
+        return self._zeros
 
     def _high_precision_sign(self, position: int, point: list[float]) -> int | None:
         """Sign of a kept factor in 256-bit arithmetic from the exact binary inputs, or None."""
@@ -208,7 +222,9 @@ class PointClassifier:
         budget = Budget(progress, max_seconds)
         arrays = self._check(arrays)
         shape = np.broadcast(*arrays).shape if arrays else ()
-        arrays = [np.ascontiguousarray(np.broadcast_to(a, shape)).ravel() for a in arrays]
+        arrays = [
+            a.ravel() if a.shape == shape else np.ascontiguousarray(np.broadcast_to(a, shape)).ravel() for a in arrays
+        ]
         size = int(np.prod(shape))
         factor_signs = np.empty((len(self.kept), size), dtype=np.int8)
         signs = np.empty((len(self.conditions), size), dtype=np.int8)
@@ -270,17 +286,18 @@ def _as_array(value, size: int) -> np.ndarray:
     return value if isinstance(value, np.ndarray) else np.full(size, float(value))
 
 
-def _certain_sign(groups, width: float, part) -> np.ndarray:
+def _certain_sign(groups, width: float, zeros: tuple[bool, bool]) -> np.ndarray:
     """+1/-1 where the sign of P - M (+ U) is certain, 0 elsewhere (int8 array); valid for
-    values computed without overflow, underflow or invalid operations."""
+    values computed without overflow, underflow or invalid operations. ``zeros``: whether
+    P and M are identically 0."""
     P, M, *rest = groups
     if rest:  # terms of unknown sign: |F^ - F| <= gamma (P + M + |U|)
         value = P - M + rest[0]
         certain = np.abs(value) > width * (P + M + rest[1])
         return np.where(certain, np.where(value > 0, 1, -1), 0).astype(np.int8)
-    if part[1] == 0:  # F = P, nonnegative terms: P^ > 0 iff P > 0
+    if zeros[1]:  # F = P, nonnegative terms: P^ > 0 iff P > 0
         return (P > 0).view(np.int8)
-    if part[0] == 0:
+    if zeros[0]:
         return -(M > 0).view(np.int8)
     # P - M > width (P + M) iff P (1 - width) > M (1 + width): no cancellation in the test
     positive = (P * (1 - width) > M * (1 + width)).view(np.int8)

@@ -11,7 +11,6 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import sympy as sp
-from scipy import ndimage
 
 from ..counts.regions import square_threshold
 from .common import STABLE_HATCH, UNSTABLE_HATCH, ContactPlot, _degrees, _float, _scene, axes_or_current
@@ -119,6 +118,8 @@ def _label_points(mask) -> list[tuple[int, int]]:
     Pieces that touch only at a corner (the half-strips at the square's vertices) are
     separated by eroding one grid step first.
     """
+    from scipy import ndimage  # a quarter of the package's import time: load it when labels are drawn
+
     core = ndimage.binary_erosion(mask)
     labels, count = ndimage.label(core)
     distance = ndimage.distance_transform_edt(core)

@@ -356,3 +356,64 @@ def test_cli_writes_the_atlas_all_or_nothing(tmp_path, capsys):
         f"contactsym: error: --out {tmp_path / 'a.txt'}: the atlas is written as NetCDF; give a file name ending in .nc.",
         "contactsym: error: grid axis 'mu': mu = -1.0 must be > 0 (the symbol is declared positive).",
     ]
+
+
+def test_the_classifier_is_built_once_per_scene_and_quantity(monkeypatch):
+    """A second sweep of the same scene and quantity reuses the classifier (building one factors
+    every Hurwitz condition), also with other fixed values (they are arguments of its code);
+    the verdicts agree with the first sweep's; another quantity builds its own."""
+    from contactsym.atlas import quantities
+
+    quantities._built_classifier.cache_clear()
+    built = []
+    original = numerics.PointClassifier.__init__
+
+    def counted(self, *args, **kwargs):
+        built.append(args[1])
+        original(self, *args, **kwargs)
+
+    monkeypatch.setattr(numerics.PointClassifier, "__init__", counted)
+    grid = {"alpha": np.linspace(0.3, 2.8, 4), "mu": [0.3, 2.5]}
+    first = atlas.sweep("brake", "classification", grid, values=BRAKE_LAW, scheduler="sync")
+    again = atlas.sweep(
+        "brake", "classification", {"alpha": grid["alpha"], "mu": [2.5]}, values=BRAKE_LAW, scheduler="sync"
+    )
+    assert len(built) == 1
+    assert np.array_equal(first.stable.values[:, 1], again.stable.values[:, 0])
+    other_law = atlas.sweep("brake", "classification", grid, values={**BRAKE_LAW, "Phi_1": -3.0}, scheduler="sync")
+    assert len(built) == 1 and set(np.unique(other_law.stable.values)) <= {-1.0, 1.0}
+    atlas.sweep("brake", "equilibrium_count", {"alpha": grid["alpha"]}, values={"m": 1, "mu": 0.8, "F_x": 2, "F_y": -4})
+    assert len(built) > 1
+
+
+def test_squeal_from_the_normal_form_near_the_line_against_a_long_simulation():
+    """Hertz pads: the normal form gives a value at 0.1-0.5% past the line (where a simulation to a
+    Poincare section does not converge), within 2% of a long simulation of the fast subsystem at
+    0.5% (runs from inside and outside the predicted cycle bracket it); before the line the
+    equilibrium is stable (amplitude 0); far out, with simulate=False, NaN with its reason."""
+    from contactsym.atlas.quantities import SQUEAL_METHODS, squeal
+    from contactsym.laws.library import Hertz
+
+    laws = {0: Hertz(), 1: Hertz()}
+    disc = {"m": 1, "alpha": np.pi / 2, "F_x": 0, "F_y": -4}
+    h = numerics.hopf_point(cs.scene("brake"), {**disc, "mu": 1.0}, "mu", laws=laws)
+    distances = np.array([-0.01, 0.001, 0.003, 0.005, 0.05])
+    grid = {"mu": h.value * (1 + distances)}
+    ds = atlas.sweep("brake", squeal("mu", laws=laws, tol=0.01, simulate=False), grid, values=disc, scheduler="sync")
+    assert ds.method.values.tolist()[:4] == [0.0, 1.0, 1.0, 1.0] and set(SQUEAL_METHODS) >= {0, 1, 2}
+    assert ds.amplitude.values[0] == 0 and np.all(ds.amplitude.values[1:4] > 0)
+    assert np.all(np.diff(ds.amplitude.values[1:4]) > 0) and np.all(ds.error.values[1:4] < 0.01)
+    assert np.isnan(ds.amplitude.values[4]) and "contact loss" in str(ds.reason.values[4])
+    mu = grid["mu"][3]
+    duration, period = 1.5 / (h.dalpha * (mu - h.value)), 2 * np.pi / h.omega
+    simulated = []
+    for factor in (0.8, 1.2):
+        run = numerics.simulate_fast(
+            cs.scene("brake"), {**disc, "mu": mu}, (0, duration), initial=h.cycle_start(mu, factor), laws=laws,
+            method="DOP853", rtol=1e-6, t_eval=np.linspace(duration - 2 * period, duration, 1000),
+        )  # fmt: skip
+        simulated.append(float(np.max(np.ptp(run.reactions, axis=1)) / 2))
+    assert abs(ds.amplitude.values[3] - np.mean(simulated)) / np.mean(simulated) < 0.02, (
+        ds.amplitude.values[3],
+        simulated,
+    )

@@ -489,3 +489,72 @@ def test_stepladder_contact_accelerations_match_the_unsimplified_derivation():
         values = [rng.uniform(-2, 2) if s.is_positive is not True else rng.uniform(0.3, 2) for s in symbols]
         expected = naive_f(*values)
         assert ours_f(*values) == pytest.approx(expected, rel=1e-9, abs=1e-9)
+
+
+# --- the mass determinant: one exact point, one symbolic adjugate --------------------
+
+
+def _random_mass_matrix(rng: random.Random, n: int, rank: int):
+    """B B^T with B n x rank: entries mix q_i(t), sin q_i, cos q_i, q_i', t, masses and an
+    opaque generator I(l); singular when rank < n."""
+    q = dynamicsymbols(" ".join(f"q{i}" for i in range(n)))
+    atoms = [m, l, t, sp.Function("I")(l), *q, *(qi.diff() for qi in q)]
+    atoms += [f(qi) for qi in q for f in (sp.sin, sp.cos)]
+
+    def entry():
+        return rng.randint(1, 3) * rng.choice(atoms) * rng.choice(atoms) + rng.randint(-2, 2)
+
+    B = sp.Matrix(n, rank, lambda i, j: entry())
+    return B * B.T
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_the_point_test_agrees_with_the_symbolic_determinant_with_coordinates_and_time(seed):
+    """Generators q(t), q'(t), t and opaque ones beside sin q, cos q: the point verdict is the
+    symbolic one (Faddeev-LeVerrier in the reduced field), on singular and regular random matrices."""
+    from contactsym.algebra.canonical_form import TrigField
+    from contactsym.algebra.fraction_free import adjugate_and_det
+    from contactsym.mechanism import contact_space as module
+
+    rng = random.Random(seed)
+    n = 2 + seed % 2
+    for rank in (n - 1, n):
+        M = _random_mass_matrix(rng, n, rank)
+        field = TrigField(list(M))
+        assert any(isinstance(g, sp.core.function.AppliedUndef) for g in field.ring.symbols)
+        entries = [[field.element(x) for x in row] for row in M.tolist()]
+        symbolic_zero = not adjugate_and_det(entries, field.reduce)[1]
+        assert symbolic_zero == (rank < n)
+        assert module.mass_determinant_is_zero(M) == symbolic_zero
+        if rank == n:  # decided at the point, without the symbolic determinant
+            assert module._value_at_a_point(field, entries) != 0
+
+
+def test_a_sign_symbol_takes_a_value_of_a_sign_at_the_point():
+    """det [[s, 1], [1, s]] = s^2 - 1 = 0 for a sign s = +-1: a rational value for s would say otherwise."""
+    from contactsym.algebra.basic import SignSymbol
+    from contactsym.mechanism.contact_space import mass_determinant_is_zero
+
+    s = SignSymbol("s")
+    assert mass_determinant_is_zero(sp.Matrix([[s, 1], [1, s]]))
+    assert not mass_determinant_is_zero(sp.Matrix([[s, 1], [1, 2 * s]]))
+
+
+def test_a_chain_computes_one_symbolic_adjugate_of_its_mass_matrix(monkeypatch):
+    """The singularity check decides at a point; the fast subsystem and det M > 0 share one adj(M)."""
+    from contactsym.algebra import fraction_free
+    from contactsym.scenes.link_chain import build_chain
+
+    fraction_free.polynomial_adjugate.cache_clear()
+    sizes = []
+    original = fraction_free.adjugate_and_det
+
+    def counted(M, reduce):
+        sizes.append(len(M))
+        return original(M, reduce)
+
+    monkeypatch.setattr(fraction_free, "adjugate_and_det", counted)
+    scene = build_chain(2)
+    scene.fast_subsystem()
+    assert scene.positive_expressions
+    assert sizes == [2]

@@ -173,3 +173,17 @@ def test_many_brake_points_get_the_exact_signs_of_the_hurwitz_conditions():
     for k in range(0, n, 10):
         point = dict(zip(BRAKE_PARAMETERS, [v[k] for v in values]))
         assert result.signs[:, k].tolist() == [nm.certified_sign(h, point)[0] for h in BRAKE.hurwitz]
+
+
+def test_float64_inputs_are_read_in_place_and_never_written():
+    """real_array hands a float64 array back as a read-only view (no copy); other real types are converted."""
+    from contactsym import validate
+
+    values = np.linspace(0.0, 1.0, 7)
+    seen = validate.real_array(values, "x")
+    assert np.shares_memory(seen, values) and not seen.flags.writeable
+    assert values.flags.writeable  # the caller's array is untouched
+    converted = validate.real_array(np.arange(3, dtype=np.int32), "n")
+    assert converted.dtype == np.float64 and converted.tolist() == [0.0, 1.0, 2.0]
+    with pytest.raises(cs.errors.NumericsError, match="complex"):
+        validate.real_array(np.array([1j]), "z")
