@@ -14,7 +14,7 @@ mu**2*sin(alpha)**2/m**2 + sin(alpha)**2/m**2
 
 import sys
 
-from . import _aliases
+from . import _aliases, _entry  # noqa: F401 - _entry first: a Ctrl-C while the command line imports
 from .algebra.basic import SignSymbol
 from .errors import (
     ComplianceError,

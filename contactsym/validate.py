@@ -23,6 +23,7 @@ contactsym.errors.SignPatternError: sign 0 at position 1 must be +1 or -1; write
 from __future__ import annotations
 
 import math
+import os
 from collections.abc import Iterable, Sequence
 from fractions import Fraction
 
@@ -30,11 +31,14 @@ import numpy as np
 import sympy as sp
 from sympy.physics.vector import Point, ReferenceFrame, Vector
 
-from .errors import ComplianceError, NumericsError, SceneError, SignPatternError
+from .errors import ComplianceError, ContactsymError, NumericsError, SceneError, SignPatternError
 
 __all__ = [
     "SHOWN",
     "chunk_size",
+    "flag",
+    "instance_of",
+    "path_text",
     "contact_fields",
     "cut",
     "finite_expression",
@@ -75,6 +79,44 @@ def _sequence(value, what: str, hint: str, error=SceneError) -> tuple:
     if isinstance(value, (str, bytes, dict)) or not isinstance(value, Iterable):
         raise error(f"{what} must be a list, not {type(value).__name__} {shorten(value)}; {hint}.")
     return tuple(value)
+
+
+# --- flags, paths and types ---------------------------------------------------------------------
+
+
+def flag(value, what: str, error=ContactsymError) -> bool:
+    """A flag must be True or False: ``force="no"`` is text, and text is not a flag.
+
+    Examples
+    --------
+    >>> flag(False, "force")
+    False
+    >>> flag("no", "force")
+    Traceback (most recent call last):
+    ...
+    contactsym.errors.ContactsymError: force = 'no' must be True or False (a bool), not str.
+    """
+    if not isinstance(value, (bool, np.bool_)):
+        raise error(f"{what} = {shorten(value)} must be True or False (a bool), not {type(value).__name__}.")
+    return bool(value)
+
+
+def path_text(value, what: str, error=ContactsymError) -> str:
+    """A file or directory name: text or an ``os.PathLike``, not empty, without NUL characters."""
+    if isinstance(value, os.PathLike):
+        value = os.fspath(value)
+    if not isinstance(value, str):
+        raise error(f"{what} = {shorten(value)} must be a path (text or pathlib.Path), not {type(value).__name__}.")
+    if not value.strip() or "\x00" in value:
+        raise error(f"{what} = {shorten(value)} is not a usable path; name a file or directory.")
+    return value
+
+
+def instance_of(value, kinds, what: str, hint: str, error=ContactsymError, optional: bool = False):
+    """``value`` if it is one of ``kinds`` (or None when ``optional``), else a clear error ending with ``hint``."""
+    if (optional and value is None) or (isinstance(value, kinds) and not isinstance(value, bool)):
+        return value
+    raise error(f"{what} = {shorten(value)} ({type(value).__name__}) is not accepted; {hint}.")
 
 
 # --- SymPy objects and numbers ---------------------------------------------------------------
