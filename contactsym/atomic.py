@@ -64,10 +64,12 @@ __all__ = [
     "Interrupted",
     "fresh_directory",
     "last_signal",
+    "process_tag",
     "remove_leftovers",
     "replaced_directory",
     "scratch_directory",
     "signals_as_exceptions",
+    "umask_bits",
 ]
 
 #: The file that marks a directory as written by contactsym (and so replaceable).
@@ -130,7 +132,7 @@ def _check_replaceable(target: Path, force: bool, error: type[ContactsymError]) 
         )
 
 
-def _tag() -> str:
+def process_tag() -> str:
     """This process's part of a temporary name: host and process id, so that a later run can tell it is gone."""
     host = "".join(c for c in socket.gethostname() if c.isalnum())[:32] or "host"
     return f"{host}-{os.getpid()}-"
@@ -151,7 +153,7 @@ def remove_leftovers(folder: Path | str, prefix: str) -> list[Path]:
 
     Returns what was removed. Entries of runs still going, or of other hosts, stay.
     """
-    folder, host = Path(folder), _tag().split("-")[0]
+    folder, host = Path(folder), process_tag().split("-")[0]
     removed = []
     try:
         names = [p.name for p in folder.iterdir() if p.name.startswith(prefix)]
@@ -170,7 +172,8 @@ def remove_leftovers(folder: Path | str, prefix: str) -> list[Path]:
     return removed
 
 
-def _umask() -> int:
+def umask_bits() -> int:
+    """The process's umask (read, not changed, where /proc allows)."""
     try:
         for line in Path("/proc/self/status").read_text().splitlines():
             if line.startswith("Umask:"):
@@ -184,8 +187,8 @@ def _umask() -> int:
 
 def fresh_directory(folder: Path, prefix: str) -> Path:
     """A new directory ``folder/PREFIX<host>-<pid>-XXXX`` with the permissions the umask gives a new folder."""
-    made = Path(tempfile.mkdtemp(prefix=prefix + _tag(), dir=folder))
-    os.chmod(made, 0o777 & ~_umask())  # mkdtemp makes 0700; an output folder follows the umask like mkdir
+    made = Path(tempfile.mkdtemp(prefix=prefix + process_tag(), dir=folder))
+    os.chmod(made, 0o777 & ~umask_bits())  # mkdtemp makes 0700; an output folder follows the umask like mkdir
     return made
 
 
@@ -222,7 +225,7 @@ def _swap(work: Path, target: Path) -> None:
         if not os.path.lexists(target):
             os.rename(work, target)
             return
-        old = Path(tempfile.mkdtemp(prefix=f".{target.name}.old-{_tag()}", dir=target.parent))
+        old = Path(tempfile.mkdtemp(prefix=f".{target.name}.old-{process_tag()}", dir=target.parent))
         os.rmdir(old)  # only its (unique) name is wanted
         os.rename(target, old)
         try:

@@ -21,6 +21,7 @@ import sympy as sp
 from .. import numerics
 from .grid import AtlasError, Grid
 from .kernel import Kernel, Setup, setup_for
+from .options import check_options
 from .pointwise import PointFailure, build_catastrophe, build_cycle, build_function
 
 __all__ = [
@@ -195,6 +196,7 @@ def _build_equilibrium_count(scene, grid, values):
 
 def leading_eigenvalue(*, signs=None) -> Quantity:
     """The eigenvalue of (4.5) with the largest real part: its real part and |imaginary part|."""
+    check_options("leading_eigenvalue", {"signs": signs})
     return Quantity("leading_eigenvalue", _build_leading_eigenvalue, {"signs": signs})
 
 
@@ -202,13 +204,16 @@ def classification(*, signs=None) -> Quantity:
     """``region``: 1 stable for every law, -1 unstable for every law, 0 law-dependent, NaN undecided
     (Propositions 3-8, in floating point); ``stable``: the certified Hurwitz verdict (+1, -1, 0 on the
     boundary) when the law's Phi_j, Psi_j are given, else NaN."""
+    check_options("classification", {"signs": signs})
     return Quantity("classification", _build_classification, {"signs": signs})
 
 
 def stable_fraction(*, laws: int = 256, magnitudes=(0.1, 10.0), seed: int = 0, signs=None) -> Quantity:
     """The fraction of ``laws`` sampled laws that are stable: Phi_j, Psi_j < 0 with magnitudes
     log-uniform in ``magnitudes`` (the same samples at every point), certified by PointClassifier."""
-    options = {"laws": laws, "magnitudes": tuple(magnitudes), "seed": seed, "signs": signs}
+    options = {"laws": laws, "magnitudes": magnitudes, "seed": seed, "signs": signs}
+    check_options("stable_fraction", options)
+    options["magnitudes"] = tuple(magnitudes)
     return Quantity("stable_fraction", _build_stable_fraction, options)
 
 
@@ -220,11 +225,13 @@ def equilibrium_count() -> Quantity:
 def cycle(**options) -> Quantity:
     """Amplitude (half the peak-to-peak of the reactions, largest over the contacts) and angular
     frequency (stretched time) of the stable cycle from :func:`contactsym.numerics.fast_cycle`."""
+    check_options("cycle", options)
     return Quantity("cycle", build_cycle, options)
 
 
 def catastrophe(eps, span, initial: Mapping, **options) -> Quantity:
     """Time to the impact-type catastrophe in :func:`contactsym.numerics.simulate_full` (inf: none in span)."""
+    check_options("catastrophe", {"eps": eps, "span": span, "initial": initial, **options})
     return Quantity("catastrophe", build_catastrophe, {"eps": eps, "span": tuple(span), "initial": initial, **options})
 
 
@@ -232,7 +239,9 @@ def function(fn: Callable, outputs: Sequence[str] | None = None) -> Quantity:
     """The user's own ``fn(values) -> number, sequence or mapping`` of a point's values by name."""
     if not callable(fn):
         raise AtlasError(f"{fn!r} is not callable; give a function of a mapping of values.")
-    names = tuple(outputs) if outputs is not None else (getattr(fn, "__name__", "value"),)
+    names = outputs if outputs is not None else (getattr(fn, "__name__", "value"),)
+    check_options("function", {"fn": fn, "outputs": names})
+    names = tuple(names)
     return Quantity(f"function {getattr(fn, '__qualname__', 'value')}", build_function, {"fn": fn, "outputs": names})
 
 
