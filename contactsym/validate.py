@@ -36,6 +36,7 @@ from .errors import ComplianceError, ContactsymError, NumericsError, SceneError,
 __all__ = [
     "SHOWN",
     "chunk_size",
+    "checked_fields",
     "flag",
     "instance_of",
     "path_text",
@@ -117,6 +118,48 @@ def instance_of(value, kinds, what: str, hint: str, error=ContactsymError, optio
     if (optional and value is None) or (isinstance(value, kinds) and not isinstance(value, bool)):
         return value
     raise error(f"{what} = {shorten(value)} ({type(value).__name__}) is not accepted; {hint}.")
+
+
+_PLAIN_TYPES = {"str": str, "bool": bool, "int": int, "float": float, "tuple": tuple, "list": list, "dict": dict}
+
+
+def _fits(value, hint: str) -> bool | None:
+    """Whether ``value`` fits a plain type hint written as text (None: the hint is not a plain one)."""
+    verdicts = []
+    for part in (p.strip() for p in hint.split("|")):
+        base = part.split("[")[0]
+        if base == "None":
+            verdicts.append(value is None)
+        elif base in ("Path", "pathlib.Path"):
+            verdicts.append(isinstance(value, (str, os.PathLike)))
+        elif base in ("sp.Basic", "sp.Expr", "sympy.Basic"):
+            verdicts.append(isinstance(value, (sp.Basic, *_NUMBER_TYPES)) and not isinstance(value, bool))
+        elif base in ("Mapping", "dict"):
+            verdicts.append(isinstance(value, dict) or hasattr(value, "keys") and hasattr(value, "__getitem__"))
+        elif base in _PLAIN_TYPES:
+            kind = _PLAIN_TYPES[base]
+            if kind is bool:
+                verdicts.append(isinstance(value, (bool, np.bool_)))
+            elif kind in (int, float):
+                ok = isinstance(value, (int, np.integer) if kind is int else _NUMBER_TYPES)
+                verdicts.append(ok and not isinstance(value, (bool, np.bool_)))
+            else:
+                verdicts.append(isinstance(value, kind))
+        else:
+            return None
+    return any(verdicts)
+
+
+def checked_fields(record, error=ContactsymError) -> None:
+    """Each field of a dataclass ``record`` whose hint is a plain type (text, number, flag, tuple, dict,
+    SymPy object, path, or a union of these) must hold a value of that type; call it in ``__post_init__``."""
+    for name, spec in getattr(type(record), "__dataclass_fields__", {}).items():
+        hint = spec.type if isinstance(spec.type, str) else getattr(spec.type, "__name__", "")
+        value = getattr(record, name)
+        if _fits(value, hint) is False:
+            raise error(
+                f"{type(record).__name__}: {name} = {shorten(value)} must be {hint}, not {type(value).__name__}."
+            )
 
 
 # --- SymPy objects and numbers ---------------------------------------------------------------

@@ -45,6 +45,12 @@ class Grid:
     names: tuple
     axes: tuple
 
+    def __post_init__(self):
+        named = isinstance(self.names, tuple) and all(isinstance(n, str) for n in self.names)
+        arrays = isinstance(self.axes, tuple) and all(isinstance(a, np.ndarray) and a.ndim == 1 for a in self.axes)
+        if not (named and arrays and len(self.names) == len(self.axes)):
+            raise AtlasError("a Grid holds a tuple of names and a tuple of 1-D arrays, one per name; use as_grid().")
+
     @property
     def shape(self) -> tuple:
         return tuple(len(a) for a in self.axes)

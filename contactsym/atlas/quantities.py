@@ -48,6 +48,10 @@ class Quantity:
     builder: Callable = field(repr=False)
     options: dict = field(default_factory=dict)
 
+    def __post_init__(self):
+        if not isinstance(self.name, str) or not callable(self.builder) or not isinstance(self.options, dict):
+            raise AtlasError("a Quantity needs a name (text), a builder (a function) and options (a dict).")
+
     def build(self, scene, grid: Grid, values: Mapping | None) -> Kernel:
         return self.builder(scene, grid, values, **self.options)
 

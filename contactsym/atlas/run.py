@@ -20,7 +20,7 @@ import numpy as np
 
 from ..mechanism.scene import Scene
 from ..scenes import scene as scene_by_name
-from ..validate import flag, path_text, shorten
+from ..validate import cut, flag, path_text, shorten
 from .grid import REASON_LIMIT, AtlasError, Grid, as_grid, check_size
 from .kernel import Kernel
 from .options import check_options
@@ -110,6 +110,9 @@ def _run_local(kernel, grid, chunk, todo, results, scheduler, workers, progress)
 def connect(client, timeout: float = 10.0):
     """(a ``distributed.Client``, whether we opened it) from a Client, a cluster or an address."""
     distributed = _require("distributed")
+    ok = isinstance(timeout, (int, float)) and not isinstance(timeout, bool) and np.isfinite(timeout) and timeout > 0
+    if not ok:
+        raise AtlasError(f"timeout = {shorten(timeout)} must be a finite number of seconds > 0.")
     if isinstance(client, distributed.Client):
         return client, False
     if isinstance(client, str) or hasattr(client, "scheduler_address"):  # an address, or a cluster object
@@ -118,8 +121,8 @@ def connect(client, timeout: float = 10.0):
             return distributed.Client(client, timeout=timeout), True
         except (OSError, TimeoutError, ValueError) as error:
             reason = str(error).strip().splitlines()[0] if str(error).strip() else type(error).__name__
-            raise AtlasError(f"cannot reach the Dask scheduler at {address}: {reason}") from None
-    raise AtlasError(f"client = {client!r}: give a distributed.Client, a cluster or a scheduler address.")
+            raise AtlasError(f"cannot reach the Dask scheduler at {cut(str(address))}: {cut(reason, 200)}") from None
+    raise AtlasError(f"client = {shorten(client)}: give a distributed.Client, a cluster or a scheduler address.")
 
 
 def _run_distributed(client, kernel, grid, chunk, todo, results, progress) -> None:

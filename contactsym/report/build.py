@@ -16,7 +16,7 @@ from pathlib import Path
 from ..atomic import replaced_directory, scratch_directory
 from ..errors import ContactsymError
 from ..mechanism.scene import Scene
-from ..validate import flag, instance_of, path_text, shorten
+from ..validate import checked_fields, flag, instance_of, path_text, shorten
 from .document import Figure, report_tex
 from .scene_parts import FigureSource
 from .summary import conditions
@@ -39,6 +39,9 @@ class ReportResult:
     pdf: Path | None = None
     figures: list = field(default_factory=list)
     notes: list = field(default_factory=list)
+
+    def __post_init__(self):
+        checked_fields(self, ReportError)
 
 
 # --- files ------------------------------------------------------------------------------------

@@ -16,10 +16,11 @@ from __future__ import annotations
 import sympy as sp
 
 from ..errors import ContactsymError
-from ..mechanism.scene import paper_equations
+from ..mechanism.scene import Scene, paper_equations
 from ..printing.latex_output import tex
 from ..stages.regions import Region
 from ..stages.stability import hurwitz_names
+from ..validate import instance_of
 from .scene_parts import _count_tag
 
 __all__ = ["conditions", "summary_text"]
@@ -55,6 +56,7 @@ def conditions(scene, signs=None) -> dict:
     >>> data["regions"]["stable for every law"]["sympy"], data["regions"]["stable for every law"]["paper"]
     ('mu <= Abs(cot(alpha))', ['(4.4)', '(6.3)'])
     """
+    instance_of(scene, Scene, "scene", "pass a Scene, e.g. contactsym.scene('brake')")
     st = scene.stability(signs)
     lin = scene.linearization(signs)
     data = {

@@ -38,8 +38,10 @@ import sympy as sp
 
 from .. import inequalities
 from ..algebra.basic import known_sign
+from ..errors import SceneError
 from ..parse import sympy_only
 from ..printing.latex_output import tex
+from ..validate import shorten, sign_pattern
 
 __all__ = ["Region", "closed_form", "known_sign", "scene_regions", "REGION_NAMES"]
 
@@ -64,6 +66,11 @@ def closed_form(condition, scene=None, solve_for: sp.Symbol | None = None, signs
     >>> closed_form(s.stability().robustly_stable, s)
     ((v_1 + 1)*(v_2 + 1) >= 0) & (v_1 < 2*kappa**2 + 1) & (v_2 < 2*kappa**2 + 1) & (v_1 + v_2 < 2*kappa**2)
     """
+    if scene is not None and not callable(getattr(scene, "present", None)) or isinstance(scene, type):
+        raise SceneError(f"scene = {shorten(scene)} must be a Scene (or None), e.g. contactsym.scene('brake').")
+    if solve_for is not None and not isinstance(solve_for, sp.Symbol):
+        raise SceneError(f"solve_for = {shorten(solve_for)} must be a sympy Symbol (a parameter) or None.")
+    signs = None if signs is None else sign_pattern(signs)
     positive = tuple(getattr(scene, "positive_expressions", ()))
     condition = scene.present(condition, signs) if scene is not None else sympy_only(condition, "the condition")
     return inequalities.closed_form(condition, positive, solve_for, raw_ops=RAW_OPS, factor_terms=FACTOR_TERMS)

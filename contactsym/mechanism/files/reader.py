@@ -51,9 +51,10 @@ import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
 from ...algebra.basic import SignSymbol
-from ...errors import ContactsymError
+from ...errors import ContactsymError, SceneError
 from ...parse import CONSTANTS, FUNCTIONS, ParseError, parse_expression
 from ...scenes import scene, scene_names
+from ...validate import checked_fields, cut, path_text, shorten
 from ..contact import plain_symbol
 from ..contact_space import t
 from ..scene import Scene
@@ -83,6 +84,13 @@ class FigurePlan:
     x_range: tuple[float, float]
     y_range: tuple[float, float]
     values: dict = field(default_factory=dict)
+
+    def __post_init__(self):
+        checked_fields(self, SceneError)  # then the ranges: two finite numbers, low < high
+        for what, pair in (("x_range", self.x_range), ("y_range", self.y_range)):
+            numbers = all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in pair)
+            if len(pair) != 2 or not numbers or not pair[0] < pair[1]:
+                raise SceneError(f"FigurePlan {what} = {shorten(pair)} must be two finite numbers, low < high.")
 
 
 class _Reader(PlaneMixin, ContactsMixin):
@@ -328,6 +336,9 @@ def read_scene(text: str, source: str = "<scene file>", default_name: str = "use
     ...
     contactsym.mechanism.files.toml_source.SceneFileError: a.toml:6: unknown key 'laww' in [contacts.0]; did you mean 'law'? allowed: gap, reaction, unilateral, law, friction.
     """
+    for what, value in (("text", text), ("source", source), ("default_name", default_name)):
+        if not isinstance(value, str):
+            raise SceneFileError(f"read_scene: {what} = {shorten(value)} must be text, not {type(value).__name__}.")
     try:
         return _Reader(TomlSource(text, source), default_name).build()
     except RecursionError:
@@ -343,13 +354,12 @@ def load_scene(path) -> Scene:
     >>> load_scene(Path(__file__).parent.parent / "examples" / "brake.toml")
     <Scene 'brake-file': 3 coordinates, k = 2 contacts>
     """
-    path = Path(path)
+    path = Path(path_text(path, "the scene file's path", SceneFileError))
     try:
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as error:
-        raise SceneFileError(
-            f"{path}: cannot read the scene file ({getattr(error, 'strerror', None) or error})."
-        ) from None
+        why = getattr(error, "strerror", None) or type(error).__name__
+        raise SceneFileError(f"{cut(str(path))}: cannot read the scene file ({why}).") from None
     return read_scene(text, str(path), re.sub(r"[^A-Za-z0-9_.\-]", "-", path.stem)[:64] or "user")
 
 
@@ -361,6 +371,8 @@ def scene_or_file(argument: str) -> Scene:
     >>> scene_or_file("brake")
     <Scene 'brake': 3 coordinates, k = 2 contacts>
     """
+    if not isinstance(argument, str):
+        raise SceneError(f"{shorten(argument)} is not a scene name or a scene file's path; give text.")
     if argument.endswith(".toml") or (argument not in scene_names() and Path(argument).is_file()):
         return load_scene(argument)
     return scene(argument)
