@@ -30,6 +30,8 @@ from dataclasses import dataclass, field
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
+from ..validate import flag
+
 __all__ = ["Formula", "Numbering", "formulas", "latex", "prime", "signs_latex", "tex"]
 
 
@@ -218,6 +220,7 @@ def latex(obj, *, present: bool = False, tags: bool = False) -> str:
     >>> print(cs.latex(cs.scene("sliding-point").equilibria(), tags=True))
     \begin{aligned} u^{*} &= - Y{\left(x,\dot{x} \right)} && \text{(3.2)} \end{aligned}
     """
+    present, tags = flag(present, "present"), flag(tags, "tags")
     if _is_region(obj):
         return obj.latex()
     if not callable(getattr(obj, "formulas", None)):

@@ -128,6 +128,8 @@ class Region:
     symbols: tuple = field(default=())
 
     def __post_init__(self):
+        if not isinstance(self.name, str) or not isinstance(self.description, str) or isinstance(self.symbols, str):
+            raise SceneError("a Region's name and description are text, and its symbols a tuple of symbols.")
         object.__setattr__(self, "condition", sympy_only(self.condition, "a region's condition"))
         if not self.symbols:
             object.__setattr__(self, "symbols", tuple(sorted(self.condition.free_symbols, key=str)))
