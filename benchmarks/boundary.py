@@ -180,7 +180,7 @@ def _is(value, kind) -> bool | None:
         allowed = {int: (int, np.integer), float: _NUMBER, complex: (*_NUMBER, complex)}[kind]
         return isinstance(value, allowed) and not isinstance(value, (bool, np.bool_))
     if kind in (sp.Basic, sp.Expr, sp.Symbol):
-        numeric = isinstance(value, _NUMBER) and not isinstance(value, bool)
+        numeric = isinstance(value, (*_NUMBER, bool))  # SymPy takes numbers and True/False exactly
         return isinstance(value, kind) or (kind is not sp.Symbol and numeric)
     if isinstance(kind, type):
         if kind in (abc.Sequence, list, tuple) and isinstance(value, (str, bytes)):
@@ -376,13 +376,13 @@ _CLI_JUNK = ["", "x" * 5000, SENTINEL, "-", "nope", "nan", "inf", "-1", "0", "1e
 _CLI_JUNK += ["mu=0:1:0", "mu=1:0:-3", "mu=0:1:1e12", "mu=a,b", "../x", "--force"]
 
 
-def cli_argv(rng: random.Random, options: dict) -> tuple[str, list[str]]:
-    """A command line for one subcommand with one or more wrong arguments (never a run of the benchmarks)."""
-    command = rng.choice(sorted(options))
+def cli_argv(rng: random.Random, options: dict, command: str) -> tuple[str, list[str]]:
+    """A command line for ``command`` with wrong arguments (never a run of the benchmarks, at most one report)."""
     positionals, flags = options[command]
     argv = [command]
     for name in positionals:
-        argv.append(rng.choice(["brake", "sliding-point", *_CLI_JUNK]) if name != "quantity" else "classification")
+        valid = ["sliding-point"] if command == "report" else ["brake", "sliding-point"]  # one quick report at most
+        argv.append(rng.choice([*valid, *_CLI_JUNK]) if name != "quantity" else "classification")
     for option, (takes, choices) in flags.items():
         if rng.random() < 0.5:
             continue
@@ -391,6 +391,9 @@ def cli_argv(rng: random.Random, options: dict) -> tuple[str, list[str]]:
             argv.append(rng.choice([*choices, *_CLI_JUNK] if choices else _CLI_JUNK))
     if command == "bench":  # a valid bench would run the benchmarks: make it fail fast (the last --json counts)
         argv += ["--json", "/nonexistent/folder/x.json"]
+    if command == "report":  # one scene at most, no pdflatex: a valid report must fit the time limit
+        argv[1:1] = ["sliding-point"] if argv[1].startswith("-") else []
+        argv.append("--no-pdf")
     if command == "atlas" and "--grid" not in argv:
         argv += ["--grid", rng.choice(_CLI_JUNK)]
     return command, argv

@@ -412,7 +412,7 @@ def _probe_call(index: int, seed: int, seconds: float) -> tuple[str, str, str]:
         if kind in ("clear error", "raw traceback", "silent acceptance"):
             detail = f"{detail} [wrong: {', '.join(call.mutated)}]"
         return call.target, kind, detail
-    command, argv = boundary.cli_argv(rng, _PROBE["cli"])
+    command, argv = boundary.cli_argv(rng, _PROBE["cli"], _PROBE["labels"][index][len("cli ") :])
     case = cli_case_of(argv, is_bad=True)
     case.target = f"cli {command}"
     kind, detail = outcome(case, seconds)
@@ -484,6 +484,7 @@ def probe_targets() -> list[str]:
         _PROBE["targets"] = boundary.targets()
         _PROBE["wrong"] = boundary.wrong_values()
         _PROBE["cli"] = boundary.cli_options()
+        _PROBE["labels"] = [t.label for t in _PROBE["targets"]] + [f"cli {c}" for c in sorted(_PROBE["cli"])]
     return [t.label for t in _PROBE["targets"]] + [f"cli {c}" for c in sorted(_PROBE["cli"])]
 
 

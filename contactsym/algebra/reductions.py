@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from ..errors import SignPatternError
 from ..parse import sympy_only
 
 __all__ = ["SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "known_sign"]
@@ -21,6 +22,8 @@ class SignSymbol(sp.Symbol):
     """A symbol for sign(sigma) on an open sign pattern: its value is +1 or -1."""
 
     def __new__(cls, name, **assumptions):
+        if not isinstance(name, str) or not name.strip():
+            raise SignPatternError(f"a SignSymbol's name must be text such as 's', not {type(name).__name__}.")
         return super().__new__(cls, name, integer=True, nonzero=True)
 
 
@@ -40,7 +43,7 @@ def reduce_signs(expr: sp.Expr) -> sp.Expr:
     >>> reduce_signs(s**2 + 3*s**3 - s**4)
     3*s
     """
-    return sp.sympify(expr).replace(
+    return sympy_only(expr, "the expression").replace(  # never sympify text: it would be evaluated
         lambda e: e.is_Pow and isinstance(e.base, SignSymbol) and e.exp.is_Integer,
         lambda e: e.base ** (e.exp % 2),
     )
@@ -63,7 +66,7 @@ def reduce_trig(expr: sp.Expr) -> sp.Expr:
         n = int(e.exp)
         return e.base ** (n % 2) * (1 - sp.sin(e.base.args[0]) ** 2) ** (n // 2)
 
-    return sp.expand(sp.sympify(expr).replace(is_cos_power, rewrite))
+    return sp.expand(sympy_only(expr, "the expression").replace(is_cos_power, rewrite))
 
 
 def known_sign(expr: sp.Expr, positive=()) -> int | None:

@@ -118,6 +118,8 @@ def as_grid(grid, *, max_points: int | None = None, outputs: int = 1) -> Grid:
     ...
     contactsym.atlas.grid.AtlasError: the grid has 1000000 points, more than max_points = 100000; sweep a coarser grid or raise max_points.
     """
+    if isinstance(outputs, bool) or not isinstance(outputs, (int, np.integer)) or outputs < 1:
+        raise AtlasError(f"outputs = {outputs!r:.60} must be a whole number >= 1.")
     if isinstance(grid, Grid):
         return grid
     if not isinstance(grid, Mapping):

@@ -48,6 +48,11 @@ class AtlasData:
 
     def __post_init__(self):
         checked_fields(self, AtlasError)
+        arrays = isinstance(self.xs, np.ndarray) and isinstance(self.values, np.ndarray)
+        if not arrays or not (self.ys is None or isinstance(self.ys, np.ndarray)) or not isinstance(self.fine, tuple):
+            raise AtlasError(
+                "AtlasData holds NumPy arrays xs, values (and ys, or None) and a tuple fine; use atlas_data()."
+            )
 
 
 def _check_atlas_arguments(ds, variable, x, y, scene, resolution) -> None:

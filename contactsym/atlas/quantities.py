@@ -19,6 +19,7 @@ import numpy as np
 import sympy as sp
 
 from .. import numerics
+from ..validate import shorten
 from .grid import AtlasError, Grid
 from .kernel import Kernel, Setup, setup_for
 from .options import check_options
@@ -242,7 +243,7 @@ def catastrophe(eps, span, initial: Mapping, **options) -> Quantity:
 def function(fn: Callable, outputs: Sequence[str] | None = None) -> Quantity:
     """The user's own ``fn(values) -> number, sequence or mapping`` of a point's values by name."""
     if not callable(fn):
-        raise AtlasError(f"{fn!r} is not callable; give a function of a mapping of values.")
+        raise AtlasError(f"{shorten(fn)} is not callable; give a function of a mapping of values.")
     names = outputs if outputs is not None else (getattr(fn, "__name__", "value"),)
     check_options("function", {"fn": fn, "outputs": names})
     names = tuple(names)
@@ -267,10 +268,10 @@ def as_quantity(quantity) -> Quantity:
     if isinstance(quantity, str):
         name = quantity.replace("-", "_")
         if name not in QUANTITIES:
-            raise AtlasError(f"unknown quantity {quantity!r}; the built-in ones are {', '.join(QUANTITIES)}.")
+            raise AtlasError(f"unknown quantity {shorten(quantity)}; the built-in ones are {', '.join(QUANTITIES)}.")
         if name == "catastrophe":
             raise AtlasError("the catastrophe quantity needs eps, span and initial: catastrophe(eps, span, initial).")
         return QUANTITIES[name]()
     if callable(quantity):
         return function(quantity)
-    raise AtlasError(f"quantity {quantity!r} is neither a Quantity, a built-in name nor a function.")
+    raise AtlasError(f"quantity {shorten(quantity)} is neither a Quantity, a built-in name nor a function.")

@@ -110,8 +110,8 @@ def _run_local(kernel, grid, chunk, todo, results, scheduler, workers, progress)
 def connect(client, timeout: float = 10.0):
     """(a ``distributed.Client``, whether we opened it) from a Client, a cluster or an address."""
     distributed = _require("distributed")
-    ok = isinstance(timeout, (int, float)) and not isinstance(timeout, bool) and np.isfinite(timeout) and timeout > 0
-    if not ok:
+    ok = isinstance(timeout, (int, float)) and not isinstance(timeout, bool)
+    if not ok or not np.isfinite(timeout) or timeout <= 0:
         raise AtlasError(f"timeout = {shorten(timeout)} must be a finite number of seconds > 0.")
     if isinstance(client, distributed.Client):
         return client, False

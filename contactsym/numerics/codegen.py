@@ -38,6 +38,11 @@ def lambdify_cse(args: Sequence, exprs) -> Callable:
     >>> [round(float(v), 6) for v in f(2.0, 3.0)]
     [13.0, 10.911569]
     """
+    exprs_ok = isinstance(exprs, (sp.Basic, sp.MatrixBase)) or (
+        isinstance(exprs, (list, tuple)) and all(isinstance(e, (sp.Basic, sp.MatrixBase, int, float)) for e in exprs)
+    )
+    if isinstance(args, (str, bytes)) or not all(isinstance(a, sp.Basic) for a in args) or not exprs_ok:
+        raise NumericsError("lambdify_cse takes SymPy symbols and SymPy expressions (text is never evaluated).")
     return sp.lambdify(list(args), exprs, modules="numpy", cse=True)
 
 

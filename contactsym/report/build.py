@@ -52,6 +52,10 @@ def compile_pdf(tex: Path, timeout: float = 120) -> Path | None:
 
     Raises ReportError (with the first LaTeX error line) when pdflatex fails.
     """
+    tex = Path(path_text(tex, "tex", ReportError))
+    ok = isinstance(timeout, (int, float)) and not isinstance(timeout, bool) and 0 < timeout < float("inf")
+    if not ok:
+        raise ReportError(f"timeout = {shorten(timeout)} must be a finite number of seconds > 0.")
     pdflatex = shutil.which("pdflatex")
     if pdflatex is None:
         return None

@@ -132,6 +132,8 @@ def summary_text(data: dict) -> str:
     >>> print(summary_text(conditions(cs.scene("brake"))).splitlines()[1])
       stable for every law: mu <= Abs(cot(alpha))   (4.4), (6.3)
     """
+    if not isinstance(data, dict) or not {"scene", "regions"} <= set(data):
+        raise ContactsymError("summary_text takes the dict that contactsym.conditions(scene) returns.")
     lines = [f"{data['scene']}: {data['description']}"]
     for name, entry in data["regions"].items():
         cite = ", ".join(entry.get("paper", []))

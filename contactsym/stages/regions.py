@@ -71,6 +71,8 @@ def closed_form(condition, scene=None, solve_for: sp.Symbol | None = None, signs
     if solve_for is not None and not isinstance(solve_for, sp.Symbol):
         raise SceneError(f"solve_for = {shorten(solve_for)} must be a sympy Symbol (a parameter) or None.")
     signs = None if signs is None else sign_pattern(signs)
+    if not isinstance(sympy_only(condition, "the condition"), (sp.logic.boolalg.Boolean, sp.Expr)):
+        raise SceneError(f"condition = {shorten(condition)} must be a SymPy condition such as mu < 1.")
     positive = tuple(getattr(scene, "positive_expressions", ()))
     condition = scene.present(condition, signs) if scene is not None else sympy_only(condition, "the condition")
     return inequalities.closed_form(condition, positive, solve_for, raw_ops=RAW_OPS, factor_terms=FACTOR_TERMS)
@@ -128,7 +130,8 @@ class Region:
     symbols: tuple = field(default=())
 
     def __post_init__(self):
-        if not isinstance(self.name, str) or not isinstance(self.description, str) or isinstance(self.symbols, str):
+        symbols_ok = isinstance(self.symbols, tuple) and all(isinstance(s, sp.Symbol) for s in self.symbols)
+        if not isinstance(self.name, str) or not isinstance(self.description, str) or not symbols_ok:
             raise SceneError("a Region's name and description are text, and its symbols a tuple of symbols.")
         object.__setattr__(self, "condition", sympy_only(self.condition, "a region's condition"))
         if not self.symbols:

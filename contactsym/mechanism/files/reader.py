@@ -337,8 +337,8 @@ def read_scene(text: str, source: str = "<scene file>", default_name: str = "use
     contactsym.mechanism.files.toml_source.SceneFileError: a.toml:6: unknown key 'laww' in [contacts.0]; did you mean 'law'? allowed: gap, reaction, unilateral, law, friction.
     """
     for what, value in (("text", text), ("source", source), ("default_name", default_name)):
-        if not isinstance(value, str):
-            raise SceneFileError(f"read_scene: {what} = {shorten(value)} must be text, not {type(value).__name__}.")
+        if not isinstance(value, str) or (what != "text" and len(value) > 200):
+            raise SceneFileError(f"read_scene: {what} = {shorten(value)} must be text (a name up to 200 characters).")
     try:
         return _Reader(TomlSource(text, source), default_name).build()
     except RecursionError:
