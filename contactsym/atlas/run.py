@@ -76,8 +76,8 @@ def _check_arguments(chunks, store, scheduler, workers, progress, timeout, value
         raise AtlasError(f"workers = {shorten(workers)} must be a whole number >= 1 (or None: one per core).")
     flag(progress, "progress", AtlasError)
     ok = isinstance(timeout, (int, float, np.integer, np.floating)) and not isinstance(timeout, bool)
-    if not ok or not np.isfinite(timeout) or timeout <= 0:
-        raise AtlasError(f"timeout = {shorten(timeout)} must be a finite number of seconds > 0.")
+    if not ok or not 0 < float(timeout) < 10**6:
+        raise AtlasError(f"timeout = {shorten(timeout)} must be a number of seconds between 0 and 10^6.")
     if values is not None and not isinstance(values, Mapping):
         raise AtlasError(f"values = {shorten(values)} must be a mapping {{parameter name: number}}.")
 
@@ -111,8 +111,8 @@ def connect(client, timeout: float = 10.0):
     """(a ``distributed.Client``, whether we opened it) from a Client, a cluster or an address."""
     distributed = _require("distributed")
     ok = isinstance(timeout, (int, float)) and not isinstance(timeout, bool)
-    if not ok or not np.isfinite(timeout) or timeout <= 0:
-        raise AtlasError(f"timeout = {shorten(timeout)} must be a finite number of seconds > 0.")
+    if not ok or not 0 < float(timeout) < 10**6:
+        raise AtlasError(f"timeout = {shorten(timeout)} must be a number of seconds between 0 and 10^6.")
     if isinstance(client, distributed.Client):
         return client, False
     if isinstance(client, str) or hasattr(client, "scheduler_address"):  # an address, or a cluster object

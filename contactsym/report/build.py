@@ -53,9 +53,15 @@ def compile_pdf(tex: Path, timeout: float = 120) -> Path | None:
     Raises ReportError (with the first LaTeX error line) when pdflatex fails.
     """
     tex = Path(path_text(tex, "tex", ReportError))
-    ok = isinstance(timeout, (int, float)) and not isinstance(timeout, bool) and 0 < timeout < float("inf")
+    ok = isinstance(timeout, (int, float)) and not isinstance(timeout, bool) and 0 < float(timeout) <= 86400
     if not ok:
-        raise ReportError(f"timeout = {shorten(timeout)} must be a finite number of seconds > 0.")
+        raise ReportError(f"timeout = {shorten(timeout)} must be a number of seconds from 0 to 86400.")
+    try:
+        found = tex.is_file()
+    except OSError:  # e.g. a name too long for the file system
+        found = False
+    if not found:
+        raise ReportError(f"{shorten(str(tex))} is not a LaTeX file; give the path of an existing .tex file.")
     pdflatex = shutil.which("pdflatex")
     if pdflatex is None:
         return None
