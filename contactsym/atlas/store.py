@@ -43,7 +43,7 @@ def _hash(text: str | bytes) -> str:
 
 def scene_token(scene) -> str:
     """The scene's content: accelerations, contacts with their laws, options, and the derived fast subsystem."""
-    from .. import __version__
+    from .. import __version__  # the package itself: importing it at the top would be circular
 
     contacts = [(c.coordinate, c.reaction, _law(c.compliance), _law(c.friction), c.unilateral) for c in scene.contacts]
     parts = (__version__, scene.accelerations, contacts, getattr(scene, "eps", None), scene.fast_subsystem().equations)
