@@ -1,6 +1,19 @@
-"""Fuzz the public API and the command line with bad inputs: ``python -m benchmarks.fuzz [--n 10000]``.
+"""Fuzz the public API and the command line with bad inputs: ``python -m benchmarks.fuzz [--n 20000]``.
 
-Each case takes a valid call of an entry point and, most of the time, replaces one
+The probe is generated (:mod:`benchmarks.boundary`): every public callable of
+``contactsym.__all__`` and of each subpackage's ``__all__``, the public methods of the
+public classes and the command line's subcommands and options, each parameter fed wrong
+types, shapes and values. Each call runs in a worker process under a time limit (a
+worker that overruns it is killed and replaced) and is sorted into one outcome:
+
+- ``clear error``: a ContactsymError with a one-line message of bounded length;
+- ``accepted``: no argument of a type its hint rules out, and a result;
+- ``raw traceback``: any other exception;
+- ``silent acceptance``: an argument of a type its hint rules out, and a result;
+- ``evaluated text``: a string argument was executed as Python (a sentinel notices);
+- ``hang``: the time limit passed.
+
+The hand-written cases below (``CASES``) add valid calls with known answers. Each case takes a valid call of an entry point and, most of the time, replaces one
 argument by a bad value (nan, infinities, complex numbers, wrong types and shapes,
 text, huge text, out-of-range numbers). Every call runs under a time limit and is
 sorted into one outcome:
@@ -14,7 +27,7 @@ sorted into one outcome:
 - ``hang``: the time limit passed.
 
 ``--out FILE`` writes the table as Markdown (the repository keeps it in
-``docs/robustness.md``). The tests in ``tests/test_fuzz.py`` run the same cases, fewer.
+``docs/robustness.md``). The tests in ``tests/test_fuzz.py`` run a seeded sample of both.
 """
 
 from __future__ import annotations
@@ -22,10 +35,10 @@ from __future__ import annotations
 import argparse
 import contextlib
 import io
-import math
 import os
 import random
 import signal
+import tempfile
 import time
 from collections import Counter
 from collections.abc import Callable
@@ -37,6 +50,7 @@ import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
 import contactsym as cs
+from benchmarks import boundary
 from contactsym import numerics as nm
 from contactsym.cli import main as cli_main
 
@@ -242,6 +256,14 @@ def cli_case(rng: random.Random) -> Case:
     ]
     is_bad = rng.random() >= 0.2
     argv = _one_of(rng, bad if is_bad else valid)
+    command = argv[0] if argv[0] in ("show", "list", "conditions", "report", "bench") else "(no command)"
+    case = cli_case_of(argv, is_bad)
+    case.target = f"cli {command}"
+    return case
+
+
+def cli_case_of(argv: list[str], is_bad: bool) -> Case:
+    """The command line on ``argv``: an exit code 1 or 2 with one short line is a clear error."""
 
     def call():
         err = io.StringIO()
@@ -256,8 +278,7 @@ def cli_case(rng: random.Random) -> Case:
             raise cs.ContactsymError(lines[0])
         return code
 
-    command = argv[0] if argv[0] in ("show", "list", "conditions", "report", "bench") else "(no command)"
-    return Case(f"cli {command}", call, is_bad)
+    return Case("cli", call, is_bad)
 
 
 def lagrangian_case(rng: random.Random) -> Case:
@@ -355,9 +376,9 @@ def run(n: int, seed: int = 0, seconds: float = 30.0) -> tuple[Counter, Counter,
 def table(totals: Counter, by_target: Counter, seconds: float, n: int, seed: int) -> str:
     targets = sorted({t for t, _ in by_target})
     lines = [
-        "# Robustness: fuzzing the public API and the command line",
+        "## Hand-written cases",
         "",
-        f"`python -m benchmarks.fuzz --n {n} --seed {seed}`: {n} generated inputs, {totals['bad inputs']} of them "
+        f"`python -m benchmarks.fuzz --cases {n} --seed {seed}`: {n} generated inputs, {totals['bad inputs']} of them "
         f"bad (one argument of a valid call replaced by a bad value), in {seconds:.0f} s on one core. "
         "Outcomes are defined in `benchmarks/fuzz.py`; a clear error is a ContactsymError with a one-line message.",
         "",
@@ -378,23 +399,206 @@ def table(totals: Counter, by_target: Counter, seconds: float, n: int, seed: int
     return "\n".join(lines) + "\n"
 
 
+# --- the generated probe, in worker processes ----------------------------------------------------------
+
+
+def _probe_call(index: int, seed: int, seconds: float) -> tuple[str, str, str]:
+    """(target, outcome, detail) of probe call ``index`` (runs in a worker)."""
+    rng = random.Random(seed)
+    if index < len(_PROBE["targets"]):
+        call = boundary.make_call(_PROBE["targets"][index], rng, _PROBE["wrong"])
+        case = Case(call.target, lambda: call.function(*call.args, **call.kwargs), bool(call.wrong))
+        kind, detail = outcome(case, seconds)
+        if kind in ("clear error", "raw traceback", "silent acceptance"):
+            detail = f"{detail} [wrong: {', '.join(call.mutated)}]"
+        return call.target, kind, detail
+    command, argv = boundary.cli_argv(rng, _PROBE["cli"], _PROBE["labels"][index][len("cli ") :])
+    case = cli_case_of(argv, is_bad=True)
+    case.target = f"cli {command}"
+    kind, detail = outcome(case, seconds)
+    if kind == "silent acceptance":  # the junk may have been a usable path or name: no claim about it
+        kind = "accepted"
+    return case.target, kind, f"{detail} {argv!r}"[:300]
+
+
+_PROBE: dict = {}
+
+
+def _worker(connection, seconds: float) -> None:
+    import resource
+
+    os.chdir(tempfile.mkdtemp(prefix="contactsym-fuzz-"))  # files the calls write land here
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, 1), os.dup2(devnull, 2)
+    with contextlib.suppress(ValueError, OSError):
+        resource.setrlimit(resource.RLIMIT_AS, (6 << 30, 6 << 30))  # a memory bomb is a MemoryError, not a crash
+    while True:
+        job = connection.recv()
+        if job is None:
+            return
+        try:
+            connection.send(_probe_call(*job, seconds))
+        except BaseException as error:  # noqa: BLE001 - the harness itself must answer
+            connection.send(("harness", "raw traceback", f"{type(error).__name__}: {str(error)[:200]}"))
+
+
+class _Workers:
+    """One forked worker; killed and replaced when a call overruns the hard limit."""
+
+    def __init__(self, seconds: float):
+        import multiprocessing
+
+        self.context, self.seconds = multiprocessing.get_context("fork"), seconds
+        self._start()
+
+    def _start(self):
+        self.parent, child = self.context.Pipe()
+        self.process = self.context.Process(target=_worker, args=(child, self.seconds), daemon=True)
+        self.process.start()
+
+    def run(self, index: int, seed: int, label: str) -> tuple[str, str, str]:
+        self.parent.send((index, seed))
+        if self.parent.poll(self.seconds + 15):
+            try:
+                return self.parent.recv()
+            except EOFError:
+                answer = (label, "raw traceback", "the worker died (a crash in compiled code)")
+        else:
+            answer = (label, "hang", f"more than {self.seconds + 15:g} s (the worker was killed)")
+        self.process.kill()
+        self.process.join()
+        self._start()
+        return answer
+
+    def close(self):
+        with contextlib.suppress(OSError, BrokenPipeError):
+            self.parent.send(None)
+        self.process.join(timeout=5)
+        if self.process.is_alive():
+            self.process.kill()
+
+
+def probe_targets() -> list[str]:
+    """Build the probe (in this process, before any worker forks); returns the labels, CLI commands last."""
+    if not _PROBE:
+        _PROBE["targets"] = boundary.targets()
+        _PROBE["wrong"] = boundary.wrong_values()
+        _PROBE["cli"] = boundary.cli_options()
+        _PROBE["labels"] = [t.label for t in _PROBE["targets"]] + [f"cli {c}" for c in sorted(_PROBE["cli"])]
+    return [t.label for t in _PROBE["targets"]] + [f"cli {c}" for c in sorted(_PROBE["cli"])]
+
+
+def probe(
+    n: int,
+    seed: int = 0,
+    seconds: float = 30.0,
+    progress: bool = False,
+    only: tuple[str, ...] = (),
+    workers: int = 1,
+) -> tuple[Counter, Counter, list]:
+    """``n`` generated calls, round-robin over every target (or those whose label starts with one of
+    ``only``), in ``workers`` worker processes: totals, totals by target, and the failures."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    everything = probe_targets()
+    chosen = [i for i, label in enumerate(everything) if not only or label.startswith(only)]
+    rng = random.Random(seed)
+    jobs = [(chosen[i % len(chosen)], rng.randrange(2**32)) for i in range(n)]  # the calls do not depend on timing
+    pool = [_Workers(seconds) for _ in range(workers)]
+    totals, by_target, failures = Counter(), Counter(), []
+
+    def share(number: int) -> list:
+        return [pool[number].run(index, job_seed, everything[index]) for index, job_seed in jobs[number::workers]]
+
+    try:
+        with ThreadPoolExecutor(workers) as threads:
+            answers = list(threads.map(share, range(workers)))
+    finally:
+        for worker in pool:
+            worker.close()
+    for number, answered in enumerate(answers):
+        for (index, _), (_, kind, detail) in zip(jobs[number::workers], answered):
+            label = everything[index]
+            totals[kind] += 1
+            by_target[label, kind] += 1
+            if kind not in ("clear error", "accepted"):
+                failures.append((label, kind, detail))
+    if progress:
+        print(f"[fuzz] {n} calls: {dict(totals)}", flush=True)
+    return totals, by_target, failures
+
+
+PROBE_OUTCOMES = ("clear error", "accepted", "raw traceback", "silent acceptance", "evaluated text", "hang")
+
+
+def _group(label: str) -> str:
+    """The table's row for a target: its package (a method counts with its class's package)."""
+    if label.startswith("cli "):
+        return "command line"
+    head = label.rsplit(".", 1)[0]
+    return head if head.startswith("contactsym") else f"methods of {head}"
+
+
+def probe_table(
+    totals: Counter, by_target: Counter, seconds: float, n: int, seed: int, where: str, workers: int = 1
+) -> str:
+    labels = sorted({t for t, _ in by_target})
+    groups: dict = {}
+    for label in labels:
+        groups.setdefault(_group(label), []).append(label)
+    lines = [
+        "## The generated probe",
+        "",
+        f"`python -m benchmarks.fuzz --n {n} --seed {seed}`: {n} calls over {len(labels)} public callables "
+        f"(every name in `contactsym.__all__` and the subpackages' `__all__`, the public methods of the public "
+        f"classes, the command line's subcommands and options), in {seconds:.0f} s with {workers} worker process(es); "
+        f"{where}.",
+        "",
+        "| outcome | count |",
+        "|---|---|",
+    ]
+    lines += [f"| {kind} | {totals[kind]} |" for kind in PROBE_OUTCOMES]
+    lines += ["", "| callables of | callables | " + " | ".join(PROBE_OUTCOMES) + " |"]
+    lines.append("|---" * (len(PROBE_OUTCOMES) + 2) + "|")
+    for group in sorted(groups):
+        counts = [sum(by_target[t, k] for t in groups[group]) for k in PROBE_OUTCOMES]
+        lines.append(f"| `{group}` | {len(groups[group])} | " + " | ".join(map(str, counts)) + " |")
+    bad = [t for t in labels if any(by_target[t, k] for k in PROBE_OUTCOMES[2:])]
+    lines += ["", f"Callables with a raw traceback, a silent acceptance or a hang ({len(bad)} of {len(labels)}):", ""]
+    lines += [", ".join(f"`{t}`" for t in bad) or "none."]
+    return "\n".join(lines) + "\n"
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m benchmarks.fuzz", description=__doc__.splitlines()[0])
-    parser.add_argument("--n", type=int, default=13_000, help="number of generated inputs (about 80%% bad)")
+    parser.add_argument("--n", type=int, default=20_000, help="number of generated calls of the probe")
+    parser.add_argument("--cases", type=int, default=0, help="hand-written cases to run as well")
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--seconds", type=float, default=30.0, help="time limit per call")
+    parser.add_argument("--only", default="", help="comma-separated label prefixes: probe only these targets")
+    parser.add_argument("--workers", type=int, default=1, help="worker processes")
+    parser.add_argument("--where", default="on this machine", help="where and when, for the table")
     parser.add_argument("--out", help="write the Markdown table to this file")
+    parser.add_argument("--failures", help="write every failing call to this file")
     args = parser.parse_args(argv)
     started = time.perf_counter()
-    totals, by_target, failures = run(args.n, args.seed, args.seconds)
-    text = table(totals, by_target, time.perf_counter() - started, args.n, args.seed)
+    only = tuple(p for p in args.only.split(",") if p)
+    totals, by_target, failures = probe(args.n, args.seed, args.seconds, True, only, args.workers)
+    elapsed = time.perf_counter() - started
+    text = probe_table(totals, by_target, elapsed, args.n, args.seed, args.where, args.workers)
+    bad = sum(totals[k] for k in PROBE_OUTCOMES[2:])
+    if args.cases:
+        started = time.perf_counter()
+        totals, by_target, more = run(args.cases, args.seed, args.seconds)
+        text += "\n" + table(totals, by_target, time.perf_counter() - started, args.cases, args.seed)
+        failures += more
+        bad += sum(totals[k] for k in OUTCOMES if k not in ("clear error", "accepted"))
     print(text)
-    for target, kind, detail in failures[:40]:
-        print(f"{kind}: {target}: {detail}")
+    if args.failures:
+        Path(args.failures).write_text("\n".join(f"{k} | {t} | {d}" for t, k, d in failures) + "\n")
     if args.out:
         Path(args.out).write_text(text)
-    bad = sum(totals[k] for k in OUTCOMES if k not in ("clear error", "accepted"))
-    return 0 if bad == 0 and not math.isnan(bad) else 1
+    return 0 if bad == 0 else 1
 
 
 if __name__ == "__main__":  # pragma: no cover

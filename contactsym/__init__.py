@@ -15,7 +15,7 @@ mu**2*sin(alpha)**2/m**2 + sin(alpha)**2/m**2
 import importlib
 import sys
 
-from . import _aliases
+from . import _aliases, _entry  # noqa: F401 - _entry first: a Ctrl-C while the command line imports
 from .errors import (
     AtlasError,
     ComplianceError,

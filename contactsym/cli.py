@@ -29,13 +29,12 @@ import argparse
 import json
 import os
 import sys
-import tempfile
 import time
 from pathlib import Path
 
 import sympy as sp
 
-from .atomic import replaced_directory, signals_as_exceptions
+from .atomic import last_signal, replaced_directory, scratch_directory, signals_as_exceptions
 from .errors import ContactsymError, SceneError, SignPatternError
 from .mechanism.files.reader import scene_or_file
 from .mechanism.scene import Scene
@@ -263,8 +262,8 @@ def _report(
     except OSError as error:
         raise ReportError(f"cannot write to --out {cut(str(root))}: {cut(str(error.strerror or error))}.") from error
     summaries, started = [], time.perf_counter()
-    with tempfile.TemporaryDirectory(prefix="contactsym-figures-") as scratch:
-        figures = FigureSource(Path(scratch), resolution=resolution, dpi=dpi)
+    with scratch_directory() as scratch:
+        figures = FigureSource(scratch, resolution=resolution, dpi=dpi)
         for index, s in enumerate(scenes, 1):
             clock = time.perf_counter()
 
@@ -338,15 +337,29 @@ def _silence_stdout() -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the command line; returns the exit code (0 on success)."""
+    """Run the command line; returns the exit code (0 on success, 128 + the signal when stopped by one)."""
+    try:
+        with signals_as_exceptions():
+            return _main(argv)
+    except KeyboardInterrupt as stop:  # a second signal while the first was being handled
+        return getattr(stop, "exit_code", 130)
+
+
+def _main(argv: list[str] | None) -> int:
     try:
         args = _parser().parse_args(argv)
     except SystemExit as stop:  # --help, or a usage error already printed in one line
         return int(stop.code or 0)
+    except KeyboardInterrupt as stop:
+        print("contactsym: interrupted", file=sys.stderr)
+        return getattr(stop, "exit_code", 130)
     try:
-        with sp.evaluate(True), signals_as_exceptions():
+        with sp.evaluate(True):
             code = _run(args)
         sys.stdout.flush()
+        if last_signal() is not None:  # it landed where Python swallows exceptions (a finalizer): still a stop
+            print("contactsym: interrupted", file=sys.stderr)
+            return 128 + last_signal()
         return code
     except BrokenPipeError:  # the reader went away (contactsym ... | head): stop quietly
         _silence_stdout()
@@ -361,7 +374,7 @@ def main(argv: list[str] | None = None) -> int:
         text = f"{error.strerror or error}: {error.filename or ''}".rstrip(": ")
         print(f"contactsym: error: {cut(text, 300)}", file=sys.stderr)
         return FAILURE
-    except KeyboardInterrupt as stop:  # SIGINT, or SIGTERM/SIGHUP as Interrupted: temporary files are gone
+    except KeyboardInterrupt as stop:  # SIGINT, SIGTERM or SIGHUP as Interrupted: temporary files are gone
         print("contactsym: interrupted", file=sys.stderr)
         return getattr(stop, "exit_code", 130)
 

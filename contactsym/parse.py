@@ -400,6 +400,11 @@ def parse_expression(
     ...
     contactsym.errors.ParseError: my.toml:7:15: unknown name 'gg'; did you mean 'g'? declared names: g, m.
     """
+    where_ok = isinstance(source, str) and len(source) <= 200 and all(type(n) is int and n >= 0 for n in (line, column))
+    if not where_ok or not (names is None or isinstance(names, Mapping)):
+        raise ParseError(
+            "parse_expression: names is a mapping {name: symbol}, source a short name, line and column >= 0."
+        )
     names = dict(names or {})
     if not isinstance(text, str):
         raise ParseError(f"{_where(source, line, column)}: a formula must be text, not {type(text).__name__}.")

@@ -20,6 +20,7 @@ from functools import lru_cache
 import sympy as sp
 from sympy.polys.rings import ring
 
+from ..errors import SignPatternError
 from ..parse import sympy_only
 from .fourier import _fourier_terms
 
@@ -58,6 +59,8 @@ class SignSymbol(sp.Symbol):
     """
 
     def __new__(cls, name, **assumptions):
+        if not isinstance(name, str) or not name.strip():
+            raise SignPatternError(f"a SignSymbol's name must be text such as 's', not {type(name).__name__}.")
         return super().__new__(cls, name, integer=True, nonzero=True)
 
 
@@ -85,7 +88,7 @@ def reduce_signs(expr: sp.Expr) -> sp.Expr:
     >>> reduce_signs(s**2 + 3*s**3 - s**4)
     3*s
     """
-    return sp.sympify(expr).replace(
+    return sympy_only(expr, "the expression").replace(  # never sympify text: it would be evaluated
         lambda e: e.is_Pow and isinstance(e.base, SignSymbol) and e.exp.is_Integer,
         lambda e: e.base ** (e.exp % 2),
     )
@@ -108,7 +111,7 @@ def reduce_trig(expr: sp.Expr) -> sp.Expr:
         n = int(e.exp)
         return e.base ** (n % 2) * (1 - sp.sin(e.base.args[0]) ** 2) ** (n // 2)
 
-    return sp.expand(sp.sympify(expr).replace(is_cos_power, rewrite))
+    return sp.expand(sympy_only(expr, "the expression").replace(is_cos_power, rewrite))
 
 
 def known_sign(expr: sp.Expr, positive=()) -> int | None:

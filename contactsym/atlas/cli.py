@@ -9,6 +9,7 @@ renamed.
 
 from __future__ import annotations
 
+import math
 import os
 import sys
 import tempfile
@@ -16,7 +17,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import UsageError
+from ..atomic import process_tag, remove_leftovers, umask_bits
+from ..errors import AtlasError, UsageError
+from .grid import check_size
 from .run import sweep
 
 __all__ = ["add_atlas_command", "parse_axis", "run_atlas"]
@@ -34,6 +37,32 @@ def _number(text: str, what: str) -> float:
     return value
 
 
+def _axis_spec(text: str) -> tuple[str, float, float, int] | tuple[str, list]:
+    """``(name, start, stop, count)`` or ``(name, values)``: nothing allocated yet."""
+    name, _, spec = text.partition("=")
+    name = name.strip()
+    if not name or not spec:
+        raise UsageError(f"--grid {text}: write NAME=START:STOP:COUNT or NAME=V1,V2,...")
+    what = f"--grid {text}"
+    if ":" in spec:
+        parts = spec.split(":")
+        if len(parts) != 3:
+            raise UsageError(f"{what}: write NAME=START:STOP:COUNT or NAME=V1,V2,...")
+        count = _number(parts[2], what)
+        if count != int(count) or count < 1:
+            raise UsageError(f"{what}: COUNT = {parts[2]} must be a positive integer.")
+        return name, _number(parts[0], what), _number(parts[1], what), int(count)
+    return name, [_number(v, what) for v in spec.split(",")]
+
+
+def _count(spec: tuple) -> int:
+    return spec[3] if len(spec) == 4 else len(spec[1])
+
+
+def _values(spec: tuple) -> np.ndarray:
+    return np.linspace(spec[1], spec[2], spec[3]) if len(spec) == 4 else np.array(spec[1])
+
+
 def parse_axis(text: str) -> tuple[str, np.ndarray]:
     """``NAME=START:STOP:COUNT`` (evenly spaced, ends included) or ``NAME=V1,V2,...``.
 
@@ -49,20 +78,9 @@ def parse_axis(text: str) -> tuple[str, np.ndarray]:
     ...
     contactsym.errors.UsageError: --grid mu=0:1: write NAME=START:STOP:COUNT or NAME=V1,V2,...
     """
-    name, _, spec = text.partition("=")
-    name = name.strip()
-    if not name or not spec:
-        raise UsageError(f"--grid {text}: write NAME=START:STOP:COUNT or NAME=V1,V2,...")
-    what = f"--grid {text}"
-    if ":" in spec:
-        parts = spec.split(":")
-        if len(parts) != 3:
-            raise UsageError(f"{what}: write NAME=START:STOP:COUNT or NAME=V1,V2,...")
-        count = _number(parts[2], what)
-        if count != int(count) or count < 1:
-            raise UsageError(f"{what}: COUNT = {parts[2]} must be a positive integer.")
-        return name, np.linspace(_number(parts[0], what), _number(parts[1], what), int(count))
-    return name, np.array([_number(v, what) for v in spec.split(",")])
+    spec = _axis_spec(text)
+    check_size(_count(spec))
+    return spec[0], _values(spec)
 
 
 def _parse_set(text: str) -> tuple[str, float]:
@@ -86,16 +104,23 @@ def add_atlas_command(sub) -> None:
     atlas.add_argument("--store", metavar="DIR", help="a Zarr checkpoint; a sweep run again resumes from it")
     atlas.add_argument("--out", metavar="FILE.nc", help="write the atlas as NetCDF (else print it)")
     atlas.add_argument("--progress", action="store_true", help="show Dask's progress bar")
+    atlas.add_argument("--force", action="store_true", help="replace an existing --out file")
 
 
 def _write(ds, out: Path) -> None:
-    """NetCDF (SciPy's writer, no further dependency), to a temporary file that is then renamed."""
+    """NetCDF (SciPy's writer, no further dependency), to a temporary file that is then renamed.
+
+    The temporary file carries this run's host and process id; a killed run's is removed by the next run.
+    """
     if out.suffix != ".nc":
         raise UsageError(f"--out {out}: the atlas is written as NetCDF; give a file name ending in .nc.")
-    handle, temporary = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent)
+    folder = out.parent if str(out.parent) else Path(".")
+    remove_leftovers(folder, f".{out.name}.new-")
+    handle, temporary = tempfile.mkstemp(prefix=f".{out.name}.new-{process_tag()}", suffix=".tmp", dir=folder)
     os.close(handle)
     try:
         ds.to_netcdf(temporary, engine="scipy")
+        os.chmod(temporary, 0o666 & ~umask_bits())  # mkstemp makes 0600; a new file follows the umask
         os.replace(temporary, out)
     except BaseException:
         Path(temporary).unlink(missing_ok=True)
@@ -105,12 +130,19 @@ def _write(ds, out: Path) -> None:
 def run_atlas(args) -> int:
     """Run ``contactsym atlas``; returns the exit code."""
     try:
-        grid = dict(parse_axis(text) for text in args.grid)
+        specs = [_axis_spec(text) for text in args.grid]
+        names = [spec[0] for spec in specs]
+        if len(set(names)) != len(names):
+            raise UsageError(f"--grid names a parameter twice: {names}; give each axis once.")
+        check_size(math.prod(_count(spec) for spec in specs))  # before any axis is allocated
+        grid = {spec[0]: _values(spec) for spec in specs}
         values = dict(_parse_set(text) for text in args.set)
         out = Path(args.out) if args.out else None
         if out is not None and out.suffix != ".nc":
             raise UsageError(f"--out {out}: the atlas is written as NetCDF; give a file name ending in .nc.")
-    except UsageError as error:
+        if out is not None and os.path.lexists(out) and not args.force:
+            raise UsageError(f"--out {out} exists; choose another file, or replace it with --force.")
+    except AtlasError as error:  # a usage error, or a grid too large for this machine
         print(f"contactsym: error: {error}", file=sys.stderr)
         return 2
     ds = sweep(

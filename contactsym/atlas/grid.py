@@ -8,15 +8,21 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
+import sympy as sp
 
 from ..errors import AtlasError
 
-__all__ = ["AtlasError", "Grid", "as_grid"]
+__all__ = ["AtlasError", "Grid", "MAX_POINTS", "REASON_LIMIT", "as_grid", "check_size", "result_bytes"]
 
 #: The largest grid :func:`as_grid` accepts unless told otherwise.
 MAX_POINTS = 10**9
-#: Bytes an atlas keeps per point and output (a float64 value, and room for the reason).
-_BYTES_PER_POINT = 64
+#: The longest reason kept for a point without a value (characters).
+REASON_LIMIT = 300
+#: Bytes per point and output: the float64 value in the results and again in the Dataset.
+_BYTES_PER_VALUE = 16
+#: Bytes per point for its reason: a pointer in the results and the Dataset, and, at worst, a string of its own
+#: (a Python str of REASON_LIMIT ASCII characters takes 49 + REASON_LIMIT bytes).
+_BYTES_PER_REASON = 2 * 8 + 49 + REASON_LIMIT
 
 
 @dataclass(frozen=True, eq=False)
@@ -34,6 +40,12 @@ class Grid:
 
     names: tuple
     axes: tuple
+
+    def __post_init__(self):
+        named = isinstance(self.names, tuple) and all(isinstance(n, str) for n in self.names)
+        arrays = isinstance(self.axes, tuple) and all(isinstance(a, np.ndarray) and a.ndim == 1 for a in self.axes)
+        if not (named and arrays and len(self.names) == len(self.axes)):
+            raise AtlasError("a Grid holds a tuple of names and a tuple of 1-D arrays, one per name; use as_grid().")
 
     @property
     def shape(self) -> tuple:
@@ -102,27 +114,45 @@ def as_grid(grid, *, max_points: int | None = None, outputs: int = 1) -> Grid:
     ...
     contactsym.errors.AtlasError: the grid has 1000000 points, more than max_points = 100000; sweep a coarser grid or raise max_points.
     """
+    if isinstance(outputs, bool) or not isinstance(outputs, (int, np.integer)) or outputs < 1:
+        raise AtlasError(f"outputs = {outputs!r:.60} must be a whole number >= 1.")
     if isinstance(grid, Grid):
         return grid
     if not isinstance(grid, Mapping):
         raise AtlasError(f"the grid must be a mapping {{parameter name: values}}, not {type(grid).__name__}.")
     if not grid:
         raise AtlasError('the grid is empty; give {parameter name: values}, e.g. {"mu": numpy.linspace(0, 2, 50)}.')
+    for name in grid:
+        if not isinstance(name, (str, sp.Symbol)) or not str(name).strip():
+            raise AtlasError(f"the grid name {name!r} is not a parameter name; use text such as 'mu' (or a Symbol).")
     names = tuple(str(name) for name in grid)
     if len(set(names)) != len(names):
         raise AtlasError(f"the grid names a parameter twice: {list(names)}.")
     axes = tuple(_axis(name, values) for name, values in zip(names, grid.values()))
     result = Grid(names, axes)
+    check_size(result.size, outputs, max_points)
+    return result
+
+
+def result_bytes(points: int, outputs: int = 1) -> int:
+    """Memory a sweep's results may take: the values, twice, and the reasons, counted as distinct strings."""
+    return points * (outputs * _BYTES_PER_VALUE + _BYTES_PER_REASON)
+
+
+def check_size(points: int, outputs: int = 1, max_points: int | None = None) -> None:
+    """Refuse ``points`` above ``max_points`` (default :data:`MAX_POINTS`) or results beyond half the memory."""
+    if max_points is not None and (
+        isinstance(max_points, bool) or not isinstance(max_points, (int, np.integer)) or max_points < 1
+    ):
+        raise AtlasError(f"max_points = {max_points!r} must be a whole number >= 1 (or None).")
     limit = MAX_POINTS if max_points is None else int(max_points)
-    if result.size > limit:
+    if points > limit:
         raise AtlasError(
-            f"the grid has {result.size} points, more than max_points = {limit}; sweep a coarser grid or raise max_points."
+            f"the grid has {points} points, more than max_points = {limit}; sweep a coarser grid or raise max_points."
         )
-    memory = _memory_bytes()
-    needed = result.size * (outputs + 1) * _BYTES_PER_POINT
+    memory, needed = _memory_bytes(), result_bytes(points, outputs)
     if memory is not None and needed > memory // 2:
         raise AtlasError(
-            f"the grid has {result.size} points; its results need about {needed / 2**30:.1f} GiB, more than half of "
-            f"this machine's {memory / 2**30:.1f} GiB; sweep a coarser grid or split it."
+            f"the grid has {points} points; its results and their reasons need up to {needed / 2**30:.1f} GiB, more "
+            f"than half of this machine's {memory / 2**30:.1f} GiB; sweep a coarser grid or split it."
         )
-    return result

@@ -13,8 +13,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..mechanism.scene import Scene
 from ..plotting import ContactPlot, axes_or_current, relational_fields
 from ..scenes import scene as scene_by_name
+from ..validate import checked_fields, flag, shorten
 from .grid import AtlasError
 
 __all__ = ["AtlasData", "atlas_data", "atlas_plot"]
@@ -55,6 +57,26 @@ class AtlasData:
     boundaries: dict = field(default_factory=dict)
     skipped: tuple = ()
 
+    def __post_init__(self):
+        checked_fields(self, AtlasError)
+        arrays = isinstance(self.xs, np.ndarray) and isinstance(self.values, np.ndarray)
+        if not arrays or not (self.ys is None or isinstance(self.ys, np.ndarray)) or not isinstance(self.fine, tuple):
+            raise AtlasError(
+                "AtlasData holds NumPy arrays xs, values (and ys, or None) and a tuple fine; use atlas_data()."
+            )
+
+
+def _check_atlas_arguments(ds, variable, x, y, scene, resolution) -> None:
+    if not (hasattr(ds, "data_vars") and hasattr(ds, "attrs")):
+        raise AtlasError(f"{shorten(ds)} is not an atlas; give the xarray.Dataset that sweep() returned.")
+    for what, name in (("variable", variable), ("x", x), ("y", y)):
+        if name is not None and not isinstance(name, str):
+            raise AtlasError(f"{what} = {shorten(name)} must be the name of a variable or an axis (text), or None.")
+    if scene is not None and not isinstance(scene, (str, Scene)):
+        raise AtlasError(f"scene = {shorten(scene)} must be a Scene, a built-in scene's name, or None.")
+    if isinstance(resolution, bool) or not isinstance(resolution, (int, np.integer)) or not 2 <= resolution <= 5000:
+        raise AtlasError(f"resolution = {shorten(resolution)} must be a whole number from 2 to 5000.")
+
 
 def _fixed_values(ds) -> dict:
     try:
@@ -81,6 +103,7 @@ def atlas_data(
     >>> data.x, data.y, sorted(data.boundaries), data.skipped
     ('alpha', 'mu', ['law-dependent', 'stable for every law'], ('Hopf line',))
     """
+    _check_atlas_arguments(ds, variable, x, y, scene, resolution)
     names = [v for v in ds.data_vars if v != "reason"]
     variable = variable or names[0]
     if variable not in ds.data_vars:
@@ -136,8 +159,11 @@ def atlas_plot(data, ax=None, *, variable: str | None = None, legend: bool = Tru
     ('alpha', 'mu')
     >>> plt.close(fig)
     """
+    flag(legend, "legend", AtlasError)
     if not isinstance(data, AtlasData):
         data = atlas_data(data, variable, **data_options)
+    if ax is not None and not hasattr(ax, "pcolormesh"):
+        raise AtlasError(f"ax = {shorten(ax)} must be a matplotlib Axes (or None).")
     ax = axes_or_current(ax)
     artists = []
     if data.y is None:

@@ -20,8 +20,10 @@ import numpy as np
 import sympy as sp
 
 from .. import numerics
+from ..validate import shorten
 from .grid import AtlasError, Grid
 from .kernel import Kernel, Setup, setup_for
+from .options import check_options
 from .pointwise import SQUEAL_METHODS, PointFailure, build_catastrophe, build_cycle, build_function, build_squeal
 
 __all__ = [
@@ -57,6 +59,10 @@ class Quantity:
     name: str
     builder: Callable = field(repr=False)
     options: dict = field(default_factory=dict)
+
+    def __post_init__(self):
+        if not isinstance(self.name, str) or not callable(self.builder) or not isinstance(self.options, dict):
+            raise AtlasError("a Quantity needs a name (text), a builder (a function) and options (a dict).")
 
     def build(self, scene, grid: Grid, values: Mapping | None) -> Kernel:
         return self.builder(scene, grid, values, **self.options)
@@ -230,6 +236,7 @@ def leading_eigenvalue(*, signs=None) -> Quantity:
     >>> bool((values[:, 0] < 0).all()), bool((values[:, 1] > 0).all())
     (True, True)
     """
+    check_options("leading_eigenvalue", {"signs": signs})
     return Quantity("leading_eigenvalue", _build_leading_eigenvalue, {"signs": signs})
 
 
@@ -248,6 +255,7 @@ def classification(*, signs=None) -> Quantity:
     >>> ds.region.values.tolist()
     [1.0, 0.0]
     """
+    check_options("classification", {"signs": signs})
     return Quantity("classification", _build_classification, {"signs": signs})
 
 
@@ -266,7 +274,9 @@ def stable_fraction(*, laws: int = 256, magnitudes=(0.1, 10.0), seed: int = 0, s
     >>> float(fraction[0]), bool(0 < fraction[1] < 1)
     (1.0, True)
     """
-    options = {"laws": laws, "magnitudes": tuple(magnitudes), "seed": seed, "signs": signs}
+    options = {"laws": laws, "magnitudes": magnitudes, "seed": seed, "signs": signs}
+    check_options("stable_fraction", options)
+    options["magnitudes"] = tuple(magnitudes)
     return Quantity("stable_fraction", _build_stable_fraction, options)
 
 
@@ -299,6 +309,7 @@ def cycle(**options) -> Quantity:
     >>> as_quantity("cycle").name
     'cycle'
     """
+    check_options("cycle", options)
     return Quantity("cycle", build_cycle, options)
 
 
@@ -339,6 +350,7 @@ def catastrophe(eps, span, initial: Mapping, **options) -> Quantity:
     ...     print(str(error).split(":")[0])
     the catastrophe quantity needs eps, span and initial
     """
+    check_options("catastrophe", {"eps": eps, "span": span, "initial": initial, **options})
     return Quantity("catastrophe", build_catastrophe, {"eps": eps, "span": tuple(span), "initial": initial, **options})
 
 
@@ -362,8 +374,10 @@ def function(fn: Callable, outputs: Sequence[str] | None = None) -> Quantity:
     42 is not callable; give a function of a mapping of values.
     """
     if not callable(fn):
-        raise AtlasError(f"{fn!r} is not callable; give a function of a mapping of values.")
-    names = tuple(outputs) if outputs is not None else (getattr(fn, "__name__", "value"),)
+        raise AtlasError(f"{shorten(fn)} is not callable; give a function of a mapping of values.")
+    names = outputs if outputs is not None else (getattr(fn, "__name__", "value"),)
+    check_options("function", {"fn": fn, "outputs": names})
+    names = tuple(names)
     return Quantity(f"function {getattr(fn, '__qualname__', 'value')}", build_function, {"fn": fn, "outputs": names})
 
 
@@ -400,10 +414,10 @@ def as_quantity(quantity) -> Quantity:
     if isinstance(quantity, str):
         name = quantity.replace("-", "_")
         if name not in QUANTITIES:
-            raise AtlasError(f"unknown quantity {quantity!r}; the built-in ones are {', '.join(QUANTITIES)}.")
+            raise AtlasError(f"unknown quantity {shorten(quantity)}; the built-in ones are {', '.join(QUANTITIES)}.")
         if name == "catastrophe":
             raise AtlasError("the catastrophe quantity needs eps, span and initial: catastrophe(eps, span, initial).")
         return QUANTITIES[name]()
     if callable(quantity):
         return function(quantity)
-    raise AtlasError(f"quantity {quantity!r} is neither a Quantity, a built-in name nor a function.")
+    raise AtlasError(f"quantity {shorten(quantity)} is neither a Quantity, a built-in name nor a function.")

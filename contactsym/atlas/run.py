@@ -14,12 +14,16 @@ import json
 import os
 import threading
 import uuid
+from collections.abc import Mapping
 
 import numpy as np
 
+from ..mechanism.scene import Scene
 from ..scenes import scene as scene_by_name
-from .grid import AtlasError, Grid, as_grid
+from ..validate import cut, flag, path_text, shorten
+from .grid import REASON_LIMIT, AtlasError, Grid, as_grid, check_size
 from .kernel import Kernel
+from .options import check_options
 from .quantities import as_quantity
 from .store import MemoryResults, ZarrResults, fingerprint
 
@@ -40,18 +44,42 @@ def _require(module: str):
 
 
 def _chunk(kernel: Kernel, grid: Grid, chunk: int, index: int) -> tuple:
-    """One task: the kernel on one chunk of the grid."""
+    """One task: the kernel on one chunk of the grid; a NaN always comes with its reason."""
     start = index * chunk
     values, reasons = kernel(grid.points(start, min(start + chunk, grid.size)))
-    return index, values, reasons
+    values = np.asarray(values, dtype=float).reshape(len(reasons), len(kernel.outputs))
+    explained = getattr(kernel, "nan_reasons", {})
+    reasons = list(reasons)
+    for i in np.nonzero(np.isnan(values).any(axis=1))[0]:
+        if not reasons[i]:
+            names = [name for name, v in zip(kernel.outputs, values[i]) if np.isnan(v)]
+            why = "; ".join(explained.get(name, f"{name}: the quantity has no value here") for name in names)
+            reasons[i] = f"NaN: {why}"
+    return index, values, [reason[:REASON_LIMIT] for reason in reasons]
 
 
 def _chunk_size(chunks, size: int, kernel: Kernel) -> int:
     if chunks is None:
         return min(size, VECTOR_CHUNK) if kernel.vectorised else max(1, min(POINT_CHUNK, size // 64))
-    if isinstance(chunks, bool) or not isinstance(chunks, (int, np.integer)) or chunks < 1:
-        raise AtlasError(f"chunks = {chunks!r}: give the number of points per task, a positive integer.")
     return int(chunks)
+
+
+def _check_arguments(chunks, store, scheduler, workers, progress, timeout, values) -> None:
+    """The keyword arguments of :func:`sweep`, before any work."""
+    if chunks is not None and (isinstance(chunks, bool) or not isinstance(chunks, (int, np.integer)) or chunks < 1):
+        raise AtlasError(f"chunks = {shorten(chunks)}: give the number of points per task, a positive integer.")
+    if store is not None:
+        path_text(store, "store", AtlasError)
+    if scheduler not in ("processes", "threads", "sync"):
+        raise AtlasError(f"scheduler = {shorten(scheduler)}; use 'processes', 'threads' or 'sync'.")
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1):
+        raise AtlasError(f"workers = {shorten(workers)} must be a whole number >= 1 (or None: one per core).")
+    flag(progress, "progress", AtlasError)
+    ok = isinstance(timeout, (int, float, np.integer, np.floating)) and not isinstance(timeout, bool)
+    if not ok or not 0 < float(timeout) < 10**6:
+        raise AtlasError(f"timeout = {shorten(timeout)} must be a number of seconds between 0 and 10^6.")
+    if values is not None and not isinstance(values, Mapping):
+        raise AtlasError(f"values = {shorten(values)} must be a mapping {{parameter name: number}}.")
 
 
 def _run_here(kernel, grid, chunk, todo, results, progress) -> None:
@@ -95,6 +123,9 @@ def connect(client, timeout: float = 10.0):
     client = 42
     """
     distributed = _require("distributed")
+    ok = isinstance(timeout, (int, float)) and not isinstance(timeout, bool)
+    if not ok or not 0 < float(timeout) < 10**6:
+        raise AtlasError(f"timeout = {shorten(timeout)} must be a number of seconds between 0 and 10^6.")
     if isinstance(client, distributed.Client):
         return client, False
     if isinstance(client, str) or hasattr(client, "scheduler_address"):  # an address, or a cluster object
@@ -103,8 +134,8 @@ def connect(client, timeout: float = 10.0):
             return distributed.Client(client, timeout=timeout), True
         except (OSError, TimeoutError, ValueError) as error:
             reason = str(error).strip().splitlines()[0] if str(error).strip() else type(error).__name__
-            raise AtlasError(f"cannot reach the Dask scheduler at {address}: {reason}") from None
-    raise AtlasError(f"client = {client!r}: give a distributed.Client, a cluster or a scheduler address.")
+            raise AtlasError(f"cannot reach the Dask scheduler at {cut(str(address))}: {cut(reason, 200)}") from None
+    raise AtlasError(f"client = {shorten(client)}: give a distributed.Client, a cluster or a scheduler address.")
 
 
 def _run_distributed(client, kernel, grid, chunk, todo, results, progress) -> None:
@@ -167,7 +198,10 @@ def sweep(
         Points per task (default 4096 for vectorised quantities, up to 16 for simulations).
     store : path, optional
         A Zarr checkpoint: chunks are written there as they finish; a sweep started again
-        with the same arguments computes only the chunks not stored yet.
+        with the same arguments computes only the chunks not stored yet. A checkpoint is
+        identified by content (the scene's equations and derived fast subsystem, the
+        quantity and its options, a function's code and closure, values, grid, chunks):
+        any other sweep is refused with the differing part named.
     progress : bool
         Show Dask's progress bar.
     max_points : int, optional
@@ -179,8 +213,9 @@ def sweep(
     -------
     xarray.Dataset
         One variable per output of the quantity, ``reason`` (why a point is NaN; empty
-        where it has a value), and attributes ``scene``, ``quantity``, ``fixed`` (the fixed
-        numbers, JSON), ``points_computed`` and ``points_resumed``.
+        where it has a value; a NaN always has one), and attributes ``scene``, ``quantity``,
+        ``fixed`` (the fixed numbers, JSON), ``points_computed``, ``points_resumed`` and
+        ``chunks_recomputed`` (stored chunks that were lost or damaged, JSON).
 
     Examples
     --------
@@ -197,16 +232,19 @@ def sweep(
     xr = _require("xarray")  # checked first: nothing starts without the container of the results
 
     chosen = as_quantity(quantity)
+    check_options(chosen.name, chosen.options)
+    _check_arguments(chunks, store, scheduler, workers, progress, timeout, values)
     grid = as_grid(grid, max_points=max_points)
-    if scheduler not in ("processes", "threads", "sync"):
-        raise AtlasError(f"scheduler = {scheduler!r}; use 'processes', 'threads' or 'sync'.")
+    if not isinstance(scene, (str, Scene)):
+        raise AtlasError(f"scene = {shorten(scene)} must be a Scene or a built-in scene's name.")
     scene = scene_by_name(scene) if isinstance(scene, str) else scene  # built after the cheap checks
     connection = connect(client, timeout) if client is not None else None  # an unreachable scheduler: before the work
     try:
         kernel = chosen.build(scene, grid, values)  # the symbolic work, once, here
+        check_size(grid.size, len(kernel.outputs))  # the outputs are known now
         chunk = _chunk_size(chunks, grid.size, kernel)
         if store is not None:
-            token = fingerprint(scene.name, chosen.key(), values, grid, chunk)
+            token = fingerprint(scene, chosen, values, grid, chunk)
             results = ZarrResults(store, grid.size, kernel.outputs, chunk, token)
         else:
             results = MemoryResults(grid.size, kernel.outputs, chunk)
@@ -227,13 +265,14 @@ def sweep(
 def _dataset(xr, scene, quantity, values, grid: Grid, outputs, results, resumed: int):
     data, reasons = results.read()
     variables = {name: (grid.names, data[:, j].reshape(grid.shape)) for j, name in enumerate(outputs)}
-    variables["reason"] = (grid.names, np.asarray(reasons, dtype=str).reshape(grid.shape))
+    variables["reason"] = (grid.names, np.asarray(reasons, dtype=object).reshape(grid.shape))  # not fixed-width
     attrs = {
         "scene": scene.name,
         "quantity": quantity.name,
         "fixed": json.dumps(_numbers(values)),
         "points_computed": grid.size - resumed,
         "points_resumed": resumed,
+        "chunks_recomputed": json.dumps(list(results.repaired)),  # stored chunks that failed their checksum
     }
     return xr.Dataset(variables, coords=dict(zip(grid.names, grid.axes)), attrs=attrs)
 

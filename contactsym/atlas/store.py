@@ -1,11 +1,16 @@
 """Where an atlas's results go as the chunks finish: memory, or a Zarr checkpoint that survives a restart.
 
 The checkpoint is a Zarr group holding the flattened grid: one float64 array per output,
-the reasons (text, empty where the point has a value) and one ``done`` flag per chunk. A
-chunk's values and reasons are written before its flag, so a sweep killed in the middle
-of a write recomputes that chunk and nothing else. The group's ``fingerprint`` (scene,
-quantity, fixed values, grid, chunk size) keeps a store from being resumed by a different
-sweep.
+the reasons (text, empty where the point has a value), one ``done`` flag and one checksum
+per chunk. A chunk's values, reasons and checksum are written before its flag, so a sweep
+killed in the middle of a write recomputes that chunk and nothing else; a chunk whose
+stored data no longer match its checksum (a lost or damaged file) is recomputed too, and
+named in the result (``chunks_recomputed``).
+
+A checkpoint is identified by what it computes, not by names: the scene's equations and
+its derived fast subsystem, the quantity and every option (a user function by its code,
+constants, closure and the globals it reads), the fixed values, the grid and the chunk
+size (:func:`fingerprint`). Another sweep is refused with the part that differs named.
 """
 
 from __future__ import annotations
@@ -16,20 +21,59 @@ from pathlib import Path
 import numpy as np
 
 from .grid import AtlasError, Grid
+from .options import content_token
 
-__all__ = ["MemoryResults", "ZarrResults", "fingerprint"]
+__all__ = ["MemoryResults", "ZarrResults", "fingerprint", "scene_token"]
 
-_FORMAT = "contactsym-atlas/1"
+_FORMAT = "contactsym-atlas/2"
+
+#: What each part of a fingerprint stands for, in the message that refuses a checkpoint.
+_PARTS = {
+    "scene": "the scene (its equations, contacts, laws or derived fast subsystem)",
+    "quantity": "the quantity or its options (a function's code, constants or closure)",
+    "values": "the fixed values",
+    "grid": "the grid",
+    "chunk": "the chunk size",
+}
 
 
-def fingerprint(scene_name: str, quantity_key: str, values, grid: Grid, chunk: int) -> str:
-    fixed = sorted((str(k), repr(v)) for k, v in dict(values or {}).items())
-    text = repr((scene_name, quantity_key, fixed, chunk)).encode() + grid.token()
-    return hashlib.sha256(text).hexdigest()
+def _hash(text: str | bytes) -> str:
+    return hashlib.sha256(text if isinstance(text, bytes) else text.encode()).hexdigest()
+
+
+def scene_token(scene) -> str:
+    """The scene's content: accelerations, contacts with their laws, options, and the derived fast subsystem."""
+    from .. import __version__  # the package itself: importing it at the top would be circular
+
+    contacts = [(c.coordinate, c.reaction, _law(c.compliance), _law(c.friction), c.unilateral) for c in scene.contacts]
+    parts = (__version__, scene.accelerations, contacts, getattr(scene, "eps", None), scene.fast_subsystem().equations)
+    return content_token(parts)
+
+
+def _law(law) -> str:
+    return "None" if law is None else f"{type(law).__qualname__}{content_token(getattr(law, '__dict__', repr(law)))}"
+
+
+def fingerprint(scene, quantity, values, grid: Grid, chunk: int) -> dict:
+    """The identity of a sweep, part by part (hex digests): see the module docstring."""
+    return {
+        "scene": _hash(scene_token(scene)),
+        "quantity": _hash(content_token((quantity.name, quantity.builder, quantity.options))),
+        "values": _hash(content_token(dict(values or {}))),
+        "grid": _hash(grid.token()),
+        "chunk": str(int(chunk)),
+    }
+
+
+def _checksum(values: np.ndarray, reasons) -> str:
+    data = np.ascontiguousarray(values, dtype=float).tobytes() + "\x00".join(map(str, reasons)).encode()
+    return _hash(data)
 
 
 class MemoryResults:
     """The results of a sweep without a checkpoint."""
+
+    repaired: tuple = ()
 
     def __init__(self, size: int, outputs: tuple, chunk: int):
         self.chunk = chunk
@@ -48,41 +92,75 @@ class MemoryResults:
 
 
 class ZarrResults:
-    """A Zarr checkpoint: opened (and checked) if it exists, created otherwise."""
+    """A Zarr checkpoint: opened (and checked, chunk by chunk) if it exists, created otherwise."""
 
-    def __init__(self, path, size: int, outputs: tuple, chunk: int, token: str):
+    def __init__(self, path, size: int, outputs: tuple, chunk: int, token: dict):
         import zarr  # optional (contactsym[atlas]): only a checkpointed sweep needs it; Zarr 2 and 3 both work
 
-        self.path, self.outputs, self.chunk = Path(path), outputs, chunk
+        self.path, self.outputs, self.chunk, self.size = Path(path), outputs, chunk, size
         n_chunks = -(-size // chunk)
         if self.path.exists():
             try:
                 self.group = zarr.open_group(str(self.path), mode="r+")
             except Exception as error:  # noqa: BLE001 - any unreadable store gets the same advice
                 raise AtlasError(
-                    f"{self.path} exists and is not an atlas checkpoint ({error}); choose another path."
+                    f"{self.path} exists and is not an atlas checkpoint ({type(error).__name__}); choose another path."
                 ) from None
-            found = self.group.attrs.get("fingerprint")
-            if self.group.attrs.get("format") != _FORMAT or found != token:
-                raise AtlasError(
-                    f"the checkpoint {self.path} holds a different sweep (other scene, quantity, values, grid or "
-                    "chunks); resume it with the same arguments, or choose another path."
-                )
+            self._check(dict(self.group.attrs), token)
+            self.done = self._verified(n_chunks)
         else:
             self.group = zarr.open_group(str(self.path), mode="w")
             for name in outputs:
                 self.group.full(name=f"value_{name}", shape=(size,), chunks=(chunk,), dtype="f8", fill_value=np.nan)
             self.group.full(name="reason", shape=(size,), chunks=(chunk,), dtype=str, fill_value="")
+            self.group.full(name="checksum", shape=(n_chunks,), chunks=(1,), dtype=str, fill_value="")
             self.group.full(name="done", shape=(n_chunks,), chunks=(1,), dtype=bool, fill_value=False)
             self.group.attrs.update({"format": _FORMAT, "fingerprint": token, "outputs": list(outputs)})
-        self.done = np.asarray(self.group["done"][:], dtype=bool)
+            self.done, self.repaired = np.zeros(n_chunks, dtype=bool), ()
+
+    def _check(self, attrs: dict, token: dict) -> None:
+        if attrs.get("format") != _FORMAT or not isinstance(attrs.get("fingerprint"), dict):
+            raise AtlasError(
+                f"{self.path} is not a checkpoint of this version of contactsym ({attrs.get('format')!r}); "
+                "choose another path, or remove it yourself if it is no longer needed."
+            )
+        differ = [part for part in _PARTS if attrs["fingerprint"].get(part) != token[part]]
+        if differ:
+            raise AtlasError(
+                f"the checkpoint {self.path} holds a different sweep: {'; '.join(_PARTS[p] for p in differ)} "
+                "differ; resume it with the same arguments, or choose another path (nothing was changed)."
+            )
+
+    def _verified(self, n_chunks: int) -> np.ndarray:
+        """The done flags, with every chunk whose data fail their checksum (or cannot be read) set back to undone."""
+        try:
+            done = np.asarray(self.group["done"][:], dtype=bool)
+            sums = [str(text) for text in self.group["checksum"][:].tolist()]
+        except Exception:  # noqa: BLE001 - a damaged index: every chunk is computed again
+            done, sums = np.zeros(n_chunks, dtype=bool), [""] * n_chunks
+        repaired = []
+        for index in np.nonzero(done)[0]:
+            start, stop = index * self.chunk, min((index + 1) * self.chunk, self.size)
+            try:
+                values = np.column_stack([self.group[f"value_{name}"][start:stop] for name in self.outputs])
+                reasons = [str(text) for text in self.group["reason"][start:stop].tolist()]
+                good = _checksum(values, reasons) == sums[index]
+            except Exception:  # noqa: BLE001 - an unreadable chunk file is recomputed like a lost one
+                good = False
+            if not good:
+                done[index] = False
+                repaired.append(int(index))
+        self.repaired = tuple(repaired)
+        return done
 
     def write(self, index: int, values: np.ndarray, reasons) -> None:
         start = index * self.chunk
         stop = start + len(values)
+        reasons = [str(text) for text in reasons]
         for j, name in enumerate(self.outputs):
             self.group[f"value_{name}"][start:stop] = values[:, j]
         self.group["reason"][start:stop] = np.asarray(reasons, dtype=str)
+        self.group["checksum"][index : index + 1] = np.asarray([_checksum(values, reasons)], dtype=str)
         self.group["done"][index : index + 1] = True  # last: the chunk counts only once it is all there
         self.done[index] = True
 

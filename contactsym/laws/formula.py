@@ -8,6 +8,7 @@ import sympy as sp
 
 from ..errors import ComplianceError
 from ..parse import sympy_only
+from ..validate import shorten
 from .compliance import Compliance
 
 __all__ = ["ImplicitDeformation", "Law"]
@@ -104,6 +105,10 @@ class Law(Compliance):
     """
 
     def __init__(self, expr, q: sp.Symbol, qdot: sp.Symbol, eps: sp.Symbol, *, check: bool = True, where=()):
+        if not all(isinstance(s, sp.Symbol) for s in (q, qdot, eps)) or len({q, qdot, eps}) != 3:
+            raise ComplianceError(f"q, qdot, eps = {shorten((q, qdot, eps))} must be three different sympy Symbols.")
+        if not isinstance(check, bool) or not isinstance(where, (list, tuple)):
+            raise ComplianceError("check must be True or False, and where a list of expressions (> 0 where used).")
         self.expr, self.q, self.qdot, self.eps = sympy_only(expr, "the law's expression"), q, qdot, eps
         self.Q = sp.Dummy("Q", real=True)
         self.V = sp.Dummy("V", real=True)

@@ -6,6 +6,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from ..parse import sympy_only
 from ..validate import friction_coefficient
 
 __all__ = ["Coulomb", "Viscous"]
@@ -42,7 +43,7 @@ class Coulomb:
         object.__setattr__(self, "mu", friction_coefficient(self.mu))
 
     def magnitude(self, reaction: sp.Expr, slip_speed: sp.Expr | None) -> sp.Expr:
-        return self.mu * sp.Abs(reaction)
+        return self.mu * sp.Abs(sympy_only(reaction, "the reaction"))  # text is refused, never evaluated
 
 
 @dataclass(frozen=True)
@@ -66,4 +67,4 @@ class Viscous:
         object.__setattr__(self, "c", friction_coefficient(self.c, "the viscous coefficient c"))
 
     def magnitude(self, reaction: sp.Expr, slip_speed: sp.Expr | None) -> sp.Expr:
-        return self.c * slip_speed
+        return self.c * sympy_only(slip_speed, "the slip speed")

@@ -27,6 +27,15 @@ def _cached(scene, key, build):
     return store[key]
 
 
+def _has_text(exprs) -> bool:
+    """Text anywhere in nested lists, tuples or dicts of expressions (lambdify would evaluate it)."""
+    if isinstance(exprs, (str, bytes)):
+        return True
+    if isinstance(exprs, dict):
+        return any(_has_text(e) for e in exprs.values())
+    return isinstance(exprs, (list, tuple)) and any(_has_text(e) for e in exprs)
+
+
 def lambdify_cse(args: Sequence, exprs) -> Callable:
     """``sympy.lambdify`` to NumPy with common-subexpression elimination.
 
@@ -38,6 +47,8 @@ def lambdify_cse(args: Sequence, exprs) -> Callable:
     >>> [round(float(v), 6) for v in f(2.0, 3.0)]
     [13.0, 10.911569]
     """
+    if isinstance(args, (str, bytes)) or not all(isinstance(a, sp.Basic) for a in args) or _has_text(exprs):
+        raise NumericsError("lambdify_cse takes SymPy symbols and SymPy expressions (text is never evaluated).")
     return sp.lambdify(list(args), exprs, modules="numpy", cse=True)
 
 

@@ -30,6 +30,8 @@ from dataclasses import dataclass, field
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
+from ..errors import ContactsymError
+
 __all__ = ["Formula", "LatexReprMixin", "Numbering", "formulas", "latex", "prime", "signs_latex", "tex"]
 
 
@@ -231,6 +233,8 @@ def latex(obj, *, present: bool = False, tags: bool = False) -> str:
     >>> print(cs.latex(cs.scene("sliding-point").equilibria(), tags=True))
     \begin{aligned} u^{*} &= - Y{\left(x,\dot{x} \right)} && \text{(3.2)} \end{aligned}
     """
+    if not isinstance(present, bool) or not isinstance(tags, bool):
+        raise ContactsymError(f"present and tags must be True or False, not {present!r:.40} and {tags!r:.40}.")
     if _is_region(obj):
         return obj.latex()
     if not callable(getattr(obj, "formulas", None)):

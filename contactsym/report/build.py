@@ -9,13 +9,14 @@ from __future__ import annotations
 import json
 import shutil
 import subprocess
-import tempfile
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..atomic import replaced_directory
+from ..atomic import replaced_directory, scratch_directory
 from ..errors import ReportError
+from ..mechanism.scene import Scene
+from ..validate import checked_fields, flag, instance_of, path_text, shorten
 from .document import Figure, report_tex
 from .scene_parts import FigureSource
 from .summary import conditions
@@ -51,6 +52,9 @@ class ReportResult:
     figures: list = field(default_factory=list)
     notes: list = field(default_factory=list)
 
+    def __post_init__(self):
+        checked_fields(self, ReportError)
+
 
 # --- files ------------------------------------------------------------------------------------
 
@@ -71,6 +75,16 @@ def compile_pdf(tex: Path, timeout: float = 120) -> Path | None:
     ...     print(pdf is None or (pdf == tex.with_suffix(".pdf") and pdf.exists()))
     True
     """
+    tex = Path(path_text(tex, "tex", ReportError))
+    ok = isinstance(timeout, (int, float)) and not isinstance(timeout, bool) and 0 < float(timeout) <= 86400
+    if not ok:
+        raise ReportError(f"timeout = {shorten(timeout)} must be a number of seconds from 0 to 86400.")
+    try:
+        found = tex.is_file()
+    except OSError:  # e.g. a name too long for the file system
+        found = False
+    if not found:
+        raise ReportError(f"{shorten(str(tex))} is not a LaTeX file; give the path of an existing .tex file.")
     pdflatex = shutil.which("pdflatex")
     if pdflatex is None:
         return None
@@ -113,7 +127,9 @@ def write_report(
     ``progress`` receives short messages. ``report.pdf`` is made when ``pdf`` is true and
     pdflatex is installed. All or nothing: the files are written to a directory beside
     ``directory`` that replaces it only when all succeeded (see :mod:`contactsym.atomic`);
-    an existing directory that contactsym did not write is replaced only with ``force``.
+    an existing directory holding anything contactsym did not write (a user's file) is replaced
+    only with ``force=True``; ``force`` and ``pdf`` must be bools (``force="no"`` is an error
+    and touches nothing).
 
     Examples
     --------
@@ -130,7 +146,14 @@ def write_report(
     >>> "Errata" in text, result.figures, result.notes[0][:40]
     (False, [], 'No figures: give the scene a [figures] t')
     """
-    directory = Path(directory)
+    instance_of(
+        scene, Scene, "scene", "pass a Scene, e.g. contactsym.scene('brake') or load_scene('my.toml')", ReportError
+    )
+    directory = Path(path_text(directory, "directory", ReportError))
+    pdf, force = flag(pdf, "pdf", ReportError), flag(force, "force", ReportError)
+    instance_of(figures, FigureSource, "figures", "pass a FigureSource or None", ReportError, optional=True)
+    if progress is not None and not callable(progress):
+        raise ReportError(f"progress = {shorten(progress)} must be a function of one message (or None).")
     with replaced_directory(directory, force=force, error=ReportError) as work:
         result = _write_files(scene, work, pdf, figures, progress or (lambda message: None), directory)
     return ReportResult(
@@ -167,8 +190,8 @@ def _write_files(scene, directory: Path, pdf: bool, figures: FigureSource | None
     data = conditions(scene)
     result.conditions.write_text(json.dumps(data, indent=2, ensure_ascii=False) + "\n")
     say("figures")
-    with tempfile.TemporaryDirectory(prefix="contactsym-figures-") as scratch:
-        source = figures or FigureSource(Path(scratch))
+    with scratch_directory() as scratch:
+        source = figures or FigureSource(scratch)
         drawn, notes = source.for_scene(scene)
         placed = []
         for path, caption in drawn:

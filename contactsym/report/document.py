@@ -27,11 +27,11 @@ import sympy as sp
 
 from ..counts.one_sided import one_sided_cases
 from ..errors import ContactsymError
-from ..mechanism.scene import paper_equations
+from ..mechanism.scene import Scene, paper_equations
 from ..printing.latex_output import Formula, formulas, tex
 from ..scenes import paper_name
 from ..stages.stability import generic_minors, hurwitz_names, robustness_formulas
-from ..validate import cut
+from ..validate import checked_fields, cut, instance_of
 from .errata import AGREE, latex_table, text_to_latex
 from .scene_parts import _count_tag, _special_cases
 from .summary import ADVICE, _counts, conditions
@@ -56,6 +56,9 @@ class Figure:
 
     path: Path
     caption: str
+
+    def __post_init__(self):
+        checked_fields(self)
 
 
 # --- sections -----------------------------------------------------------------------
@@ -353,6 +356,10 @@ def report_tex(scene, figures: list[Figure] | tuple = (), notes: list[str] | tup
     >>> "The phase portrait needs values for b." in tex
     True
     """
+    instance_of(scene, Scene, "scene", "pass a Scene, e.g. contactsym.scene('brake')")
+    listed = isinstance(figures, (list, tuple)) and isinstance(notes, (list, tuple))
+    if not listed or not all(isinstance(f, Figure) for f in figures) or not all(isinstance(n, str) for n in notes):
+        raise ContactsymError("report_tex: figures must be a list of report.Figure, and notes a list of text.")
     named = _Named()
     paper = paper_name(scene) is not None  # the paper's own scene object, not one that shares its name
     title = _escape(f"contactsym: {scene.name}")

@@ -20,11 +20,11 @@ import sympy as sp
 
 from ..algebra.reductions import known_sign, quotient_sign
 from ..errors import ContactsymError
-from ..mechanism.scene import paper_equations
+from ..mechanism.scene import Scene, paper_equations
 from ..printing.latex_output import tex
 from ..stages.regions import Region
 from ..stages.stability import hurwitz_names
-from ..validate import cut
+from ..validate import cut, instance_of
 from .scene_parts import _count_tag
 
 __all__ = ["always_positive", "conditions", "summary_text"]
@@ -89,6 +89,7 @@ def conditions(scene, signs=None) -> dict:
     >>> data["regions"]["stable for every law"]["sympy"], data["regions"]["stable for every law"]["paper"]
     ('mu <= Abs(cot(alpha))', ['(4.4)', '(6.3)'])
     """
+    instance_of(scene, Scene, "scene", "pass a Scene, e.g. contactsym.scene('brake')")
     key = None if signs is None else tuple(signs)
     try:
         computed = _COMPUTED.setdefault(scene, {})
@@ -202,6 +203,8 @@ def summary_text(data: dict) -> str:
     >>> print(summary_text(conditions(cs.scene("brake"))).splitlines()[1])
       stable for every law: mu <= Abs(cot(alpha))   (4.4), (6.3)
     """
+    if not isinstance(data, dict) or not {"scene", "regions"} <= set(data):
+        raise ContactsymError("summary_text takes the dict that contactsym.conditions(scene) returns.")
     lines = [f"{data['scene']}: {data['description']}"]
     for name, entry in data["regions"].items():
         cite = ", ".join(entry.get("paper", []))

@@ -38,8 +38,10 @@ import sympy as sp
 
 from .. import inequalities
 from ..algebra.basic import known_sign
+from ..errors import SceneError
 from ..parse import sympy_only
 from ..printing.latex_output import tex
+from ..validate import shorten, sign_pattern
 
 __all__ = ["Region", "closed_form", "known_sign", "scene_regions", "REGION_NAMES"]
 
@@ -64,6 +66,13 @@ def closed_form(condition, scene=None, solve_for: sp.Symbol | None = None, signs
     >>> closed_form(s.stability().robustly_stable, s)
     ((v_1 + 1)*(v_2 + 1) >= 0) & (v_1 < 2*kappa**2 + 1) & (v_2 < 2*kappa**2 + 1) & (v_1 + v_2 < 2*kappa**2)
     """
+    if scene is not None and not callable(getattr(scene, "present", None)) or isinstance(scene, type):
+        raise SceneError(f"scene = {shorten(scene)} must be a Scene (or None), e.g. contactsym.scene('brake').")
+    if solve_for is not None and not isinstance(solve_for, sp.Symbol):
+        raise SceneError(f"solve_for = {shorten(solve_for)} must be a sympy Symbol (a parameter) or None.")
+    signs = None if signs is None else sign_pattern(signs)
+    if not isinstance(sympy_only(condition, "the condition"), (sp.logic.boolalg.Boolean, sp.Expr)):
+        raise SceneError(f"condition = {shorten(condition)} must be a SymPy condition such as mu < 1.")
     positive = tuple(getattr(scene, "positive_expressions", ()))
     condition = scene.present(condition, signs) if scene is not None else sympy_only(condition, "the condition")
     return inequalities.closed_form(condition, positive, solve_for, raw_ops=RAW_OPS, factor_terms=FACTOR_TERMS)
@@ -121,6 +130,9 @@ class Region:
     symbols: tuple = field(default=())
 
     def __post_init__(self):
+        symbols_ok = isinstance(self.symbols, tuple) and all(isinstance(s, sp.Symbol) for s in self.symbols)
+        if not isinstance(self.name, str) or not isinstance(self.description, str) or not symbols_ok:
+            raise SceneError("a Region's name and description are text, and its symbols a tuple of symbols.")
         object.__setattr__(self, "condition", sympy_only(self.condition, "a region's condition"))
         if not self.symbols:
             object.__setattr__(self, "symbols", tuple(sorted(self.condition.free_symbols, key=str)))

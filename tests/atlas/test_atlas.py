@@ -217,11 +217,12 @@ def test_plot_the_closed_form_hopf_line_falls_where_the_atlas_changes_sign():
 
 
 def _counting(log_dir, stop_at=None):
-    """A user quantity that records each call in a file (calls happen in other processes)."""
+    """A user quantity that records each call in a file (calls happen in other processes); it dies at
+    ``mu == stop_at`` while the file ``stop`` exists beside the log (its code and closure stay the same)."""
 
     def counted(values):
         (log_dir / f"{values['mu']!r}.{os.getpid()}.{os.urandom(4).hex()}").touch()
-        if stop_at is not None and values["mu"] == stop_at:
+        if values["mu"] == stop_at and (log_dir.parent / "stop").exists():
             raise KeyboardInterrupt  # the sweep dies here, as on a restart
         return 10 * values["mu"]
 
@@ -232,10 +233,12 @@ def test_a_resumed_sweep_recomputes_nothing_stored(tmp_path):
     store, log = tmp_path / "atlas.zarr", tmp_path / "calls"
     log.mkdir()
     grid = {"mu": np.arange(1.0, 13.0)}
+    first = atlas.function(_counting(log, stop_at=9.0), outputs=["counted"])
+    (tmp_path / "stop").touch()
     with pytest.raises(KeyboardInterrupt):
-        atlas.sweep("brake", _counting(log, stop_at=9.0), grid, chunks=4, store=store, scheduler="sync")
+        atlas.sweep("brake", first, grid, chunks=4, store=store, scheduler="sync")
     assert len(list(log.iterdir())) == 9  # two chunks stored, the third died at its first point
-    first = atlas.function(_counting(log), outputs=["counted"])
+    (tmp_path / "stop").unlink()
     done = atlas.sweep("brake", first, grid, chunks=4, store=store, scheduler="sync")
     assert (done.points_resumed, done.points_computed) == (8, 4)
     assert sorted(float(p.name.split(".")[0] + "." + p.name.split(".")[1]) for p in log.iterdir()) == sorted(
@@ -244,8 +247,107 @@ def test_a_resumed_sweep_recomputes_nothing_stored(tmp_path):
     assert done.counted.values.tolist() == (10 * grid["mu"]).tolist()
     again = atlas.sweep("brake", first, grid, chunks=4, store=store, scheduler="sync")
     assert (again.points_resumed, again.points_computed) == (12, 0) and len(list(log.iterdir())) == 13
-    with pytest.raises(AtlasError, match="holds a different sweep"):
+    with pytest.raises(AtlasError, match="holds a different sweep: the grid differ"):
         atlas.sweep("brake", first, {"mu": np.arange(1.0, 14.0)}, chunks=4, store=store, scheduler="sync")
+
+
+def _brake_named(name: str, factor) -> cs.Scene:
+    """A brake-like scene built in Python: same name, equations scaled by ``factor``."""
+    from sympy.physics.mechanics import dynamicsymbols
+
+    x, y = dynamicsymbols("x y")
+    N, mu = sp.Symbol("N", real=True), sp.Symbol("mu", positive=True)
+    return cs.Scene.from_accelerations([x, y], [-mu * sp.Abs(N), factor * N - 1], [cs.Contact(y, N)], name=name)
+
+
+def test_a_checkpoint_is_identified_by_content_not_by_names(tmp_path):
+    store, grid = tmp_path / "atlas.zarr", {"mu": [0.5, 1.0]}
+    values = {"Phi": -1.0, "Psi": -1.0}
+    atlas.sweep(_brake_named("mine", 1), "leading_eigenvalue", grid, values=values, store=store)
+    with pytest.raises(AtlasError, match="different sweep: the scene .* differ"):
+        atlas.sweep(_brake_named("mine", 2), "leading_eigenvalue", grid, values=values, store=store)
+    same = atlas.sweep(_brake_named("mine", 1), "leading_eigenvalue", grid, values=values, store=store)
+    assert same.points_resumed == 2
+    with pytest.raises(AtlasError, match="the quantity or its options"):
+        atlas.sweep(_brake_named("mine", 1), "classification", grid, values=values, store=store)
+
+    lambdas = tmp_path / "lambdas.zarr"
+    atlas.sweep("brake", lambda v: v["mu"], grid, store=lambdas)
+    for other in (lambda v: 2 * v["mu"], _scaled(3), _scaled(4)):
+        with pytest.raises(AtlasError, match="the quantity or its options"):
+            atlas.sweep("brake", other, grid, store=lambdas)
+    store_of_3 = tmp_path / "three.zarr"
+    assert atlas.sweep("brake", _scaled(3), grid, store=store_of_3).points_computed == 2
+    assert atlas.sweep("brake", _scaled(3), grid, store=store_of_3).points_resumed == 2  # same code, same closure
+
+
+def _scaled(k):
+    def value(v):
+        return k * v["mu"]
+
+    return value
+
+
+def test_a_lost_or_damaged_chunk_is_recomputed_and_named(tmp_path):
+    import zarr
+
+    store, grid = tmp_path / "atlas.zarr", {"mu": np.arange(1.0, 9.0)}
+    quantity = atlas.function(_scaled(10), outputs=["value"])
+    first = atlas.sweep("brake", quantity, grid, chunks=2, store=store, scheduler="sync")
+    group = zarr.open_group(str(store), mode="r+")
+    group["value_value"][2:4] = np.nan  # chunk 1 lost its values, its flag still says done
+    group["reason"][6:7] = "edited"  # chunk 3 damaged
+    again = atlas.sweep("brake", quantity, grid, chunks=2, store=store, scheduler="sync")
+    assert again.chunks_recomputed == "[1, 3]" and (again.points_resumed, again.points_computed) == (4, 4)
+    assert np.array_equal(again.value.values, first.value.values) and (again.reason.values == "").all()
+
+
+def test_a_nan_always_has_a_reason():
+    ds = atlas.sweep("brake", lambda v: float("nan") if v["mu"] > 1 else v["mu"], {"mu": [0.5, 1.5]})
+    value = ds[next(iter(ds.data_vars))]
+    assert not np.isnan(value.values[0]) and ds.reason.values[0] == ""
+    assert np.isnan(value.values[1]) and ds.reason.values[1].startswith("NaN: ")
+
+
+@pytest.mark.parametrize(
+    ("make", "words"),
+    [
+        (lambda: atlas.stable_fraction(laws=0), "laws = 0"),
+        (lambda: atlas.stable_fraction(laws="256"), "laws = '256'"),
+        (lambda: atlas.stable_fraction(magnitudes=(10.0, 0.1)), "low must be below high"),
+        (lambda: atlas.stable_fraction(magnitudes=(0, 1)), "magnitudes = 0"),
+        (lambda: atlas.stable_fraction(seed=-1), "seed = -1"),
+        (lambda: atlas.classification(signs=(1, 0)), "signs"),
+        (lambda: atlas.leading_eigenvalue(signs="+-"), "signs"),
+        (lambda: atlas.cycle(sampels=256), "no option 'sampels'"),
+        (lambda: atlas.cycle(tol=float("nan")), "tol = nan"),
+        (lambda: atlas.cycle(method="Euler"), "not a solver"),
+        (lambda: atlas.cycle(periods=2.5), "periods = 2.5"),
+        (lambda: atlas.catastrophe(-1, (0, 1), {}), "eps = -1"),
+        (lambda: atlas.catastrophe(0.01, (1, 0), {}), "start must come before"),
+        (lambda: atlas.catastrophe(0.01, (0, 1), None), "initial = None"),
+        (lambda: atlas.catastrophe(0.01, (0, 1), {}, start="fast"), "'rigid', 'slow'"),
+        (lambda: atlas.function(len, outputs="ab"), "outputs = 'ab'"),
+        (lambda: atlas.function(len, outputs=["a", "a"]), "distinct"),
+    ],
+)
+def test_every_option_of_every_quantity_is_checked(make, words):
+    with pytest.raises(AtlasError) as error:
+        make()
+    assert words in str(error.value)
+
+
+def test_the_memory_estimate_counts_the_reasons():
+    from contactsym.atlas.grid import REASON_LIMIT, result_bytes
+
+    assert result_bytes(1000, 2) >= 1000 * (2 * 8 + REASON_LIMIT)
+
+
+def test_the_cli_checks_the_grid_size_before_it_allocates(capsys):
+    from contactsym.cli import main
+
+    code = main(["atlas", "brake", "classification", "--grid", "mu=0.1:2:1000000000000", "--set", "m=1"])
+    assert code == 2 and "more than max_points" in capsys.readouterr().err
 
 
 # --- a real LocalCluster with 2 worker processes ----------------------------------------------------

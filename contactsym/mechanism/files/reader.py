@@ -61,6 +61,7 @@ import sympy as sp
 from ...errors import ContactsymError
 from ...parse import ParseError
 from ...scenes import scene, scene_names
+from ...validate import shorten
 from ..scene import Scene
 from .bodies import Plane, read_motion, read_points
 from .contacts import COMPLIANCE_LAWS, build_contact, read_contacts
@@ -281,6 +282,9 @@ def read_scene(
     ...
     contactsym.errors.SceneFileError: a.toml:6: unknown key 'laww' in [contacts.0]; did you mean 'law'? allowed: gap, reaction, unilateral, law, friction.
     """
+    for what, value in (("text", text), ("source", source), ("default_name", default_name)):
+        if not isinstance(value, str) or (what != "text" and len(value) > 200):
+            raise SceneFileError(f"read_scene: {what} = {shorten(value)} must be text (a name up to 200 characters).")
     try:
         return build_scene(read_spec(text, source, default_name, limits=limits))
     except RecursionError:

@@ -9,12 +9,14 @@ the spec alone. Every spec item keeps the line it was read from, for messages.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, fields
 from types import MappingProxyType
 
 import sympy as sp
 
 from ...errors import SceneError
+from ...validate import checked_fields, shorten
 
 __all__ = [
     "SCHEMA",
@@ -202,6 +204,13 @@ class FigurePlan:
     x_range: tuple[float, float]
     y_range: tuple[float, float]
     values: dict = field(default_factory=dict)
+
+    def __post_init__(self):
+        checked_fields(self, SceneError)  # then the ranges: two finite numbers, low < high
+        for what, pair in (("x_range", self.x_range), ("y_range", self.y_range)):
+            numbers = all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in pair)
+            if len(pair) != 2 or not numbers or not pair[0] < pair[1]:
+                raise SceneError(f"FigurePlan {what} = {shorten(pair)} must be two finite numbers, low < high.")
 
 
 @dataclass(frozen=True)
