@@ -18,8 +18,8 @@ import sympy as sp
 from ..errors import ContactsymError
 from ..mechanism.scene import paper_equations
 from ..printing.latex_output import tex
-from ..stages.regions import Region
-from ..stages.stability import hurwitz_names
+from ..stages.regions import REGION_NAMES, Region
+from ..stages.stability import UNDECIDED_TEX, hurwitz_names
 from .scene_parts import _count_tag
 
 __all__ = ["conditions", "summary_text"]
@@ -77,8 +77,14 @@ def conditions(scene, signs=None) -> dict:
     }
     if scene.presentation:
         data["presentation"] = {sp.sstr(k): sp.sstr(v) for k, v in scene.presentation.items()}
-    for name, region in scene.regions(signs).items():
-        data["regions"][name] = _entry(region.condition, *paper_equations(scene, name))
+    regions = scene.regions(signs)
+    for name, attribute in REGION_NAMES.items():
+        if name in regions:
+            data["regions"][name] = _entry(regions[name].condition, *paper_equations(scene, name))
+        elif getattr(st, attribute) is None:  # neither proved nor disproved at this numeric A
+            data["regions"][name] = {"sympy": "undecided", "latex": UNDECIDED_TEX}
+    if st.k >= 3 and st.A.free_symbols and st.undecided != sp.false:
+        data["regions"]["undecided"] = _entry(st.undecided)
     for name, condition in zip(hurwitz_names(st), st.hurwitz):
         key = "coefficient" if name.startswith("p") else "hurwitz"
         data["hurwitz"].append({"name": name, **_entry(condition, *paper_equations(scene, key))})

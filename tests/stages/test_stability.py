@@ -483,9 +483,16 @@ def test_k3_law_dependent_is_a_region_and_undecided_is_boolean():
     spd = {**values, A[0, 1]: -1, A[1, 2]: -1}  # [[2, -1, 0], [-1, 2, -1], [0, -1, 2]]: SPD
     assert truth(stability.robustly_stable, spd)
     assert not truth(stability.undecided, spd)
+    # three-valued at the point: a nested sequence of positive minors disproves "unstable for every law",
+    # nothing in closed form decides the other two
+    verdicts = stability.verdicts
+    assert verdicts["robustly_unstable"].at(values) == sp.false
+    assert verdicts["robustly_stable"].at(values) is None
+    assert verdicts["law_dependent"].at(values) is None
     numeric = user_scene(B).stability()
-    assert numeric.law_dependent == sp.false
     assert numeric.robustness.verdict == "law-dependent"  # the point decision finds witness laws
+    assert numeric.law_dependent == sp.true  # and the property says so (it once said False)
+    assert numeric.robustly_stable == sp.false and numeric.robustly_unstable == sp.false
     assert numeric.undecided == sp.false
 
 
