@@ -78,13 +78,11 @@ def conditions(scene, signs=None) -> dict:
     if scene.presentation:
         data["presentation"] = {sp.sstr(k): sp.sstr(v) for k, v in scene.presentation.items()}
     regions = scene.regions(signs)
-    for name, attribute in REGION_NAMES.items():
+    for name in [*REGION_NAMES, *regions]:
         if name in regions:
             data["regions"][name] = _entry(regions[name].condition, *paper_equations(scene, name))
-        elif getattr(st, attribute) is None:  # neither proved nor disproved at this numeric A
+        elif getattr(st, REGION_NAMES[name]) is None:  # neither proved nor disproved at this numeric A
             data["regions"][name] = {"sympy": "undecided", "latex": UNDECIDED_TEX}
-    if st.k >= 3 and st.A.free_symbols and st.undecided != sp.false:
-        data["regions"]["undecided"] = _entry(st.undecided)
     for name, condition in zip(hurwitz_names(st), st.hurwitz):
         key = "coefficient" if name.startswith("p") else "hurwitz"
         data["hurwitz"].append({"name": name, **_entry(condition, *paper_equations(scene, key))})

@@ -146,6 +146,8 @@ def test_undecided_prints_as_undecided():
     assert data["regions"]["law-dependent"]["sympy"] == "undecided"
     assert data["regions"]["stable for every law"]["sympy"] == "False"
     assert data["robustness"]["verdict"] == "undecided"
+    assert data["regions"]["undecided"]["sympy"] == "True"  # the report's section 7 lists it too
+    assert scene.regions()["undecided"].condition == sp.true
     rows = {f.key: f for f in scene.stability().formulas()}
     assert "undecided" in rows["law-dependent"].rhs
 
@@ -155,6 +157,10 @@ def test_symbolic_k3_names_its_undecided_region():
     assert stability.undecided not in (sp.true, sp.false)
     keys = [f.key for f in stability.formulas()]
     assert "undecided" in keys
+    scene = user_scene(A)
+    regions = scene.regions()
+    assert "undecided" in regions and "undecided" in conditions(scene)["regions"]
+    assert "undecided where" in derivation_chain(scene)
     # at a point of the undecided region no statement is proved, and none is False without a reason
     values = values_for(3, sp.Matrix(UNDECIDED))
     assert stability.undecided.xreplace(values) == sp.true
