@@ -177,7 +177,7 @@ class Stability:
         :attr:`robustness` is added as evidence. See :mod:`contactsym.stages.verdicts`.
         """
         proved = dict(zip(VERDICT_NAMES, self._classification))
-        verdicts = classification_verdicts(self.k, self.linearization.det_A, proved, self._closed)
+        verdicts = classification_verdicts(self.k, proved, self._closed)
         if self.A.free_symbols or all(v.at() is not None for v in verdicts.values()):
             return verdicts
         return with_point_decision(verdicts, self.robustness)

@@ -81,15 +81,14 @@ class Verdict:
         return None
 
 
-def classification_verdicts(k: int, det_A: sp.Expr, proved: dict, closed: dict | None = None) -> dict[str, Verdict]:
+def classification_verdicts(k: int, proved: dict, closed: dict | None = None) -> dict[str, Verdict]:
     """The three verdicts from the proved regions ``proved`` (by :data:`NAMES`) and, for k >= 3,
     the closed-form regions ``closed`` of :func:`contactsym.robustness.classify.regions`.
 
     Examples
     --------
     >>> a = sp.Symbol("a", real=True)
-    >>> v = classification_verdicts(1, a, {"robustly_stable": a > 0, "robustly_unstable": a < 0,
-    ...                                    "law_dependent": sp.false})
+    >>> v = classification_verdicts(1, {"robustly_stable": a > 0, "robustly_unstable": a < 0, "law_dependent": sp.false})
     >>> v["robustly_unstable"].at({a: 0}), v["robustly_stable"].at({a: 0}), v["law_dependent"].at({a: 3})
     (None, False, False)
     """

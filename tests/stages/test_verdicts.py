@@ -171,7 +171,7 @@ def test_symbolic_k3_names_its_undecided_region():
 def test_k1_k2_statements_are_decided_off_det_zero_and_disproved_by_det_zero():
     a = sp.Symbol("a", real=True)
     verdicts = classification_verdicts(
-        1, a, {"robustly_stable": a > 0, "robustly_unstable": a < 0, "law_dependent": sp.false}
+        1, {"robustly_stable": a > 0, "robustly_unstable": a < 0, "law_dependent": sp.false}
     )
     assert [verdicts[n].at({a: 2}) for n in NAMES] == [sp.true, sp.false, sp.false]
     assert [verdicts[n].at({a: -2}) for n in NAMES] == [sp.false, sp.true, sp.false]
