@@ -17,9 +17,10 @@ and the signs by ``s^2 = 1``; nothing else ties them. :func:`canonical` uses exa
    criterion the generators are a Groebner basis, and the remainder on division by a
    Groebner basis is unique. Sign symbols in Q are moved up (1/s = s).
 4. P/Q is cancelled by its polynomial gcd and its sign fixed (Q's leading coefficient > 0).
-5. (:func:`canonical`) The trigonometric units of Q are put in one place: 1 +- cos q becomes
-   sin^2 q, 1 +- sin q and 1 - sin^2 q become powers of cos q, and cos q is cancelled from P
-   where it divides P modulo the ideal (``_settled``). A result presented in multiple angles is
+5. (:func:`canonical`) The trigonometric units of Q are put in one place: Q becomes
+   sin^m q cos^n q Q'' with no factor sin q, cos q, 1 +- cos q, 1 +- sin q of Q'' modulo the
+   ideal (1 +- cos q becomes sin^2 q, 1 +- sin q cos^2 q, P times the conjugate), and sin q,
+   cos q are cancelled from P where they divide P modulo the ideal (``_settled``). A result presented in multiple angles is
    read once more, until it reads the same (a Fourier form expands to other polynomials,
    whose gcd can see more).
 
@@ -30,7 +31,7 @@ formula, common factor of numerator and denominator), when they are polynomials 
 monomials of sin q and parameters below) equal modulo sin^2 + cos^2 = 1 and s^2 = 1, when
 numerator and denominator are each rewritten by those identities, and when they differ by the
 units of step 5 (``1/cos q``, ``cos q/(1 - sin^2 q)``; ``1/(1 + cos q)``,
-``(1 - cos q)/sin^2 q``). Not guaranteed: a common factor of numerator and denominator that is
+``(1 - cos q)/sin^2 q``; ``cos q/(1 - sin^2 q + cos q)``). Not guaranteed: a common factor of numerator and denominator that is
 visible only modulo sin^2 + cos^2 = 1 (``m h / ((2 + cos a) h)`` with h = 1 + sin a + cos a,
 both products expanded and cos^2 a rewritten as 1 - sin^2 a), which only a gcd in the quotient
 ring would see. The form is
@@ -409,43 +410,68 @@ def _settled(fraction: Fraction) -> Fraction:
 
     The polynomial gcd of step 4 does not see factors that cancel only modulo
     sin^2 q + cos^2 q = 1: cos q / (1 - sin^2 q) and 1 / cos q, or 1 / (1 + cos q) and
-    (1 - cos q) / sin^2 q, are reduced and coprime as polynomials. For each angle, in order:
-    a factor 1 +- cos q of Q becomes sin^2 q (P times 1 -+ cos q), a factor 1 +- sin q becomes
-    cos^2 q (P times 1 -+ sin q), every cos^2 q = 1 - sin^2 q of Q is kept as a power of cos q
-    (the one place where Q is not reduced), and cos q is cancelled from P wherever it divides P
-    modulo the ideal (P0 + P1 cos q with P0 = (1 - sin^2 q) R gives P1 + R cos q). Each step
-    multiplies P and Q by one factor or divides both by one: an identity.
+    (1 - cos q) / sin^2 q, are reduced and coprime as polynomials. For each angle, in order,
+    Q becomes sin^m q cos^n q Q'' with no factor sin q, cos q, 1 +- cos q or 1 +- sin q left in
+    Q'' modulo the ideal: cos q and 1 +- sin q (P times 1 -+ sin q) go to the power of cos q,
+    1 +- cos q (P times 1 -+ cos q) to the power of sin q; then sin q and cos q are cancelled
+    from P where they divide it modulo the ideal. The power of cos q is the one place where Q
+    is not reduced. Each step multiplies P and Q by one factor or divides both by one.
     """
     numer, denom, pairs, signs = fraction.numer, fraction.denom, fraction.pairs, fraction.signs
     ring = numer.ring
     one = ring.one
     if denom.is_ground or not pairs:
         return fraction
-    cos_powers = [0] * ring.ngens
-
-    def divided(poly, factor):
-        quotient, remainder = poly.div(factor)
-        return None if remainder else quotient
+    powers = [0] * ring.ngens
 
     for c, s in pairs:
         C, S = ring.gens[c], ring.gens[s]
-        for factor, conjugate, square in ((one + C, one - C, S**2), (one - C, one + C, S**2)):
-            while (quotient := divided(denom, factor)) is not None:
-                numer, denom = _reduce(numer * conjugate, pairs, signs), _reduce(quotient * square, pairs, signs)
-        while (quotient := divided(denom, one - S**2)) is not None:
-            denom, cos_powers[c] = quotient, cos_powers[c] + 2
-        for factor, conjugate in ((one + S, one - S), (one - S, one + S)):
-            while (quotient := divided(denom, factor)) is not None:
-                numer, denom, cos_powers[c] = _reduce(numer * conjugate, pairs, signs), quotient, cos_powers[c] + 2
-        while (quotient := divided(denom, C)) is not None:
-            denom, cos_powers[c] = quotient, cos_powers[c] + 1
-        while cos_powers[c] > 0 and numer:
-            low = divided(numer.coeff_wrt(C, 0), one - S**2)
-            if low is None:
-                break
-            numer, cos_powers[c] = numer.coeff_wrt(C, 1) + C * low, cos_powers[c] - 1
+
+        def by_unit(poly, conjugate, square, C=C, S=S):  # poly / unit = poly * conjugate / square, or None
+            # the unit vanishes at one point of the circle (1 + cos q at cos q = -1, sin q = 0): poly must too
+            zero = [(C, conjugate.coeff(C)), (S, 0)] if square == "sin" else [(S, conjugate.coeff(S)), (C, 0)]
+            if poly.evaluate(zero):
+                return None
+            return _by_square(_reduce(poly * conjugate, pairs, signs), square, C, S)
+
+        changed = True
+        while changed:
+            changed = False
+            while (quotient := _exact(denom, S)) is not None:
+                denom, powers[s], changed = quotient, powers[s] + 1, True
+            while (quotient := _by_cos(denom, C, S)) is not None:
+                denom, powers[c], changed = quotient, powers[c] + 1, True
+            for conjugate, square in ((one - C, "sin"), (one + C, "sin"), (one - S, "cos"), (one + S, "cos")):
+                quotient = by_unit(denom, conjugate, square)  # a unit 1 +- cos q, 1 +- sin q of Q
+                if quotient is not None:
+                    numer, denom, changed = _reduce(numer * conjugate, pairs, signs), quotient, True
+                    powers[s if square == "sin" else c] += 2
+        while powers[s] > 0 and (quotient := _exact(numer, S)) is not None:
+            numer, powers[s] = quotient, powers[s] - 1
+        while powers[c] > 0 and numer and (quotient := _by_cos(numer, C, S)) is not None:
+            numer, powers[c] = quotient, powers[c] - 1
     common = numer.gcd(denom)
     numer, denom = numer.exquo(common), denom.exquo(common)
-    denom = denom * ring({tuple(cos_powers): ring.domain.one})
+    denom = denom * ring({tuple(powers): ring.domain.one})
     numer, denom = _integral(numer, denom)
     return Fraction(numer, denom, pairs, signs)
+
+
+def _exact(poly, factor):
+    """poly / factor when it divides exactly (as polynomials), else None."""
+    quotient, remainder = poly.div(factor)
+    return None if remainder else quotient
+
+
+def _by_cos(poly, C, S):
+    """poly / cos q modulo the ideal, or None: (X0 + X1 C) / C = X1 + C X0 / (1 - S^2)."""
+    low = _exact(poly.coeff_wrt(C, 0), poly.ring.one - S**2)
+    return None if low is None else poly.coeff_wrt(C, 1) + C * low
+
+
+def _by_square(poly, square: str, C, S):
+    """poly / cos^2 q (``square == "cos"``) or / sin^2 q modulo the ideal, or None."""
+    if square == "cos":
+        once = _by_cos(poly, C, S)
+        return None if once is None else _by_cos(once, C, S)
+    return _exact(poly, S**2)

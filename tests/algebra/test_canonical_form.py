@@ -129,6 +129,7 @@ def test_the_issue_example_is_settled():
         (sp.sin(b) ** 2 / (1 + sp.cos(b)), 1 - sp.cos(b)),
         (m / (m * sp.cos(b) ** 2 + 1), m / (m - m * sp.sin(b) ** 2 + 1)),
         (1 / (sp.sin(b) * sp.cos(b)), 2 / sp.sin(2 * b)),
+        (sp.cos(a) / (sp.cos(a) ** 2 + sp.cos(a)), sp.cos(a) / (1 - sp.sin(a) ** 2 + sp.cos(a))),  # seed 2 found it
     ],
 )
 def test_equal_fractions_through_trigonometric_units_read_the_same(first, second):
