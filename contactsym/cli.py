@@ -79,13 +79,20 @@ def derivation_chain(name) -> str:
     lines += [
         "",
         "for every admissible contact law:",
-        f"  stable where   {st.robustly_stable}",
-        f"  unstable where {st.robustly_unstable}",
-        f"  law-dependent where {st.law_dependent}",
+        f"  stable where   {_verdict_text(st.robustly_stable)}",
+        f"  unstable where {_verdict_text(st.robustly_unstable)}",
+        f"  law-dependent where {_verdict_text(st.law_dependent)}",
     ]
+    if st.k >= 3 and st.A.free_symbols and st.undecided != sp.false:
+        lines.append(f"  undecided where {st.undecided}")
     if st.hopf_frequency is not None:
         lines.append(f"Hopf frequency omega (stretched time) = {st.hopf_frequency}")
     return "\n".join(lines)
+
+
+def _verdict_text(value) -> str:
+    """A robustness statement as text: its region, or "undecided" where it is neither proved nor disproved."""
+    return "undecided" if value is None else str(value)
 
 
 # --- conditions -------------------------------------------------------------------------------

@@ -17,10 +17,25 @@ and the signs by ``s^2 = 1``; nothing else ties them. :func:`canonical` uses exa
    criterion the generators are a Groebner basis, and the remainder on division by a
    Groebner basis is unique. Sign symbols in Q are moved up (1/s = s).
 4. P/Q is cancelled by its polynomial gcd and its sign fixed (Q's leading coefficient > 0).
+5. (:func:`canonical`) The trigonometric units of Q are put in one place: Q becomes
+   sin^m q cos^n q Q'' with no factor sin q, cos q, 1 +- cos q, 1 +- sin q of Q'' modulo the
+   ideal (1 +- cos q becomes sin^2 q, 1 +- sin q cos^2 q, P times the conjugate), and sin q,
+   cos q are cancelled from P where they divide P modulo the ideal (``_settled``). A result presented in multiple angles is
+   read once more, until it reads the same (a Fourier form expands to other polynomials,
+   whose gcd can see more).
 
-Two expressions equal as functions of the angles are equal after step 3 when they are
-polynomials; for fractions the form is canonical up to factors that cancel only modulo the
-ideal, which the gcd of step 4 does not see. It is always *correct*: each step is an identity.
+What is guaranteed. :func:`canonical` is idempotent (step 5 returns a form that reads back to
+itself). Two inputs give the same output when they are equal as rational functions of
+independent sin q, cos q (any expansion, factoring, common denominator, multiple-angle
+formula, common factor of numerator and denominator), when they are polynomials (or have only
+monomials of sin q and parameters below) equal modulo sin^2 + cos^2 = 1 and s^2 = 1, when
+numerator and denominator are each rewritten by those identities, and when they differ by the
+units of step 5 (``1/cos q``, ``cos q/(1 - sin^2 q)``; ``1/(1 + cos q)``,
+``(1 - cos q)/sin^2 q``; ``cos q/(1 - sin^2 q + cos q)``). Not guaranteed: a common factor of numerator and denominator that is
+visible only modulo sin^2 + cos^2 = 1 (``m h / ((2 + cos a) h)`` with h = 1 + sin a + cos a,
+both products expanded and cos^2 a rewritten as 1 - sin^2 a), which only a gcd in the quotient
+ring would see. The form is
+always *correct*: each step is an identity.
 
 For presentation, P and the non-monomial part of Q are written either as polynomials in
 ``sin q_i``, ``cos q_i`` or as Fourier sums ``sum a_k cos(k.q) + b_k sin(k.q)`` (multiple
@@ -353,6 +368,10 @@ def _integral(numer, denom):
     return numer, denom
 
 
+#: Re-readings of a fraction's presented form before it is returned (see :func:`canonical`).
+_PASSES = 4
+
+
 def canonical(expr: sp.Expr) -> sp.Expr:
     """``expr`` in the canonical rational form (see the module docstring).
 
@@ -371,14 +390,33 @@ def canonical(expr: sp.Expr) -> sp.Expr:
         # a polynomial over monomial denominators in sin q, cos q of plain angles: expanding and
         # reducing term by term gives the same normal form, without building a fraction field
         return reduce_signs(reduce_trig(sp.expand(expr)))
-    return to_fraction(expr).as_expr()
+    result = _settled(to_fraction(expr)).as_expr()
+    if not any(_integer_combination(f.args[0]) for f in result.atoms(sp.sin, sp.cos)):
+        return result  # presented as reduced polynomials: re-reading gives the same P and Q
+    # a Fourier presentation (cos(2 q), cos(q1 - q2)) re-read expands to other polynomials, whose gcd
+    # can see a factor that cancels only modulo sin^2 + cos^2 = 1: read it again until nothing changes
+    seen = [result]
+    for _ in range(_PASSES):
+        again = _settled(to_fraction(result)).as_expr()
+        if again == result:
+            return result
+        if again in seen:  # a cycle: its first member in a fixed order, whichever one we entered it by
+            cycle = seen[seen.index(again) :]
+            return min(cycle, key=lambda e: (sp.count_ops(e), sp.default_sort_key(e)))
+        seen.append(again)
+        result = again
+    return result
 
 
 def _laurent_in_plain_angles(expr: sp.Expr) -> bool:
-    """No denominator but powers of generators, and sin/cos only of plain angles."""
+    """No denominator but powers of generators other than cosines, and sin/cos only of plain angles."""
     for node in sp.preorder_traversal(expr):
-        if node.is_Pow and node.exp.is_negative and (node.base.is_Add or node.base.is_Mul):
-            return False
+        if (
+            node.is_Pow
+            and node.exp.is_negative
+            and (node.base.is_Add or node.base.is_Mul or isinstance(node.base, sp.cos))
+        ):
+            return False  # a power of cos q below: cos^2 q = 1 - sin^2 q may cancel with it (see _settled)
         if isinstance(node, (sp.sin, sp.cos)) and not _is_angle(node.args[0]):
             return False
         if node.is_Pow and not node.exp.is_Integer:
@@ -386,5 +424,77 @@ def _laurent_in_plain_angles(expr: sp.Expr) -> bool:
     return True
 
 
-# 0.1's name, kept (it warns): it shadowed the standard fractions.Fraction
+def _settled(fraction: TrigFraction) -> TrigFraction:
+    """P/Q with the trigonometric units of Q in one place, so that equal fractions read the same.
+
+    The polynomial gcd of step 4 does not see factors that cancel only modulo
+    sin^2 q + cos^2 q = 1: cos q / (1 - sin^2 q) and 1 / cos q, or 1 / (1 + cos q) and
+    (1 - cos q) / sin^2 q, are reduced and coprime as polynomials. For each angle, in order,
+    Q becomes sin^m q cos^n q Q'' with no factor sin q, cos q, 1 +- cos q or 1 +- sin q left in
+    Q'' modulo the ideal: cos q and 1 +- sin q (P times 1 -+ sin q) go to the power of cos q,
+    1 +- cos q (P times 1 -+ cos q) to the power of sin q; then sin q and cos q are cancelled
+    from P where they divide it modulo the ideal. The power of cos q is the one place where Q
+    is not reduced. Each step multiplies P and Q by one factor or divides both by one.
+    """
+    numer, denom, pairs, signs = fraction.numer, fraction.denom, fraction.pairs, fraction.signs
+    ring = numer.ring
+    one = ring.one
+    if denom.is_ground or not pairs:
+        return fraction
+    powers = [0] * ring.ngens
+
+    for c, s in pairs:
+        C, S = ring.gens[c], ring.gens[s]
+
+        def by_unit(poly, conjugate, square, C=C, S=S):  # poly / unit = poly * conjugate / square, or None
+            # the unit vanishes at one point of the circle (1 + cos q at cos q = -1, sin q = 0): poly must too
+            zero = [(C, conjugate.coeff(C)), (S, 0)] if square == "sin" else [(S, conjugate.coeff(S)), (C, 0)]
+            if poly.evaluate(zero):
+                return None
+            return _by_square(_reduce(poly * conjugate, pairs, signs), square, C, S)
+
+        changed = True
+        while changed:
+            changed = False
+            while (quotient := _exact(denom, S)) is not None:
+                denom, powers[s], changed = quotient, powers[s] + 1, True
+            while (quotient := _by_cos(denom, C, S)) is not None:
+                denom, powers[c], changed = quotient, powers[c] + 1, True
+            for conjugate, square in ((one - C, "sin"), (one + C, "sin"), (one - S, "cos"), (one + S, "cos")):
+                quotient = by_unit(denom, conjugate, square)  # a unit 1 +- cos q, 1 +- sin q of Q
+                if quotient is not None:
+                    numer, denom, changed = _reduce(numer * conjugate, pairs, signs), quotient, True
+                    powers[s if square == "sin" else c] += 2
+        while powers[s] > 0 and (quotient := _exact(numer, S)) is not None:
+            numer, powers[s] = quotient, powers[s] - 1
+        while powers[c] > 0 and numer and (quotient := _by_cos(numer, C, S)) is not None:
+            numer, powers[c] = quotient, powers[c] - 1
+    common = numer.gcd(denom)
+    numer, denom = numer.exquo(common), denom.exquo(common)
+    denom = denom * ring({tuple(powers): ring.domain.one})
+    numer, denom = _integral(numer, denom)
+    return TrigFraction(numer, denom, pairs, signs)
+
+
+def _exact(poly, factor):
+    """poly / factor when it divides exactly (as polynomials), else None."""
+    quotient, remainder = poly.div(factor)
+    return None if remainder else quotient
+
+
+def _by_cos(poly, C, S):
+    """poly / cos q modulo the ideal, or None: (X0 + X1 C) / C = X1 + C X0 / (1 - S^2)."""
+    low = _exact(poly.coeff_wrt(C, 0), poly.ring.one - S**2)
+    return None if low is None else poly.coeff_wrt(C, 1) + C * low
+
+
+def _by_square(poly, square: str, C, S):
+    """poly / cos^2 q (``square == "cos"``) or / sin^2 q modulo the ideal, or None."""
+    if square == "cos":
+        once = _by_cos(poly, C, S)
+        return None if once is None else _by_cos(once, C, S)
+    return _exact(poly, S**2)
+
+
+# 0.1's name, kept (it warns): it shadowed the standard fractions.TrigFraction
 __getattr__ = deprecated_names(__name__, {"Fraction": "TrigFraction"}, globals())

@@ -155,7 +155,8 @@ class _Classification(Kernel):
 def _build_classification(scene, grid, values, signs=None):
     setup = setup_for(scene, grid, values)
     st = scene.stability(signs)
-    robust = [st.robustly_stable, st.robustly_unstable, sp.false if st.law_dependent is None else st.law_dependent]
+    # None (undecided at a numeric A) proves nothing: such points get no region (NaN)
+    robust = [sp.false if b is None else b for b in (st.robustly_stable, st.robustly_unstable, st.law_dependent)]
     robust = [setup.prepare(b, "the robust classification (Propositions 3-8)") for b in robust]
     try:
         classifier = _classifier(setup, st.hurwitz, "the Hurwitz conditions (4.7)")

@@ -318,9 +318,10 @@ def classify(scene_or_stability, values: Mapping, *, signs=None, band: float = 1
     stable = 1 if all(s > 0 for s in condition_signs) else (-1 if any(s < 0 for s in condition_signs) else 0)
     region = None
     try:
-        if decide(st.robustly_stable, numbers):
+        # None: neither proved nor disproved at a numeric A (three-valued), so it proves nothing here
+        if st.robustly_stable is not None and decide(st.robustly_stable, numbers):
             region = "robustly stable"
-        elif decide(st.robustly_unstable, numbers):
+        elif st.robustly_unstable is not None and decide(st.robustly_unstable, numbers):
             region = "robustly unstable"
         elif st.law_dependent is not None and decide(st.law_dependent, numbers):
             region = "law-dependent"

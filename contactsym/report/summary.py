@@ -22,8 +22,8 @@ from ..algebra.reductions import known_sign, quotient_sign
 from ..errors import ContactsymError
 from ..mechanism.scene import Scene, paper_equations
 from ..printing.latex_output import tex
-from ..stages.regions import Region
-from ..stages.stability import hurwitz_names
+from ..stages.regions import REGION_NAMES, Region
+from ..stages.stability import UNDECIDED_TEX, hurwitz_names
 from ..validate import cut, instance_of
 from .scene_parts import _count_tag
 
@@ -146,8 +146,12 @@ def _conditions(scene, signs) -> dict:
     }
     if scene.presentation:
         data["presentation"] = {sp.sstr(k): sp.sstr(v) for k, v in scene.presentation.items()}
-    for name, region in scene.regions(signs).items():
-        data["regions"][name] = _entry(region.condition, *paper_equations(scene, name))
+    regions = scene.regions(signs)
+    for name in [*REGION_NAMES, *regions]:
+        if name in regions:
+            data["regions"][name] = _entry(regions[name].condition, *paper_equations(scene, name))
+        elif getattr(st, REGION_NAMES[name]) is None:  # neither proved nor disproved at this numeric A
+            data["regions"][name] = {"sympy": "undecided", "latex": UNDECIDED_TEX}
     for name, condition in zip(hurwitz_names(st), st.hurwitz):
         key = "coefficient" if name.startswith("p") else "hurwitz"
         entry = {"name": name, **_entry(condition, *paper_equations(scene, key))}

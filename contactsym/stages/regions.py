@@ -104,6 +104,11 @@ def scene_regions(scene, signs=None) -> dict[str, Region]:
             continue
         condition = closed_form(raw, scene, solve_for=getattr(scene, "solve_for", None), signs=signs)
         regions[name] = Region(condition, name=name, description=f"{scene.name}: {attribute}")
+    if stability.k >= 3 and stability.undecided != sp.false:  # k <= 2: only det A = 0, where the propositions end
+        statements = ("stable for every law", "unstable for every law", "law-dependent")
+        named = [regions[n].condition for n in statements if n in regions]
+        undecided = sp.Not(sp.Or(*named)) if len(named) == 3 else sp.true  # a numeric A: a statement is undecided
+        regions["undecided"] = Region(undecided, name="undecided", description=f"{scene.name}: no statement proved")
     return regions
 
 

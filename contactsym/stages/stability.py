@@ -33,6 +33,8 @@ from ..errors import SingularJacobianError
 from ..lyapunov.coefficient import first_lyapunov_symbolic
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, tex
 from .linear import lam, linearization_of
+from .verdicts import NAMES as VERDICT_NAMES
+from .verdicts import Verdict, classification_verdicts, with_point_decision
 
 if TYPE_CHECKING:
     from ..robustness.classify import Robustness
@@ -67,6 +69,10 @@ _STATEMENTS = (
 )
 
 
+#: How a statement that is neither proved nor disproved prints.
+UNDECIDED_TEX = r"\text{undecided}"
+
+
 def robustness_regions(A: sp.Matrix) -> dict:
     """:func:`contactsym.robustness.classify.regions`, imported when first needed (k >= 3): it brings
     scipy.optimize, a second of import time that scenes with k <= 2 never pay."""
@@ -87,14 +93,19 @@ class Stability(LatexReprMixin):
     ----------
     hurwitz : list
         Expressions that are all > 0 exactly when (4.5) is asymptotically stable.
-    robustly_stable, robustly_unstable : sympy Boolean
-        Stable (unstable) for every admissible law (1.5).
-    law_dependent : sympy Boolean
-        Stable for some laws and unstable for others (for k >= 3 a sufficient region).
+    robustly_stable, robustly_unstable : sympy Boolean or None
+        Stable (unstable) for every admissible law (1.5). Three-valued as SymPy's logic: for a
+        numeric A ``true`` where proved, ``false`` where disproved, None where undecided (it
+        agrees with ``robustness``); for a symbolic A the region where it is proved, and
+        ``verdicts`` says where it is disproved.
+    law_dependent : sympy Boolean or None
+        Stable for some laws and unstable for others (for k >= 3 a sufficient region), three-valued alike.
+    verdicts : dict of Verdict
+        The three statements by attribute name, each with its proved and disproved regions.
     robustness : Robustness or None
         For a numeric A and k >= 3: the point decision with its certificate or witness laws.
     undecided : sympy Boolean
-        Where the propositions say nothing (det A = 0 for k <= 2).
+        Where no statement is proved (det A = 0 for k <= 2).
     hopf : sympy Boolean
         Delta_(n-1) = 0 with the other Hurwitz conditions positive.
     hopf_frequency : sympy expression or None
@@ -138,7 +149,13 @@ class Stability(LatexReprMixin):
         return self.routh_hurwitz.conditions
 
     @cached_property
+    def _closed(self) -> dict | None:
+        """The closed-form regions of :func:`contactsym.robustness.classify.regions` (k >= 3)."""
+        return robustness_regions(self.A) if self.k >= 3 else None
+
+    @cached_property
     def _classification(self) -> tuple:
+        """The regions where each statement is proved (Propositions 3-8 and the closed forms)."""
         A, det = self.A, self.linearization.det_A
         diagonal = [A[i, i] for i in range(self.k)]
         if self.k == 1:
@@ -151,23 +168,40 @@ class Stability(LatexReprMixin):
             not_unstable = sp.Or(*[_gt(a) for a in diagonal])
             not_stable = sp.Or(*[sp.Le(a, 0) for a in diagonal], sp.Lt(coupling, 0))
             return stable, unstable, sp.And(_gt(det), not_unstable, not_stable)
-        closed = robustness_regions(A)
+        closed = self._closed
         unstable = sp.Or(sp.Lt(det, 0), sp.And(*[sp.Lt(a, 0) for a in diagonal]), closed["unstable for every law"])
         symmetric = [sp.Eq(A[i, j], A[j, i]) for i in range(self.k) for j in range(i) if sp.expand(A[i, j] - A[j, i])]
         leading = [_gt(normalize(A[:m, :m].det(method="berkowitz"))) for m in range(1, self.k + 1)]
         return sp.And(*symmetric, *leading), unstable, closed["law-dependent"]
 
     @cached_property
-    def robustly_stable(self) -> sp.Basic:
-        return self._classification[0]
+    def verdicts(self) -> dict[str, Verdict]:
+        """Each robustness statement by attribute name, with where it is proved and where disproved.
+
+        For a numeric A (k >= 3) that the closed forms leave open, the point decision
+        :attr:`robustness` is added as evidence. See :mod:`contactsym.stages.verdicts`.
+        """
+        proved = dict(zip(VERDICT_NAMES, self._classification))
+        verdicts = classification_verdicts(self.k, proved, self._closed)
+        if self.A.free_symbols or all(v.at() is not None for v in verdicts.values()):
+            return verdicts
+        return with_point_decision(verdicts, self.robustness)
+
+    def _verdict(self, name: str) -> sp.Basic | None:
+        verdict = self.verdicts[name]
+        return verdict.proved if self.A.free_symbols else verdict.at()
 
     @cached_property
-    def robustly_unstable(self) -> sp.Basic:
-        return self._classification[1]
+    def robustly_stable(self) -> sp.Basic | None:
+        return self._verdict("robustly_stable")
+
+    @cached_property
+    def robustly_unstable(self) -> sp.Basic | None:
+        return self._verdict("robustly_unstable")
 
     @cached_property
     def law_dependent(self) -> sp.Basic | None:
-        return self._classification[2]
+        return self._verdict("law_dependent")
 
     @cached_property
     def robustness(self) -> Robustness | None:
@@ -180,12 +214,8 @@ class Stability(LatexReprMixin):
 
     @cached_property
     def undecided(self) -> sp.Basic:
-        decided = [self.robustly_stable, self.robustly_unstable]
-        if self.law_dependent is not None:
-            decided.append(self.law_dependent)
-        if self.robustness is not None and self.robustness.verdict != "undecided":
-            return sp.false
-        return sp.Not(sp.Or(*decided))
+        """Where no statement is proved: a region for a symbolic A, ``true`` or ``false`` for a numeric one."""
+        return sp.Not(sp.Or(*[self.verdicts[name].proved for name in VERDICT_NAMES]))
 
     @cached_property
     def hopf(self) -> sp.Basic:
@@ -229,7 +259,7 @@ class Stability(LatexReprMixin):
                 "Proposition 6 (unstable for every law)": self.robustly_unstable,
                 "Remarks 1-2 (law-dependent, Hopf possible)": self.law_dependent,
             }
-        closed = robustness_regions(self.A)
+        closed = self._closed
         return {
             "Proposition 7 (stable for every law)": self.robustly_stable,
             "Proposition 8 (unstable for every law)": self.robustly_unstable,
@@ -274,8 +304,9 @@ class Stability(LatexReprMixin):
         rows.append(row("hurwitz", ", ".join(names), sp.S.Zero, ">"))
         for key, attribute in _STATEMENTS:
             value = getattr(self, attribute)
-            if value is not None:
-                rows.append(row(key, r"\text{" + key + "}", show(value), ":"))
+            rows.append(row(key, r"\text{" + key + "}", UNDECIDED_TEX if value is None else show(value), ":"))
+        if self.k >= 3 and self.A.free_symbols and self.undecided != sp.false:
+            rows.append(row("undecided", r"\text{undecided}", show(self.undecided), ":"))
         if self.hopf_frequency is not None:
             rows.append(row("hopf frequency", r"\omega", show(self.hopf_frequency)))
         return tuple(rows) + robustness_formulas(self.robustness)

@@ -324,12 +324,13 @@ def test_numeric_scene_agrees_with_symbolic_scene(k, data):
     numeric = user_scene(A).stability()
     assert numeric.A == A
     for name in ("robustly_stable", "robustly_unstable", "law_dependent"):
-        exact, substituted = getattr(numeric, name), getattr(symbolic_stability, name)
-        if substituted is None:
-            assert exact is None
-        else:
+        exact = getattr(numeric, name)
+        at_point = symbolic_stability.verdicts[name].at(values)  # three-valued at the point
+        if k <= 2:  # Propositions 3 and 6 decide every det A != 0
             assert exact in (sp.true, sp.false), f"{name} = {exact} is not decided for numeric A"
-            assert bool(exact) == truth(substituted, values)
+            assert exact == at_point == truth(getattr(symbolic_stability, name), values)
+        elif at_point is not None:  # what the closed forms decide, the numeric A decides alike
+            assert exact == at_point, f"{name}: {exact} for numeric A, {at_point} from the symbolic regions"
     lin = numeric.linearization
     law_values = dict(zip(lin.Phi + lin.Psi, law[0] + law[1]))
     ours = [c.xreplace(law_values) for c in numeric.hurwitz]
@@ -483,9 +484,16 @@ def test_k3_law_dependent_is_a_region_and_undecided_is_boolean():
     spd = {**values, A[0, 1]: -1, A[1, 2]: -1}  # [[2, -1, 0], [-1, 2, -1], [0, -1, 2]]: SPD
     assert truth(stability.robustly_stable, spd)
     assert not truth(stability.undecided, spd)
+    # three-valued at the point: a nested sequence of positive minors disproves "unstable for every law",
+    # nothing in closed form decides the other two
+    verdicts = stability.verdicts
+    assert verdicts["robustly_unstable"].at(values) == sp.false
+    assert verdicts["robustly_stable"].at(values) is None
+    assert verdicts["law_dependent"].at(values) is None
     numeric = user_scene(B).stability()
-    assert numeric.law_dependent == sp.false
     assert numeric.robustness.verdict == "law-dependent"  # the point decision finds witness laws
+    assert numeric.law_dependent == sp.true  # and the property says so (it once said False)
+    assert numeric.robustly_stable == sp.false and numeric.robustly_unstable == sp.false
     assert numeric.undecided == sp.false
 
 
