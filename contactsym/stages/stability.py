@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING
 import sympy as sp
 
 from ..algebra.basic import normalize
-from ..algebra.hurwitz import Hurwitz, hurwitz_minors
+from ..algebra.hurwitz import EXPAND_TERMS, Hurwitz, expansion_bound, hurwitz_minors
 from ..errors import SingularJacobianError
 from ..hopf.lyapunov import fast_first_lyapunov
 from ..printing.latex_output import Formula, Numbering, _repr_latex, tex
@@ -192,7 +192,10 @@ class Stability:
     def hopf_frequency(self) -> sp.Expr | None:
         if self.k == 1 or self.poly.omega_squared is None:
             return None
-        return sp.sqrt(self.poly.omega_squared)
+        omega_squared = self.poly.omega_squared
+        if expansion_bound(omega_squared) > EXPAND_TERMS:  # kept as N/Delta_(n-3): sqrt would ask each factor's sign
+            return sp.Pow(omega_squared, sp.S.Half, evaluate=False)
+        return sp.sqrt(omega_squared)
 
     @cached_property
     def first_lyapunov(self) -> sp.Expr | None:
