@@ -218,6 +218,14 @@ def _cancelled(expr: sp.Expr) -> sp.Expr:
     return sp.cancel(reduced[0] / reduced[1])
 
 
+def _relation(op, expr: sp.Expr) -> sp.Basic:
+    """``op(expr, 0)``; unevaluated when ``expr`` is long: asking its sign costs seconds
+    (a k = 3 stool's Delta_5 = 0: 2.7 s) and decides nothing."""
+    if expansion_bound(expr) > EXPAND_TERMS:
+        return op(expr, 0, evaluate=False)
+    return op(expr, 0)
+
+
 @dataclass(frozen=True, eq=False)
 class Hurwitz:
     """Hurwitz data of a characteristic polynomial (4.6)-(4.7).
@@ -263,7 +271,7 @@ class Hurwitz:
         if not chosen:
             return sp.false
         others = coefficients + chosen[1:]
-        return sp.And(sp.Eq(chosen[0], 0), *[sp.Gt(c, 0) for c in others])
+        return sp.And(_relation(sp.Eq, chosen[0]), *[_relation(sp.Gt, c) for c in others])
 
     @cached_property
     def omega_squared(self) -> sp.Expr | None:
