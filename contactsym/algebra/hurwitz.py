@@ -43,30 +43,39 @@ EXPAND_TERMS = 400
 
 
 def expansion_bound(expr: sp.Expr) -> int:
-    """An upper bound on the number of terms of ``expr`` expanded (numerator over a common
-    denominator), read off the expression tree without expanding anything.
+    """An upper bound on the number of terms of the numerator of ``expr`` brought over one
+    denominator and expanded, read off the expression tree without expanding anything.
 
-    Sums add, products multiply, a power ``b**e`` takes at most ``C(t + e - 1, e)`` terms for
-    ``t`` terms of ``b``; a denominator counts as if multiplied out; function applications and
-    numbers count one.
+    Each node gives (numerator terms, denominator terms): sums cross-multiply the denominators,
+    products multiply, a power ``b**e`` takes at most ``C(t + e - 1, e)`` terms for ``t`` terms
+    of ``b`` (a negative power swaps the two); function applications and numbers count one.
 
     Examples
     --------
     >>> x, y, z = sp.symbols("x y z")
-    >>> expansion_bound((x + y) * (x + z) + 1), expansion_bound((x + y + z) ** 2 / (x - y))
-    (5, 12)
+    >>> expansion_bound((x + y) * (x + z) + 1), expansion_bound((x + y + z) ** 2 / (x - y) + x)
+    (5, 8)
     """
+    return _bounds(expr)[0]
+
+
+def _bounds(expr: sp.Expr) -> tuple[int, int]:
     if isinstance(expr, sp.Add):
-        return sum(expansion_bound(arg) for arg in expr.args)
+        parts = [_bounds(arg) for arg in expr.args]
+        denominator = math.prod(d for _, d in parts)
+        return sum(n * denominator // d for n, d in parts), denominator
     if isinstance(expr, sp.Mul):
-        bound = 1
-        for arg in expr.args:
-            bound *= expansion_bound(arg)
-        return bound
+        parts = [_bounds(arg) for arg in expr.args]
+        return math.prod(n for n, _ in parts), math.prod(d for _, d in parts)
     if isinstance(expr, sp.Pow) and expr.exp.is_Integer:
-        terms, power = expansion_bound(expr.base), abs(int(expr.exp))
-        return min(terms**power, math.comb(terms + power - 1, power))
-    return 1
+        power = abs(int(expr.exp))
+        n, d = (_power_bound(t, power) for t in _bounds(expr.base))
+        return (n, d) if expr.exp > 0 else (d, n)
+    return 1, 1
+
+
+def _power_bound(terms: int, power: int) -> int:
+    return min(terms**power, math.comb(terms + power - 1, power))
 
 
 def _generic(n: int) -> tuple[sp.Symbol, ...]:
