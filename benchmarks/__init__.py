@@ -17,6 +17,7 @@ BENCHMARKS = (
     "robustness",
     "counts",
     "regions_k3",
+    "closed_forms_k3",
     "hopf_direction",
     "squeal",
 )

@@ -7,22 +7,75 @@ degree for generic coefficients (polynomials with integer coefficients, no divis
 and then evaluated at the given coefficients.
 
 A Hopf point is where ``Delta_(n-1) = 0`` with the other conditions positive; there
-``p(i omega) = 0`` and ``omega^2`` is the common root of the even and odd parts.
+``p(i omega) = 0`` and ``omega^2`` is the common root of the even and odd parts. Generically
+(once per degree) that root is ``omega^2 = N / Delta_(n-3)``: for n = 6,
+``(a_5 Delta_2 - a_1^2 a_6) / Delta_3``, whose denominator is a Liénard–Chipart minor, positive
+on the Hopf set. At the given coefficients it is kept as that quotient in the coefficients p_s
+(no expansion) once its expansion would exceed :data:`EXPAND_TERMS` terms: expanding and
+cancelling a k = 3 frequency with rational numbers in it costs tens of seconds and prints
+ten times longer.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import cache, cached_property
 
 import sympy as sp
 
 from ..printing.latex_output import Formula
+from .reductions import reduce_signs
 
-__all__ = ["hurwitz_matrix", "hurwitz_minors", "lienard_chipart", "hopf_omega_squared", "Hurwitz"]
+__all__ = [
+    "hurwitz_matrix",
+    "hurwitz_minors",
+    "lienard_chipart",
+    "hopf_omega_squared",
+    "expansion_bound",
+    "EXPAND_TERMS",
+    "Hurwitz",
+]
 
 _z = sp.Symbol("z")
-_CANCEL_LIMIT = 2000
+#: Expressions whose expansion may exceed this many terms (:func:`expansion_bound`) are kept as derived.
+EXPAND_TERMS = 400
+
+
+def expansion_bound(expr: sp.Expr) -> int:
+    """An upper bound on the number of terms of the numerator of ``expr`` brought over one
+    denominator and expanded, read off the expression tree without expanding anything.
+
+    Each node gives (numerator terms, denominator terms): sums cross-multiply the denominators,
+    products multiply, a power ``b**e`` takes at most ``C(t + e - 1, e)`` terms for ``t`` terms
+    of ``b`` (a negative power swaps the two); function applications and numbers count one.
+
+    Examples
+    --------
+    >>> x, y, z = sp.symbols("x y z")
+    >>> expansion_bound((x + y) * (x + z) + 1), expansion_bound((x + y + z) ** 2 / (x - y) + x)
+    (5, 8)
+    """
+    return _bounds(expr)[0]
+
+
+def _bounds(expr: sp.Expr) -> tuple[int, int]:
+    if isinstance(expr, sp.Add):
+        parts = [_bounds(arg) for arg in expr.args]
+        denominator = math.prod(d for _, d in parts)
+        return sum(n * denominator // d for n, d in parts), denominator
+    if isinstance(expr, sp.Mul):
+        parts = [_bounds(arg) for arg in expr.args]
+        return math.prod(n for n, _ in parts), math.prod(d for _, d in parts)
+    if isinstance(expr, sp.Pow) and expr.exp.is_Integer:
+        power = abs(int(expr.exp))
+        n, d = (_power_bound(t, power) for t in _bounds(expr.base))
+        return (n, d) if expr.exp > 0 else (d, n)
+    return 1, 1
+
+
+def _power_bound(terms: int, power: int) -> int:
+    return min(terms**power, math.comb(terms + power - 1, power))
 
 
 def _generic(n: int) -> tuple[sp.Symbol, ...]:
@@ -133,7 +186,15 @@ def _generic_omega_squared(n: int) -> sp.Expr | None:
     if odd.degree() < 1:
         return -even.coeff_monomial(1) / even.coeff_monomial(_z)
     s = _first_subresultant(even, odd)
-    return -s.coeff_monomial(1) / s.coeff_monomial(_z)
+    numerator, denominator = -s.coeff_monomial(1), s.coeff_monomial(_z)
+    if n < 4:
+        return numerator / denominator
+    # the subresultant's leading coefficient is +-Delta_(n-3): write omega^2 over that minor
+    minor = _generic_minors(n)[n - 4]
+    sign = sp.cancel(denominator / minor)
+    if sign not in (1, -1):  # pragma: no cover - a property of subresultants, checked for n <= 8 by the tests
+        raise ArithmeticError(f"degree {n}: the subresultant's leading coefficient is not +-Delta_{n - 3}")
+    return sp.Mul(sp.expand(sign * numerator), sp.Pow(minor, -1))
 
 
 def hopf_omega_squared(poly: sp.Poly) -> sp.Expr | None:
@@ -150,8 +211,28 @@ def hopf_omega_squared(poly: sp.Poly) -> sp.Expr | None:
         return None
     values = dict(zip(_generic(poly.degree()), _coefficients(poly)))
     omega_squared = generic.xreplace(values)
-    # cancel is cheap for small scenes and worthless (and slow) for large generic ones
-    return sp.cancel(omega_squared) if sp.count_ops(omega_squared) < _CANCEL_LIMIT else omega_squared
+    if expansion_bound(omega_squared) > EXPAND_TERMS:
+        return reduce_signs(omega_squared)  # N(p)/Delta_(n-3)(p): see the module docstring
+    return _cancelled(omega_squared)
+
+
+def _cancelled(expr: sp.Expr) -> sp.Expr:
+    """``expr`` cancelled, and then s^2 = 1 used in its numerator and denominator (cancelled
+    again when that changed them); small expressions only."""
+    cancelled = sp.cancel(expr)
+    numerator, denominator = sp.fraction(cancelled)
+    reduced = reduce_signs(numerator), reduce_signs(denominator)
+    if reduced == (numerator, denominator):
+        return cancelled
+    return sp.cancel(reduced[0] / reduced[1])
+
+
+def _relation(op, expr: sp.Expr) -> sp.Basic:
+    """``op(expr, 0)``; unevaluated when ``expr`` is long: asking its sign costs seconds
+    (a k = 3 stool's Delta_5 = 0: 2.7 s) and decides nothing."""
+    if expansion_bound(expr) > EXPAND_TERMS:
+        return op(expr, 0, evaluate=False)
+    return op(expr, 0)
 
 
 @dataclass(frozen=True, eq=False)
@@ -206,7 +287,7 @@ class Hurwitz:
         if not chosen:
             return sp.false
         others = coefficients + chosen[1:]
-        return sp.And(sp.Eq(chosen[0], 0), *[sp.Gt(c, 0) for c in others])
+        return sp.And(_relation(sp.Eq, chosen[0]), *[_relation(sp.Gt, c) for c in others])
 
     @cached_property
     def omega_squared(self) -> sp.Expr | None:

@@ -18,7 +18,7 @@ from functools import cached_property
 import sympy as sp
 
 from ..algebra.basic import PaperSymbol, normalize, sign_symbols
-from ..algebra.canonical_form import to_fraction
+from ..algebra.canonical_form import TrigField, TrigFraction, to_fraction
 from ..deprecation import deprecated_property
 from ..errors import ContactsymError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering
@@ -41,21 +41,63 @@ log = logging.getLogger("contactsym")
 lam = PaperSymbol("lambda")
 
 
+class _MinorsInRing:
+    """A = P / D in the polynomial ring of a :class:`TrigField` (P polynomial, D the common
+    denominator), with the minors det(P_(R, C)) by Laplace expansion, memoized and reduced
+    (s^2 = 1, sin^2 + cos^2 = 1) after every product: exact, no rational-function arithmetic."""
+
+    def __init__(self, A: sp.Matrix, extra=()):
+        self.field = TrigField([*A, *extra])
+        ring = self.field.ring
+        entries = [[self.field.element(x) for x in row] for row in A.tolist()]
+        self.denominator = ring.one
+        for row in entries:
+            for x in row:
+                self.denominator = self.denominator.lcm(x.denom) if not x.denom.is_ground else self.denominator
+        scale = ring.domain.one
+        for row in entries:
+            for x in row:
+                if x.denom.is_ground:
+                    scale = ring.domain.lcm(scale, ring.domain.convert(x.denom.LC))
+        self.denominator = self.denominator * scale
+        self.P = [[x.numer * self.denominator.exquo(x.denom) for x in row] for row in entries]
+        self._cache: dict = {}
+
+    def det(self, rows: tuple, cols: tuple):
+        """det P restricted to ``rows`` and ``cols`` (equal lengths), a reduced ring element."""
+        if not rows:
+            return self.field.ring.one
+        key = (rows, cols)
+        if key not in self._cache:
+            total = self.field.ring.zero
+            for i, c in enumerate(cols):
+                entry = self.P[rows[0]][c]
+                if entry:
+                    term = entry * self.det(rows[1:], cols[:i] + cols[i + 1 :])
+                    total = total + term if i % 2 == 0 else total - term
+            self._cache[key] = self.field._reduce_poly(total)
+        return self._cache[key]
+
+    def minor(self, S: tuple):
+        """det(A_S) as a reduced field element."""
+        return self.field.reduce(self.field.field.new(self.det(S, S), self.denominator ** len(S)))
+
+
 def principal_minors(A: sp.Matrix) -> dict[tuple[int, ...], sp.Expr]:
-    """det(A_S) for every subset S of the indices (the empty set gives 1).
+    """det(A_S) for every subset S of the indices (the empty set gives 1), in the canonical form.
 
     Examples
     --------
-    >>> a, b, c, d = sp.symbols("a b c d")
-    >>> principal_minors(sp.Matrix([[a, b], [c, d]]))
-    {(): 1, (0,): a, (1,): d, (0, 1): a*d - b*c}
+    >>> from contactsym.algebra.basic import SignSymbol
+    >>> a, b, s = sp.Symbol("a"), sp.Symbol("b"), SignSymbol("s")
+    >>> principal_minors(sp.Matrix([[a, s], [s, b]]))[(0, 1)]
+    a*b - 1
     """
+    ring = _MinorsInRing(A)
     k = A.rows
-    minors = {(): sp.S.One}
-    for size in range(1, k + 1):
-        for S in itertools.combinations(range(k), size):
-            minors[S] = A.extract(list(S), list(S)).det(method="berkowitz")
-    return minors
+    return {
+        S: ring.field.present(ring.minor(S)) for size in range(k + 1) for S in itertools.combinations(range(k), size)
+    }
 
 
 def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
@@ -64,6 +106,8 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
     When the common denominator of its coefficients is not a monomial but has a known sign
     (``positive`` lists expressions known to be positive, e.g. det M of a Lagrangian
     scene), the polynomial is multiplied by it: the same roots, polynomial coefficients.
+    The sum is formed in a polynomial ring (A = P / D, the minors of P, then one division by
+    D^k), so nothing is expanded as a SymPy expression.
 
     Examples
     --------
@@ -71,6 +115,44 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
     >>> charpoly(sp.Matrix([[a]]), [Phi], [Psi]).as_expr()
     -Phi*a - Psi*a*lambda + lambda**2
     """
+    k = A.rows
+    minors = _MinorsInRing(A, [*Phi, *Psi, lam])
+    field = minors.field
+    law = [field.element(x) for x in (*Phi, *Psi)]
+    if any(not x.denom.is_ground for x in law):  # a law with fractions at the equilibrium: sum as expressions
+        return _charpoly_of_expression(A, Phi, Psi, positive)
+    phi, psi = law[:k], law[k:]
+    ring = field.ring
+    x = ring.gens[ring.symbols.index(lam)]
+    D = minors.denominator
+    # lam Psi_j + Phi_j = (lam psi_j phi'_j + phi_j psi'_j) / c_j with c_j = psi'_j phi'_j numbers
+    law_denominators = [psi[j].denom * phi[j].denom for j in range(k)]
+    total = ring.zero
+    for size in range(k + 1):
+        for S in itertools.combinations(range(k), size):
+            term = minors.det(S, S) * x ** (2 * (k - size)) * D ** (k - size)
+            for j in range(k):
+                factor = (
+                    x * psi[j].numer * phi[j].denom + phi[j].numer * psi[j].denom if j in S else law_denominators[j]
+                )
+                term = field._reduce_poly(term * factor)
+            total += -term if size % 2 else term
+    common = D**k
+    for c in law_denominators:
+        common *= c
+    fraction = field.fraction(field.field.new(field._reduce_poly(total), common))
+    if fraction.denominator_split()[1] != 1:  # not a monomial: as the expression path does it
+        return _charpoly_of_expression(A, Phi, Psi, positive)
+    degree = fraction.numer.degree(x)
+    coefficients = {
+        (d,): TrigFraction(fraction.numer.coeff_wrt(x, d), fraction.denom, fraction.pairs, fraction.signs).as_expr()
+        for d in range(degree + 1)
+    }
+    return sp.Poly.from_dict({d: c for d, c in coefficients.items() if c != 0}, lam)
+
+
+def _charpoly_of_expression(A: sp.Matrix, Phi, Psi, positive) -> sp.Poly:
+    """:func:`charpoly` summed as one SymPy expression and brought to the canonical form."""
     k = A.rows
     total = sp.S.Zero
     for S, minor in principal_minors(A).items():
@@ -143,7 +225,9 @@ class Linearization(LatexReprMixin):
 
     @cached_property
     def det_A(self) -> sp.Expr:
-        return normalize(self.A.det(method="berkowitz"))
+        """det A in the canonical form, by fraction-free expansion in a polynomial ring."""
+        minors = _MinorsInRing(self.A)
+        return minors.field.present(minors.minor(tuple(range(self.A.rows))))
 
     @cached_property
     def u_star(self) -> dict:

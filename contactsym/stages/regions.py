@@ -20,7 +20,11 @@ equilibrium counts; this module presents a scene's conditions and wraps them as 
 Size limits. Past :data:`RAW_OPS` operations a relation is kept exactly as derived (step 1
 only); past :data:`FACTOR_TERMS` terms a numerator is kept unfactored (see
 :mod:`contactsym.inequalities.closed`, where the numbers for a fully symbolic k = 3 scene are).
-Both only skip rewriting: the region means the same. ``closed_form`` reads the two names
+A relation that is short as derived but whose expansion may exceed :data:`RAW_TERMS` terms
+(:func:`contactsym.algebra.hurwitz.expansion_bound`, read off the tree without expanding) is
+kept as derived too: a k = 3 stool's Delta_3 > 0 is 1110 operations as derived and 887 terms
+(8040 operations, 12 s of rewriting) expanded. The built-in scenes stay below 500.
+All three only skip rewriting: the region means the same. ``closed_form`` reads the names
 here at each call, so a caller (a benchmark of the old way, a test) may change them.
 
 A :class:`Region` wraps such a Boolean: ``&``, ``|``, ``~``, ``latex()``, vectorised
@@ -35,9 +39,11 @@ from functools import cached_property
 
 import numpy as np
 import sympy as sp
+from sympy.core.relational import Relational
 
 from .. import inequalities
 from ..algebra.basic import known_sign
+from ..algebra.hurwitz import expansion_bound
 from ..errors import SceneError
 from ..parse import sympy_only
 from ..printing.latex_output import tex
@@ -49,6 +55,8 @@ __all__ = ["Region", "closed_form", "known_sign", "scene_regions", "REGION_NAMES
 RAW_OPS = inequalities.RAW_OPS
 #: Numerators with more terms are not factored: see the module docstring.
 FACTOR_TERMS = inequalities.FACTOR_TERMS
+#: Relations whose expansion may have more terms are kept as derived: see the module docstring.
+RAW_TERMS = 2000
 
 
 def closed_form(condition, scene=None, solve_for: sp.Symbol | None = None, signs=None) -> sp.Basic:
@@ -75,7 +83,29 @@ def closed_form(condition, scene=None, solve_for: sp.Symbol | None = None, signs
         raise SceneError(f"condition = {shorten(condition)} must be a SymPy condition such as mu < 1.")
     positive = tuple(getattr(scene, "positive_expressions", ()))
     condition = scene.present(condition, signs) if scene is not None else sympy_only(condition, "the condition")
-    return inequalities.closed_form(condition, positive, solve_for, raw_ops=RAW_OPS, factor_terms=FACTOR_TERMS)
+    condition, kept = _set_aside(condition)
+    if condition in (sp.true, sp.false) or all(s in kept for s in condition.free_symbols):
+        return condition.xreplace(kept)
+    reduced = inequalities.closed_form(condition, positive, solve_for, raw_ops=RAW_OPS, factor_terms=FACTOR_TERMS)
+    return reduced.xreplace(kept)
+
+
+def _set_aside(condition: sp.Basic) -> tuple[sp.Basic, dict]:
+    """``condition`` with each relation whose expansion may exceed :data:`RAW_TERMS` terms
+    replaced by a Boolean stand-in, and {stand-in: relation}."""
+    kept = {}
+
+    def large(node):
+        return isinstance(node, Relational) and expansion_bound(node.lhs - node.rhs) > RAW_TERMS
+
+    def stand_in(node):
+        symbol = sp.Dummy(f"relation{len(kept)}")
+        kept[symbol] = node
+        return symbol
+
+    if isinstance(condition, Relational):
+        return (stand_in(condition), kept) if large(condition) else (condition, kept)
+    return condition.replace(large, stand_in), kept
 
 
 #: The regions every scene offers, from its stability object.

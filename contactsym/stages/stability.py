@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING
 import sympy as sp
 
 from ..algebra.basic import normalize
-from ..algebra.hurwitz import Hurwitz, hurwitz_minors
+from ..algebra.hurwitz import EXPAND_TERMS, Hurwitz, expansion_bound, hurwitz_minors
 from ..deprecation import deprecated_property
 from ..errors import SingularJacobianError
 from ..lyapunov.coefficient import first_lyapunov_symbolic
@@ -227,7 +227,10 @@ class Stability(LatexReprMixin):
     def hopf_frequency(self) -> sp.Expr | None:
         if self.k == 1 or self.routh_hurwitz.omega_squared is None:
             return None
-        return sp.sqrt(self.routh_hurwitz.omega_squared)
+        omega_squared = self.routh_hurwitz.omega_squared
+        if expansion_bound(omega_squared) > EXPAND_TERMS:  # kept as N/Delta_(n-3): sqrt would ask each factor's sign
+            return sp.Pow(omega_squared, sp.S.Half, evaluate=False)
+        return sp.sqrt(omega_squared)
 
     @cached_property
     def first_lyapunov(self) -> sp.Expr | None:

@@ -331,3 +331,88 @@ def test_labels_name_each_lienard_chipart_condition(n, kinds):
         else:  # the leading principal minor of order m, computed here directly
             expected = matrix[:index, :index].det()
         assert sp.expand(condition - expected) == 0
+
+
+# --- omega^2 over Delta_(n-3); expansion_bound ---------------------------------------------
+
+
+@pytest.mark.parametrize("n", [4, 5, 6])
+def test_generic_omega_squared_is_a_root_of_p_on_delta_n_minus_1(n):
+    """Symbolic identity: for omega^2 = N / Delta_(n-3), the form the library returns, the
+    numerators of Re p(i omega) and Im p(i omega) / omega are multiples of Delta_(n-1): they
+    vanish on the Hopf set. (One polynomial is a Groebner basis of its ideal, so ``reduced``
+    decides divisibility.)"""
+    p = generic_poly(n)
+    c = generic(n)
+    minors = [sp.expand(m) for m in hurwitz_minors(p)]
+    w2 = hopf_omega_squared(p)
+    assert 0 in (sp.expand(sp.fraction(w2)[1] - minors[n - 4]), sp.expand(sp.fraction(w2)[1] + minors[n - 4]))
+    z = sp.Symbol("z")
+    even = sum((-1) ** i * c[n - 2 * i] * z**i for i in range(n // 2 + 1))
+    odd = sum((-1) ** i * c[n - 2 * i - 1] * z**i for i in range((n - 1) // 2 + 1))
+    for part in (even, odd):
+        numerator = sp.fraction(sp.together(part.xreplace({z: w2})))[0]
+        assert sp.reduced(sp.expand(numerator), [minors[n - 2]], *c)[1] == 0
+
+
+def test_generic_omega_squared_equals_the_subresultant_root():
+    """The quotient over Delta_(n-3) is the root of SymPy's own first subresultant, exactly."""
+    z = sp.Symbol("z")
+    for n in range(4, 9):
+        c = generic(n)
+        even = sp.Poly(sum((-1) ** i * c[n - 2 * i] * z**i for i in range(n // 2 + 1)), z)
+        odd = sp.Poly(sum((-1) ** i * c[n - 2 * i - 1] * z**i for i in range((n - 1) // 2 + 1)), z)
+        linear = [s for s in sp.subresultants(even, odd) if sp.Poly(s, z).degree() == 1][0]
+        root = -sp.Poly(linear, z).coeff_monomial(1) / sp.Poly(linear, z).coeff_monomial(z)
+        assert sp.cancel(hopf_omega_squared(generic_poly(n)) - root) == 0
+
+
+_symbols = sp.symbols("u v w")
+
+
+@st.composite
+def expressions(draw, depth=3):
+    if depth == 0 or draw(st.integers(0, 3)) == 0:
+        return draw(st.sampled_from([*_symbols, sp.Integer(2), sp.Rational(1, 3), sp.sin(_symbols[0])]))
+    kind = draw(st.sampled_from(["add", "mul", "pow", "div"]))
+    a, b = draw(expressions(depth - 1)), draw(expressions(depth - 1))
+    if kind == "add":
+        return a + b
+    if kind == "mul":
+        return a * b
+    if kind == "pow":
+        return a ** draw(st.integers(2, 3))
+    return a / (b + _symbols[2])
+
+
+@settings(max_examples=60, deadline=None)
+@given(expressions())
+def test_expansion_bound_bounds_the_expanded_numerator(expr):
+    from contactsym.algebra.hurwitz import expansion_bound
+
+    numerator = sp.fraction(sp.together(expr))[0]
+    assert len(sp.Add.make_args(sp.expand(numerator))) <= expansion_bound(expr)
+
+
+def test_long_omega_squared_is_kept_as_derived_and_equal():
+    """Past EXPAND_TERMS the quotient is not cancelled; it is the same function as the cancelled one."""
+    from contactsym.algebra import hurwitz
+
+    rng = np.random.default_rng(5)
+    y = sp.symbols("y1:7")
+    coefficients = [1] + [
+        sum(int(rng.integers(1, 9)) * y[int(rng.integers(6))] * y[int(rng.integers(6))] for _ in range(8))
+        for _ in range(6)
+    ]
+    p = sp.Poly(sum(cf * x ** (6 - i) for i, cf in enumerate(coefficients)), x)
+    kept = hopf_omega_squared(p)
+    assert hurwitz.expansion_bound(kept) > hurwitz.EXPAND_TERMS
+    numerator, denominator = sp.fraction(kept)
+    assert 0 in (
+        sp.expand(denominator - hurwitz_minors(p)[2]),
+        sp.expand(denominator + hurwitz_minors(p)[2]),
+    )  # +-Delta_3
+    for _ in range(5):
+        point = {s: sp.Rational(int(rng.integers(1, 30)), int(rng.integers(1, 7))) for s in y}
+        expected = sp.cancel(hurwitz._generic_omega_squared(6).xreplace(dict(zip(hurwitz._generic(6), p.all_coeffs()))))
+        assert kept.xreplace(point) == expected.xreplace(point)

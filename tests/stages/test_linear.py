@@ -307,3 +307,59 @@ def test_user_scene_with_kelvin_voigt_contacts():
     lin = user_scene(A, [cs.KelvinVoigt(k1, d1), cs.KelvinVoigt(3, 2)]).linearization()
     assert lin.Phi == (-k1, -3) and lin.Psi == (-d1, -2)
     assert lin.jacobian == block_matrix(A, (-k1, -3), (-d1, -2))
+
+
+# --- the polynomial-ring path: equal to the Berkowitz determinants in the canonical form ----------
+
+_s1, _s2 = sign_symbols(2)
+_m, _x, _th = sp.Symbol("m", positive=True), sp.Symbol("x", real=True), sp.Symbol("theta", positive=True)
+_entries = st.sampled_from(
+    [
+        sp.Integer(0),
+        sp.Rational(3, 7),
+        -sp.Rational(4317, 10000),
+        _s1 * _x / _m,
+        _s2 + _x,
+        (_s1 * _x - 1) / _m**2,
+        sp.cos(_th) / _m,
+        sp.sin(_th) * _s2 - sp.Rational(1, 3),
+        _x**2 - _s1 * _s2,
+    ]
+)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(1, 3).flatmap(lambda k: st.lists(_entries, min_size=k * k, max_size=k * k)))
+def test_ring_minors_and_charpoly_equal_the_berkowitz_path(entries):
+    """Principal minors, det A and (4.6) computed in the polynomial ring equal, exactly, the
+    canonical form of SymPy's Berkowitz determinants and of the summed expression."""
+    from contactsym.stages.linear import _charpoly_of_expression
+
+    k = int(round(len(entries) ** 0.5))
+    A = sp.Matrix(k, k, entries)
+    minors = principal_minors(A)
+    for S, minor in minors.items():
+        berkowitz = A.extract(list(S), list(S)).det(method="berkowitz") if S else sp.S.One
+        assert minor == normalize(berkowitz), S
+    Phi, Psi = sp.symbols(f"Phi_1:{k + 1}"), sp.symbols(f"Psi_1:{k + 1}")
+    assert charpoly(A, Phi, Psi) == _charpoly_of_expression(A, Phi, Psi, ())
+    rng = np.random.default_rng(len(entries))
+    p = charpoly(A, Phi, Psi)
+    for _ in range(2):  # and the block determinant (4.5) at a random point, with s = +-1
+        point = {
+            _s1: int(rng.choice([-1, 1])),
+            _s2: int(rng.choice([-1, 1])),
+            _x: sp.Rational(int(rng.integers(-9, 9)), 4),
+        }
+        point |= {_m: sp.Rational(int(rng.integers(1, 9)), 3), _th: sp.Rational(int(rng.integers(1, 9)), 5)}
+        point |= {v: -sp.Rational(int(rng.integers(1, 9)), 2) for v in (*Phi, *Psi)}
+        M = block_matrix(A.xreplace(point), [v.xreplace(point) for v in Phi], [v.xreplace(point) for v in Psi])
+        at = {lam: sp.Rational(3, 2)}
+        direct = (lam * sp.eye(2 * k) - M).det(method="berkowitz").xreplace(at)  # monic, as p
+        assert abs(sp.N(p.as_expr().xreplace(point).xreplace(at) - direct, 40)) < 1e-30
+
+
+def test_linearization_det_a_equals_the_berkowitz_canonical_form():
+    for name in cs.scene_names():
+        lin = cs.scene(name).linearization()
+        assert lin.det_A == normalize(lin.A.det(method="berkowitz")), name

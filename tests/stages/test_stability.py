@@ -634,3 +634,96 @@ def test_the_hurwitz_conditions_cite_the_equation_of_their_stage():
     a, b = sp.symbols("a b")
     plain = Hurwitz(sp.Poly(cs.lam**2 + a * cs.lam + b, cs.lam)).formulas()
     assert [f.rhs for f in plain] == [a, b] and not any(f.paper for f in plain)  # no stage, no number
+
+
+# --- the k = 3 stool: Hopf frequency against the subresultant root and the eigenvalues ----------
+
+from tests.stool import h as stool_h  # noqa: E402
+from tests.stool import mu as stool_mu  # noqa: E402
+from tests.stool import stool_scene  # noqa: E402
+
+
+@cache
+def _stool():
+    stability = stool_scene().stability()
+    return stability, stability.hurwitz, stability.hopf_frequency
+
+
+def _old_omega_squared(poly):
+    """omega^2 as it was derived before: the root of SymPy's degree-1 subresultant of the even
+    and odd parts of p(i omega), cancelled (independent of the library's Hurwitz code)."""
+    z = sp.Symbol("z")
+    a = poly.all_coeffs()[::-1]  # a[i]: the coefficient of lambda**i
+    n = poly.degree()
+    even = sp.Poly(sum((-1) ** i * a[2 * i] * z**i for i in range(n // 2 + 1)), z)
+    odd = sp.Poly(sum((-1) ** i * a[2 * i + 1] * z**i for i in range((n - 1) // 2 + 1)), z)
+    linear = sp.Poly([s for s in sp.subresultants(even, odd) if sp.Poly(s, z).degree() == 1][0], z)
+    return -linear.coeff_monomial(1) / linear.coeff_monomial(z)
+
+
+def _stool_point(rng, tau=None):
+    stability, conditions, _ = _stool()
+    values = {}
+    for s in sorted(set().union(*[c.free_symbols for c in conditions]), key=str):
+        if isinstance(s, SignSymbol):
+            values[s] = int(rng.choice([-1, 1]))
+        elif s == stool_mu:
+            values[s] = sp.Rational(int(rng.integers(1, 150)), 100)
+        elif s == stool_h:
+            values[s] = sp.Rational(int(rng.integers(20, 300)), 100)
+        elif s.name.startswith("Phi"):
+            values[s] = -sp.Rational(int(rng.integers(1, 100)), 10)
+        else:  # Psi_j = -tau d_j: a line of laws through the origin
+            values[s] = -(tau if tau is not None else 1) * sp.Rational(int(rng.integers(1, 100)), 10)
+    return values
+
+
+def test_stool_frequency_equals_the_subresultant_root_at_random_points():
+    """The k = 3 frequency is kept as N/Delta_3 in the coefficients (no expansion); at exact random
+    points it equals the old derivation's value."""
+    stability, _, omega = _stool()
+    assert omega.is_Pow and omega.exp == sp.S.Half
+    old = _old_omega_squared(stability.linearization.charpoly)
+    rng = np.random.default_rng(25)
+    for _ in range(4):
+        values = _stool_point(rng)
+        assert omega.base.xreplace(values) == old.xreplace(values)
+
+
+@settings(max_examples=6, deadline=None)
+@given(st.integers(0, 10**6))
+def test_stool_frequency_is_the_imaginary_pair_on_the_hopf_set(seed):
+    """At points of the Hopf set (Delta_5 = 0 solved on a line Psi = -tau d, the other conditions
+    positive there), (4.5) has eigenvalues +-i omega and the others in the left half-plane."""
+    stability, conditions, omega = _stool()
+    labels = stability.poly.labels
+    tau = sp.Symbol("tau", positive=True)
+    values = _stool_point(np.random.default_rng(seed), tau)
+    minor = sp.Poly(sp.expand(conditions[labels.index(("Delta", 5))].xreplace(values)), tau)
+    roots = [r for r in minor.real_roots() if r > 0] if minor.degree() > 0 else []
+    others = [c for c, label in zip(conditions, labels) if label != ("Delta", 5)]
+    on_hopf = [r for r in roots if all(sp.N(c.xreplace(values).xreplace({tau: r}), 40) > 0 for c in others)]
+    event(f"points on the Hopf set: {len(on_hopf)}")
+    assume(on_hopf)
+    point = {s: (v.xreplace({tau: on_hopf[0]}) if isinstance(v, sp.Basic) else v) for s, v in values.items()}
+    assert truth_of(stability.hopf, point, digits=40)
+    w = complex(sp.N(omega.xreplace(point), 30))
+    J = stability.linearization.matrix.xreplace(point).evalf(30)
+    eigenvalues = np.linalg.eigvals(np.array(J.tolist(), dtype=complex))
+    assert abs(w.imag) < 1e-20 and w.real > 0
+    assert np.abs(eigenvalues - 1j * w.real).min() < 1e-7 * max(1.0, w.real)
+    assert np.abs(eigenvalues + 1j * w.real).min() < 1e-7 * max(1.0, w.real)
+    rest = sorted(eigenvalues, key=lambda e: min(abs(e - 1j * w.real), abs(e + 1j * w.real)))[2:]
+    assert max(e.real for e in rest) < 0
+
+
+def truth_of(condition, values, digits=30) -> bool:
+    """A Boolean of relations at an exact point: Eq by exact zero, the others by 40-digit signs."""
+    results = []
+    for c in sp.And.make_args(condition):
+        value = c.lhs - c.rhs
+        if isinstance(c, sp.Eq):
+            results.append(abs(sp.N(value.xreplace(values), digits)) < sp.Float(10) ** (-digits // 2))
+        else:
+            results.append(bool(c.func(sp.N(value.xreplace(values), digits), 0)))
+    return all(results)
