@@ -315,20 +315,20 @@ class TrigField:
             value = self.reduce(_compose(value.numer, index, replacement) / _compose(value.denom, index, replacement))
         return value
 
-    def _reduce_poly(self, poly):
+    def reduce_poly(self, poly):
         return _reduce(poly, self.pairs, self.signs)
 
     def reduce(self, value):
         """The normal form of a field element: signs moved up, both parts reduced, cancelled."""
-        numer, denom = self._reduce_poly(value.numer), self._reduce_poly(value.denom)
+        numer, denom = self.reduce_poly(value.numer), self.reduce_poly(value.denom)
         for i in self.signs:  # no sign in the denominator: d0 + d1 s times d0 - d1 s is d0^2 - d1^2
             if denom.degree(i) > 0:
                 gen = self.ring.gens[i]
                 d1 = denom.coeff_wrt(gen, 1)
                 conjugate = denom - 2 * d1 * gen
-                rational = self._reduce_poly(denom * conjugate)
+                rational = self.reduce_poly(denom * conjugate)
                 if rational:  # zero: the denominator vanishes for one sign; keep it as it is
-                    numer, denom = self._reduce_poly(numer * conjugate), rational
+                    numer, denom = self.reduce_poly(numer * conjugate), rational
         return self.field.new(numer, denom)
 
     def fraction(self, value) -> TrigFraction:

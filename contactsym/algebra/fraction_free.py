@@ -121,4 +121,4 @@ def polynomial_adjugate(M: sp.ImmutableMatrix):
     entries = [[field.element(x) for x in row] for row in M.tolist()]
     if any(x.denom != 1 for row in entries for x in row):
         return None
-    return adjugate_and_det([[x.numer for x in row] for row in entries], field._reduce_poly)
+    return adjugate_and_det([[x.numer for x in row] for row in entries], field.reduce_poly)

@@ -109,7 +109,7 @@ def check_options(name: str, options: Mapping) -> None:
     >>> check_options("stable_fraction", {"laws": 0, "magnitudes": (0.1, 10.0), "seed": 0, "signs": None})
     Traceback (most recent call last):
     ...
-    contactsym.atlas.grid.AtlasError: stable_fraction option laws = 0 must be a whole number from 1 to 1000000.
+    contactsym.errors.AtlasError: stable_fraction option laws = 0 must be a whole number from 1 to 1000000.
     >>> check_options("cycle", {"sampels": 256})
     Traceback (most recent call last):
     ...

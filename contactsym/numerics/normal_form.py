@@ -20,8 +20,9 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from .fastsystem import FastProblem
 from .hopf import HopfCoefficient, _at_point, hopf_point
-from .values import _Values, numeric_values
+from .values import NumericValues, numeric_values
 
 __all__ = ["NormalForm", "normal_form"]
 
@@ -91,8 +92,8 @@ def normal_form(
     step = 1e-6 * max(abs(h.value), 1e-8)
 
     def frequency(p: float) -> float:
-        point = _Values({**vals.numbers, h.parameter: sp.Float(p)}, vals.functions)
-        eigenvalues = np.linalg.eigvals(_at_point(scene, point, laws, signs)[1])
+        point = NumericValues({**vals.numbers, h.parameter: sp.Float(p)}, vals.functions)
+        eigenvalues = np.linalg.eigvals(_at_point(FastProblem(scene, point, laws, signs=signs))[1])
         return float(eigenvalues[np.argmin(np.abs(eigenvalues - 1j * h.omega))].imag)
 
     domega = (frequency(h.value + step) - frequency(h.value - step)) / (2 * step)

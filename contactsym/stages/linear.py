@@ -75,7 +75,7 @@ class _MinorsInRing:
                 if entry:
                     term = entry * self.det(rows[1:], cols[:i] + cols[i + 1 :])
                     total = total + term if i % 2 == 0 else total - term
-            self._cache[key] = self.field._reduce_poly(total)
+            self._cache[key] = self.field.reduce_poly(total)
         return self._cache[key]
 
     def minor(self, S: tuple):
@@ -135,12 +135,12 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
                 factor = (
                     x * psi[j].numer * phi[j].denom + phi[j].numer * psi[j].denom if j in S else law_denominators[j]
                 )
-                term = field._reduce_poly(term * factor)
+                term = field.reduce_poly(term * factor)
             total += -term if size % 2 else term
     common = D**k
     for c in law_denominators:
         common *= c
-    fraction = field.fraction(field.field.new(field._reduce_poly(total), common))
+    fraction = field.fraction(field.field.new(field.reduce_poly(total), common))
     if fraction.denominator_split()[1] != 1:  # not a monomial: as the expression path does it
         return _charpoly_of_expression(A, Phi, Psi, positive)
     degree = fraction.numer.degree(x)

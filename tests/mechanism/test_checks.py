@@ -13,7 +13,8 @@ import contactsym as cs
 from contactsym.errors import ContactsymError, SceneError
 
 EXAMPLES = pathlib.Path(__file__).parents[2] / "examples"
-LEANING_ROD = (EXAMPLES / "leaning-rod.toml").read_text()
+# the example without its [figures] (whose values are checked first): the mechanics is what refuses
+LEANING_ROD = (EXAMPLES / "leaning-rod.toml").read_text().split("[figures]")[0]
 
 
 def leaning_rod(tmp_path, old: str, new: str):

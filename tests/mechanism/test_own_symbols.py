@@ -142,7 +142,11 @@ def _user_symbols(scene) -> tuple[list, set]:
         space = scene.contact_space
         exprs += [*space.M, *space.F, *space.W] + [x for term in space.friction if term for x in (*term[0], term[1])]
     exprs += [*scene.gaps, *scene.reactions, *scene.at, *scene.at.values(), *scene._declared_positive]
-    exprs += [*scene.presentation, *scene.presentation.values(), *getattr(scene, "count_presentation", {}).values()]
+    exprs += [
+        *scene.presentation,
+        *scene.presentation.values(),
+        *(getattr(scene, "count_presentation", None) or {}).values(),
+    ]
     exprs += [scene.solve_for] if scene.solve_for is not None else []
     frozen = {plain_symbol(q) for q in scene.coordinates} | {plain_symbol(q, "dot") for q in scene.coordinates}
     symbols = set().union(*(sp.sympify(e).free_symbols for e in exprs))

@@ -69,9 +69,9 @@ def test_example_files_give_the_built_in_results_exactly(name):
     assert _conditions(from_file) == _conditions(built_in)
 
 
-def test_readme_walkthrough_file_is_the_example_and_shows_painleves_bound():
-    readme = (EXAMPLES.parent / "README.md").read_text()
-    block = readme.split("## Your own system in a file", 1)[1].split("```toml\n", 1)[1].split("```", 1)[0]
+def test_guide_walkthrough_file_is_the_example_and_shows_painleves_bound():
+    guide = (EXAMPLES.parent / "docs" / "guides" / "scene-files.md").read_text()
+    block = guide.split("```toml\n", 1)[1].split("```", 1)[0]
     assert block == (EXAMPLES / "leaning-rod.toml").read_text()
     scene = read_scene(block, "leaning-rod.toml")
     stable = scene.regions()["stable for every law"].condition
