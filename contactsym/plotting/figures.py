@@ -97,6 +97,20 @@ def paper_figures(directory, *, resolution=400, dpi=150) -> list[Path]:
         ``fig1a_guides.png``, ``fig1b_guides.png``, ``rod_f_cases.png``,
         ``rod_phase_portrait.png``, ``brake_alpha_mu.png``, ``brake_hopf.png``,
         ``sliding_point_phase_portrait.png``.
+
+    Examples
+    --------
+    The figures are :func:`scene_figures` of each scene in :data:`FIGURE_SCENES`; one of them
+    here (all four take about half a minute):
+
+    >>> import tempfile
+    >>> import contactsym as cs
+    >>> FIGURE_SCENES
+    ('painleve-klein-guides', 'painleve-klein-rod', 'brake', 'sliding-point')
+    >>> with tempfile.TemporaryDirectory() as directory:
+    ...     written = scene_figures(cs.scene("sliding-point"), directory, resolution=20, dpi=20)
+    ...     sorted(path.name for path in written.values())
+    ['sliding_point_phase_portrait.png']
     """
     paths = []
     for name in FIGURE_SCENES:
