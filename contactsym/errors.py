@@ -79,7 +79,7 @@ class SignPatternError(ContactsymError):
     --------
     >>> import contactsym as cs
     >>> try:
-    ...     cs.conditions(cs.scene("painleve-klein-guides"), signs=(1, 2))
+    ...     cs.scene("painleve-klein-guides").stability(signs=(1, 2))
     ... except cs.SignPatternError as error:
     ...     print(error)
     sign 2 at position 1 must be +1 or -1; write e.g. (1, -1).
@@ -87,7 +87,22 @@ class SignPatternError(ContactsymError):
 
 
 class HopfError(ContactsymError):
-    """A Hopf question asked where it has no answer: off the Hopf set, or no oscillatory pair."""
+    """A Hopf question asked where it has no answer: off the Hopf set, or no oscillatory pair.
+
+    Examples
+    --------
+    The brake at alpha = 0.3 with a damping law has no Hopf crossing near mu = 0.1:
+
+    >>> import contactsym as cs
+    >>> from contactsym import numerics
+    >>> values = {"m": 1, "mu": 0.1, "alpha": 0.3, "F_x": 0, "F_y": -4}
+    >>> values.update({"Phi_1": -1, "Phi_2": -1, "Psi_1": -1, "Psi_2": -1})
+    >>> try:
+    ...     numerics.hopf_point(cs.scene("brake"), values, "mu")
+    ... except HopfError as error:
+    ...     print(str(error).split(":")[0])
+    Re lambda of the critical pair keeps the sign of -0.0226 within 90% of the start value
+    """
 
 
 class ParseError(ContactsymError):
@@ -158,7 +173,17 @@ class AtlasError(ContactsymError):
 
 
 class UsageError(AtlasError):
-    """A bad ``contactsym atlas`` command line (exit code 2)."""
+    """A bad ``contactsym atlas`` command line (exit code 2).
+
+    Examples
+    --------
+    >>> from contactsym.atlas.cli import parse_axis
+    >>> try:
+    ...     parse_axis("mu=0:3")
+    ... except UsageError as error:
+    ...     print(error)
+    --grid mu=0:3: write NAME=START:STOP:COUNT or NAME=V1,V2,...
+    """
 
 
 class NumericsError(ContactsymError):

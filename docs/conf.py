@@ -9,6 +9,7 @@ the projects' full inventories first.
 from __future__ import annotations
 
 import os
+import shutil
 import sys
 import zlib
 from pathlib import Path
@@ -44,6 +45,8 @@ html_title = "contactsym"
 html_theme_options = {"navigation_depth": 2, "show_toc_level": 2}
 
 autosummary_generate = True
+# generated anew on every build: a page left from a renamed name would be an orphan (a warning)
+shutil.rmtree(HERE / "api" / "generated", ignore_errors=True)
 autosummary_imported_members = False
 autodoc_default_options = {"members": True, "show-inheritance": True}
 autodoc_typehints = "none"  # numpydoc's Parameters sections say the types

@@ -144,7 +144,7 @@ class TrigFraction:
     >>> x, m = sp.symbols("x m", positive=True)
     >>> fr = to_fraction(sp.cos(x)**2/(m*sp.sin(x)**2 - m))
     >>> type(fr).__name__, fr.numer, fr.denom
-    ('Fraction', -1, m)
+    ('TrigFraction', -1, m)
     >>> fr.as_expr()
     -1/m
     """

@@ -4,7 +4,7 @@
 - ``reduce_trig``: cos(x)**2 = 1 - sin(x)**2, a polynomial reduction;
 - ``known_sign``: +1 or -1 when it is proved from assumptions, declared positive expressions
   (and exact multiples of them, such as the factor of det M a scene registers) and bounds
-  |sin|, |cos| <= 1 on trigonometric polynomials; None otherwise.
+  ``|sin|, |cos| <= 1`` on trigonometric polynomials; None otherwise.
 - ``PaperSymbol``: the theory's own symbols (u_j, v_j, Phi_j, Psi_j, epsilon, tau, lambda), never
   equal to a user's symbol of the same name.
 

@@ -113,7 +113,7 @@ def check_options(name: str, options: Mapping) -> None:
     >>> check_options("cycle", {"sampels": 256})
     Traceback (most recent call last):
     ...
-    contactsym.atlas.grid.AtlasError: cycle has no option 'sampels'; its options are laws, unilateral, form, initial, periods, tol, rtol, samples, method.
+    contactsym.errors.AtlasError: cycle has no option 'sampels'; its options are laws, unilateral, form, initial, periods, tol, rtol, samples, method.
     """
     from .. import numerics  # the simulations' signatures name the options
 

@@ -146,6 +146,8 @@ def with_laws(scene, laws):
     >>> brake.fast_subsystem().Phi[0]
     -3*2**(2/3)*(u_1 + v_1)**(1/3)/2
     """
+    if not all(hasattr(scene, a) for a in ("k", "contacts", "coordinates", "accelerations")):
+        raise _error(f"with_laws takes a Scene (e.g. contactsym.scene('brake')), not {type(scene).__name__}.")
     laws = list(laws) if isinstance(laws, (list, tuple)) else [laws] * scene.k
     if len(laws) != scene.k:
         raise _error(f"got {len(laws)} laws for the {scene.k} contacts of '{scene.name}'; give one per contact.")

@@ -318,6 +318,14 @@ def first_lyapunov_symbolic(stability, at: dict | None = None, reduce=None) -> s
     ``at`` is substituted before the linear algebra (a slice of parameter space, the
     Hopf line solved for one parameter): the result is then far shorter. Its keys may be
     the parameters and the derivative symbols. ``reduce`` is passed to :func:`lyapunov_symbolic`.
+
+    Examples
+    --------
+    One contact has no Hopf set ((3.1) is a plane system with trace Psi A < 0 wherever A > 0):
+
+    >>> import contactsym as cs
+    >>> first_lyapunov_symbolic(cs.scene("sliding-point").stability()) is None
+    True
     """
     forms = fast_hopf_forms(stability, at)
     if forms is None:

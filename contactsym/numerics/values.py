@@ -72,7 +72,15 @@ def _plain_expr(scene, expr) -> sp.Expr:
 
 @dataclass(frozen=True)
 class NumericValues:
-    """Numeric parameter values (Symbol -> number) and function substitutions."""
+    """Numeric parameter values (Symbol -> number) and function substitutions.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> values = numeric_values(cs.scene("brake"), {"m": 1, "mu": 0.5, "alpha": 1.0})
+    >>> type(values).__name__, sorted(str(s) for s in values.numbers)
+    ('NumericValues', ['alpha', 'm', 'mu'])
+    """
 
     numbers: dict
     functions: dict  # UndefinedFunction -> Lambda

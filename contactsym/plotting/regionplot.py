@@ -190,7 +190,19 @@ def region_plot(
 
 def boundary_contours(ax, X, Y, fields, **style) -> list:
     """Draw the zero contour of each field (from :func:`relational_fields`) that changes sign on the grid;
-    returns the contour sets drawn."""
+    returns the contour sets drawn.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> X, Y = np.meshgrid(np.linspace(-2, 2, 41), np.linspace(-2, 2, 41))
+    >>> fig, ax = plt.subplots()
+    >>> len(boundary_contours(ax, X, Y, [X**2 + Y**2 - 1, X**2 + Y**2 + 1]))  # the circle; the other has no zero
+    1
+    >>> plt.close(fig)
+    """
     artists = []
     for values in fields:
         if np.nanmin(values) < 0 < np.nanmax(values):

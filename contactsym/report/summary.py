@@ -24,7 +24,7 @@ from ..mechanism.scene import Scene, paper_equations
 from ..printing.latex_output import tex
 from ..stages.regions import REGION_NAMES, Region
 from ..stages.stability import UNDECIDED_TEX, hurwitz_names
-from ..validate import cut, instance_of
+from ..validate import cut, instance_of, sign_pattern
 from .scene_parts import _count_tag
 
 __all__ = ["always_positive", "conditions", "summary_text"]
@@ -90,7 +90,7 @@ def conditions(scene, signs=None) -> dict:
     ('mu <= Abs(cot(alpha))', ['(4.4)', '(6.3)'])
     """
     instance_of(scene, Scene, "scene", "pass a Scene, e.g. contactsym.scene('brake')")
-    key = None if signs is None else tuple(signs)
+    key = None if signs is None else sign_pattern(signs)  # a clear error for anything else
     try:
         computed = _COMPUTED.setdefault(scene, {})
     except TypeError:  # an object that cannot be weakly referenced: nothing to share

@@ -135,9 +135,9 @@ class WitnessLaw:
     The witness laws of a law-dependent A agree in exact signs and in eigenvalues:
 
     >>> import sympy as sp
-    >>> r = decide(sp.Matrix([[2, 1, 0], [-1, 2, 1], [0, -1, 2]]))
+    >>> r = decide_robustness(sp.Matrix([[2, 1, 0], [-1, 2, 1], [0, -1, 2]]))
     >>> law = r.unstable_law
-    >>> isinstance(law, Law), law.stable, min(law.conditions) < 0, law.abscissa > 0
+    >>> isinstance(law, WitnessLaw), law.stable, min(law.conditions) < 0, law.abscissa > 0
     (True, False, True, True)
     >>> r.stable_law.stable, r.stable_law.abscissa < 0
     (True, True)
@@ -160,7 +160,7 @@ class Certificate:
     Examples
     --------
     >>> import sympy as sp
-    >>> certificate = decide(sp.Matrix([[1, 0, 0], [0, -1, 0], [0, 0, 1]])).certificate
+    >>> certificate = decide_robustness(sp.Matrix([[1, 0, 0], [0, -1, 0], [0, 0, 1]])).certificate
     >>> isinstance(certificate, Certificate), certificate.verdict, certificate.kind
     (True, 'unstable', 'coefficients')
     >>> print(certificate.statement)
@@ -179,7 +179,7 @@ class Robustness:
     Examples
     --------
     >>> import sympy as sp
-    >>> r = decide(sp.Matrix([[2, 1, 0], [-1, 2, 1], [0, -1, 2]]))
+    >>> r = decide_robustness(sp.Matrix([[2, 1, 0], [-1, 2, 1], [0, -1, 2]]))
     >>> isinstance(r, Robustness), r.verdict, r.certificate
     (True, 'law-dependent', None)
     >>> print(r.summary().splitlines()[0])

@@ -45,7 +45,7 @@ class FormulaReader:
     >>> reader.formula("m*g", "parameters", "m")
     Traceback (most recent call last):
     ...
-    contactsym.parse.ParseError: a.toml:2:3: unknown name 'g'; declared names: m.
+    contactsym.errors.ParseError: a.toml:2:3: unknown name 'g'; declared names: m.
     """
 
     def __init__(self, doc: TomlSource):
