@@ -9,6 +9,7 @@ the projects' full inventories first.
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import sys
 import zlib
@@ -48,6 +49,7 @@ autosummary_generate = True
 # generated anew on every build: a page left from a renamed name would be an orphan (a warning)
 shutil.rmtree(HERE / "api" / "generated", ignore_errors=True)
 autosummary_imported_members = False
+autosummary_ignore_module_all = False  # a package documents the names of its __all__, imported or not
 autodoc_default_options = {"members": True, "show-inheritance": True}
 autodoc_typehints = "none"  # numpydoc's Parameters sections say the types
 numpydoc_show_class_members = False
@@ -112,3 +114,22 @@ intersphinx_mapping = {
     for name, (url, entries) in _LINKED.items()
 }
 intersphinx_timeout = 10
+
+
+def _plain_text_math(app, what, name, obj, options, lines):
+    """Docstrings write mathematics as plain text (|x|, a * b, mu_+), never reStructuredText
+    substitutions, emphasis or references: escape those marks outside doctests and ``literals``."""
+    for i, line in enumerate(lines):
+        if line.lstrip().startswith((">>>", "...")):
+            continue
+        parts = re.split(r"(``[^`]*``)", line)
+        for j, part in enumerate(parts):
+            if not part.startswith("``"):
+                part = part.replace("|", "\\|")
+                part = re.sub(r"(?<=[\s(,])\*(?=[\s,)])", r"\\*", part)
+                parts[j] = re.sub(r"(?<=\w)_(?=[^\w`]|$)", r"\\_", part)
+        lines[i] = "".join(parts)
+
+
+def setup(app):
+    app.connect("autodoc-process-docstring", _plain_text_math)
