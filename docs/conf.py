@@ -35,6 +35,7 @@ extensions = [
     "numpydoc",
     "myst_nb",
     "scene_schema",
+    "constants",
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "myst-nb", ".ipynb": "myst-nb"}  # .rst first: autosummary writes it

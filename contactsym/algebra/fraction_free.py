@@ -18,6 +18,11 @@ from .canonical_form import TrigField
 __all__ = ["adjugate_and_det", "adjugate_and_det_in_field", "polynomial_adjugate", "solve_fraction_free", "t"]
 
 #: The time t of ``sympy.physics.mechanics`` (coordinates are functions q(t)).
+#:
+#: >>> from contactsym.algebra import t
+#: >>> from sympy.physics.mechanics import dynamicsymbols
+#: >>> dynamicsymbols('q').diff(t)
+#: Derivative(q(t), t)
 t = dynamicsymbols._t
 
 

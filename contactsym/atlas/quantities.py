@@ -383,6 +383,10 @@ def function(fn: Callable, outputs: Sequence[str] | None = None) -> Quantity:
 
 
 #: Built-in quantities by name, with their default options.
+#:
+#: >>> from contactsym.atlas import QUANTITIES
+#: >>> 'classification' in QUANTITIES
+#: True
 QUANTITIES = {
     "classification": classification,
     "leading_eigenvalue": leading_eigenvalue,

@@ -43,6 +43,10 @@ def orthant_patterns(k: int) -> list[tuple[int, ...]]:
 
 
 #: The quadrants of k = 2 in counter-clockwise order, as the turns of the image polygon.
+#:
+#: >>> from contactsym.counts import k2_quadrants
+#: >>> k2_quadrants[0], len(k2_quadrants)
+#: ((1, 1), 4)
 k2_quadrants = ((1, 1), (-1, 1), (-1, -1), (1, -1))
 
 _WORDS = ["none", "one", "two", "three", "four", "five", "six", "seven", "eight"]

@@ -68,6 +68,10 @@ __all__ = [
 ]
 
 #: What each count region means.
+#:
+#: >>> from contactsym.counts import COUNT_DESCRIPTIONS
+#: >>> COUNT_DESCRIPTIONS['unique stable'].split(' (')[0]
+#: 'one root for every load, stable for every contact law'
 COUNT_DESCRIPTIONS = {
     "unique stable": "one root for every load, stable for every contact law (f' > 0 on every piece; Props. 3-4)",
     "unique unstable": "one root for every load, unstable for every contact law (f' < 0 on every piece)",

@@ -25,8 +25,16 @@ from .relations import Condition, arrange, as_positive_relation, drop_known_fact
 __all__ = ["RAW_OPS", "FACTOR_TERMS", "closed_form", "closed_conjuncts"]
 
 #: Relations with more operations (unexpanded) are kept as given: see the module docstring.
+#:
+#: >>> from contactsym.inequalities import RAW_OPS
+#: >>> RAW_OPS > 0
+#: True
 RAW_OPS = 1500
 #: Numerators with more terms are not factored: see the module docstring.
+#:
+#: >>> from contactsym.inequalities import FACTOR_TERMS
+#: >>> FACTOR_TERMS > 0
+#: True
 FACTOR_TERMS = 200
 
 

@@ -26,6 +26,11 @@ __all__ = [
 ]
 
 #: The relation that holds after multiplying both sides by a negative number.
+#:
+#: >>> import sympy as sp
+#: >>> from contactsym.inequalities import FLIP
+#: >>> FLIP[sp.StrictGreaterThan](1, 2)
+#: True
 FLIP = {
     sp.StrictGreaterThan: sp.StrictLessThan,
     sp.GreaterThan: sp.LessThan,

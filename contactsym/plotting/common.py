@@ -19,8 +19,17 @@ from ..errors import SceneError
 
 __all__ = ["ContactPlot", "STABLE_HATCH", "UNSTABLE_HATCH", "axes_or_current"]
 
-#: Hatches: stable for every law (single), unstable for every law (double), as in Fig. 1.
+#: The hatch of "stable for every law" regions (single lines), as in Fig. 1.
+#:
+#: >>> from contactsym.plotting import STABLE_HATCH
+#: >>> STABLE_HATCH
+#: '///'
 STABLE_HATCH = "///"
+#: The hatch of "unstable for every law" regions (crossed lines), as in Fig. 1.
+#:
+#: >>> from contactsym.plotting import UNSTABLE_HATCH
+#: >>> UNSTABLE_HATCH
+#: 'xxx'
 UNSTABLE_HATCH = "xxx"
 
 #: Titles of the rod's three cases of §3 by the name of their count region.

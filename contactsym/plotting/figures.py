@@ -17,6 +17,10 @@ from ..scenes import scene as built_in
 __all__ = ["FIGURE_SCENES", "paper_figures", "save_figure", "scene_figures"]
 
 #: The paper's scenes whose figures :func:`paper_figures` writes, in its order (Fig. 1 first).
+#:
+#: >>> from contactsym.plotting import FIGURE_SCENES
+#: >>> FIGURE_SCENES[0]
+#: 'painleve-klein-guides'
 FIGURE_SCENES = ("painleve-klein-guides", "painleve-klein-rod", "brake", "sliding-point")
 
 

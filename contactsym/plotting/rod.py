@@ -20,6 +20,10 @@ from .common import CASE_TITLES, ContactPlot, _float, _scene, axes_or_current
 __all__ = ["ROD_CASES", "RodFData", "rod_f_data", "rod_f_plot", "rod_portrait_values"]
 
 #: Parameter choices for the three cases of §3, in the paper's symbols (phi in radians).
+#:
+#: >>> from contactsym.plotting import ROD_CASES
+#: >>> sorted(ROD_CASES)
+#: ['cusp', 'fold', 'unique']
 ROD_CASES = {
     "unique": {"phi": sp.pi / 4, "mu_+": 1.2, "mu_-": 0.4, "Y^*_1": 1.0, "Y^*_2": 1.0, "loads": (-1.0,)},
     "fold": {"phi": sp.pi / 4, "mu_+": 3.2, "mu_-": 2.8, "Y^*_1": 1.0, "Y^*_2": -1.0, "loads": (-4.0, 0.0)},

@@ -24,6 +24,10 @@ _MODULES = {
 }
 
 #: The scene that ``contactsym`` shows when no scene is named.
+#:
+#: >>> from contactsym import DEFAULT_SCENE, scene
+#: >>> scene(DEFAULT_SCENE).name
+#: 'brake'
 DEFAULT_SCENE = "brake"
 
 _built: dict = {}

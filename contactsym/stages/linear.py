@@ -38,6 +38,10 @@ NUMBERS = Numbering(
 log = logging.getLogger("contactsym")
 
 #: The eigenvalue variable of characteristic polynomials.
+#:
+#: >>> from contactsym import lam
+#: >>> lam**2 - 1
+#: lambda**2 - 1
 lam = PaperSymbol("lambda")
 
 

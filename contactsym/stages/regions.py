@@ -109,6 +109,10 @@ def _set_aside(condition: sp.Basic) -> tuple[sp.Basic, dict]:
 
 
 #: The regions every scene offers, from its stability object.
+#:
+#: >>> from contactsym.stages import REGION_NAMES
+#: >>> REGION_NAMES['stable for every law']
+#: 'robustly_stable'
 REGION_NAMES = {
     "stable for every law": "robustly_stable",
     "unstable for every law": "robustly_unstable",

@@ -60,6 +60,10 @@ class LawKind:
 
 
 #: Compliance laws by their name in a file. Add an entry to make a new law available to scene files.
+#:
+#: >>> from contactsym.mechanism import COMPLIANCE_LAWS
+#: >>> sorted(COMPLIANCE_LAWS)
+#: ['generic', 'kelvin-voigt', 'law']
 COMPLIANCE_LAWS = {
     "generic": LawKind(lambda formulas, flags, eps: Generic()),
     "kelvin-voigt": LawKind(

@@ -84,6 +84,10 @@ __all__ = [
 ]
 
 #: The default caps on a scene file's size.
+#:
+#: >>> from contactsym.mechanism.files import LIMITS
+#: >>> LIMITS.max_contacts
+#: 6
 LIMITS = Limits()
 
 _SCENE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.\-]{0,63}\Z")  # it names the report's directory

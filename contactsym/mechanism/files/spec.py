@@ -89,6 +89,10 @@ def _free(entries: str) -> TableSchema:
 
 
 #: The schema of a scene file: every table (``""`` is the document), its keys and their kinds.
+#:
+#: >>> from contactsym.mechanism.files import SCHEMA
+#: >>> SCHEMA[''].required
+#: ('scene',)
 SCHEMA = MappingProxyType(
     {
         "": _table(
