@@ -67,6 +67,8 @@ from .bodies import Plane, read_motion, read_points
 from .contacts import COMPLIANCE_LAWS, build_contact, read_contacts
 from .declarations import FormulaReader, read_declarations
 from .figures import pipeline_names, read_figures
+from .space import Space, check_orientations
+from .spatial import read_space
 from .spec import FigurePlan, Limits, SceneSpec
 from .toml_source import SceneFileError, TomlSource, shown
 
@@ -131,6 +133,23 @@ def _switching(contacts, formulas) -> int:
     return len(written) + sum(c.friction is not None for c in contacts)
 
 
+def _dimensions(doc: TomlSource, head: dict, lagrangian: bool) -> int:
+    """2 (the plane, by default) or 3 (space: :mod:`contactsym.mechanism.files.spatial`)."""
+    dimensions = head.get("dimensions", 2)
+    if isinstance(dimensions, bool) or dimensions not in (2, 3):
+        doc.fail("scene", "dimensions", f"dimensions = {shown(dimensions)} must be 2 (the plane) or 3 (space)")
+    if dimensions == 3 and not lagrangian:
+        doc.fail(
+            "scene",
+            "dimensions",
+            "dimensions = 3 is for a Lagrangian in space ([frames], [points], "
+            "[[bodies]]); with [accelerations] leave it out",
+        )
+    if dimensions == 2 and "frames" in doc.data:
+        doc.fail("frames", None, "[frames] are for a scene in space; add dimensions = 3 to [scene]")
+    return dimensions
+
+
 def read_spec(
     text: str, source: str = "<scene file>", default_name: str = "user", *, limits: Limits = LIMITS
 ) -> SceneSpec:
@@ -161,9 +180,13 @@ def read_spec(
     if not lagrangian and any(t in doc.data for t in _LAGRANGIAN_TABLES):
         used = next(t for t in _LAGRANGIAN_TABLES if t in doc.data)
         doc.fail(used, None, f"[{used}] is for a Lagrangian, but the file gives [accelerations]; remove one of them")
-    points = read_points(reader) if lagrangian else ()
+    spatial = _dimensions(doc, head, lagrangian) == 3
+    points = read_points(reader) if lagrangian and not spatial else ()
     eps = SceneSpec.eps
-    contacts = read_contacts(reader, coordinates, lagrangian, [p.name for p in points], eps)
+    if spatial:
+        space, contacts, energy = read_space(reader, coordinates, eps)
+    else:
+        contacts = read_contacts(reader, coordinates, lagrangian, [p.name for p in points], eps)
     solve_for = reader.formula(head["solve_for"], "scene", "solve_for") if "solve_for" in head else None
     if solve_for is not None and not isinstance(solve_for, sp.Symbol):
         doc.fail("scene", "solve_for", f"solve_for = {shown(head['solve_for'])} must name a parameter")
@@ -183,7 +206,12 @@ def read_spec(
         solve_for=solve_for,
         eps=eps,
     )
-    if lagrangian:
+    if spatial:
+        check_orientations(reader, space, coordinates, dict(options["at"]))
+        options.update(space=space, **energy)
+        forces = [c for load in space.loads for c in (load.force or load.moment)]
+        written = [energy["kinetic"], energy["potential"], *forces]
+    elif lagrangian:
         options.update(points=points, **read_motion(reader, points))
         written = [
             options["kinetic"],
@@ -224,7 +252,8 @@ def build_scene(spec: SceneSpec) -> Scene:
     """
     if not isinstance(spec, SceneSpec):
         raise SceneFileError(f"build_scene takes a SceneSpec (from read_spec), not {shown(spec)}.")
-    plane = Plane(spec.points) if spec.lagrangian else None
+    plane = Plane(spec.points) if spec.lagrangian and spec.space is None else None
+    plane = Space(spec.space) if spec.space is not None else plane
     contacts = [build_contact(c, plane, spec.source, spec.eps) for c in spec.contacts]
     presentation = dict(spec.presentation)
     count_presentation = None
