@@ -1,4 +1,4 @@
-"""Scene files in space, the mechanics: frames, points, bodies and loads of a :class:`SpatialSpec`
+"""Scene files in space, the mechanics: the spec items of a spatial file (:class:`SpatialSpec`), built
 as ``sympy.physics.mechanics`` objects, and the checks that need them.
 
 :class:`Space` builds what ``Scene.from_lagrangian`` needs (``ReferenceFrame.orient_body_fixed``,
@@ -9,6 +9,7 @@ configuration; the inertia tensors are checked to be positive definite as they a
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from functools import lru_cache
 
 import sympy as sp
@@ -16,10 +17,81 @@ from sympy.physics.mechanics import Lagrangian, Particle, Point, ReferenceFrame,
 
 from ...algebra.canonical_form import TrigField
 from ...algebra.reductions import known_sign
-from .spatial import SpatialSpec
+from .spec import MassSpec
 from .toml_source import SceneFileError
 
-__all__ = ["Space", "check_orientations", "is_identity", "printed", "singular_set"]
+__all__ = [
+    "FrameSpec",
+    "Space",
+    "SpaceBodySpec",
+    "SpaceLoadSpec",
+    "SpacePointSpec",
+    "SpatialSpec",
+    "check_orientations",
+    "is_identity",
+    "printed",
+    "singular_set",
+]
+
+
+@dataclass(frozen=True)
+class FrameSpec:
+    """A body frame: its parent (None: the inertial frame O) and its orientation.
+
+    ``kind`` is ``body_fixed``, ``space_fixed`` (``sequence`` such as ``"zyx"``, three
+    ``angles``) or ``euler_parameters`` (four ``angles``: a unit quaternion).
+    """
+
+    name: str
+    parent: str | None
+    kind: str
+    sequence: str
+    angles: tuple
+    line: int
+
+
+@dataclass(frozen=True)
+class SpacePointSpec:
+    """A point at ``position`` in O, or fixed in ``frame`` at ``offset`` (in that frame) from point ``base``."""
+
+    name: str
+    position: tuple | None
+    base: str | None
+    frame: str | None
+    offset: tuple | None
+    line: int
+
+
+@dataclass(frozen=True)
+class SpaceBodySpec:
+    """A rigid body at a point, turning with a frame; ``inertia`` = (xx, yy, zz, xy, yz, zx) in that frame."""
+
+    point: str
+    frame: str
+    mass: sp.Expr
+    inertia: tuple
+    line: int
+
+
+@dataclass(frozen=True)
+class SpaceLoadSpec:
+    """A force (components in O) at a point, or a moment (in O) on the body of a frame."""
+
+    point: str | None = None
+    force: tuple | None = None
+    frame: str | None = None
+    moment: tuple | None = None
+
+
+@dataclass(frozen=True)
+class SpatialSpec:
+    """The mechanics of a spatial scene file, as read (:func:`read_space`)."""
+
+    frames: tuple[FrameSpec, ...]
+    points: tuple[SpacePointSpec, ...]
+    masses: tuple[MassSpec, ...]
+    bodies: tuple[SpaceBodySpec, ...]
+    loads: tuple[SpaceLoadSpec, ...]
 
 
 def is_identity(expr: sp.Expr, value) -> bool:
@@ -139,7 +211,6 @@ class Space:
 
     Examples
     --------
-    >>> from contactsym.mechanism.files.spatial import FrameSpec, SpacePointSpec
     >>> x, th = dynamicsymbols("x theta")
     >>> frames = (FrameSpec("B", None, "body_fixed", "zyx", (0, th, 0), 1),)
     >>> points = (SpacePointSpec("G", (x, 0, 0), None, None, None, 2),

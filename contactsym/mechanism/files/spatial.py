@@ -34,85 +34,17 @@ direction that is not a unit vector, a friction direction not tangent to its con
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import sympy as sp
 
 from .contacts import _law
 from .declarations import _NAME, FormulaReader
+from .space import FrameSpec, Space, SpaceBodySpec, SpaceLoadSpec, SpacePointSpec, SpatialSpec, is_identity, printed
 from .spec import ContactSpec, FrictionSpec, MassSpec
 from .toml_source import shown
 
-__all__ = [
-    "FrameSpec",
-    "SpaceBodySpec",
-    "SpaceLoadSpec",
-    "SpacePointSpec",
-    "SpatialSpec",
-    "read_space",
-]
+__all__ = ["read_space"]
 
 _SEQUENCES = ("body_fixed", "space_fixed")
-
-
-@dataclass(frozen=True)
-class FrameSpec:
-    """A body frame: its parent (None: the inertial frame O) and its orientation.
-
-    ``kind`` is ``body_fixed``, ``space_fixed`` (``sequence`` such as ``"zyx"``, three
-    ``angles``) or ``euler_parameters`` (four ``angles``: a unit quaternion).
-    """
-
-    name: str
-    parent: str | None
-    kind: str
-    sequence: str
-    angles: tuple
-    line: int
-
-
-@dataclass(frozen=True)
-class SpacePointSpec:
-    """A point at ``position`` in O, or fixed in ``frame`` at ``offset`` (in that frame) from point ``base``."""
-
-    name: str
-    position: tuple | None
-    base: str | None
-    frame: str | None
-    offset: tuple | None
-    line: int
-
-
-@dataclass(frozen=True)
-class SpaceBodySpec:
-    """A rigid body at a point, turning with a frame; ``inertia`` = (xx, yy, zz, xy, yz, zx) in that frame."""
-
-    point: str
-    frame: str
-    mass: sp.Expr
-    inertia: tuple
-    line: int
-
-
-@dataclass(frozen=True)
-class SpaceLoadSpec:
-    """A force (components in O) at a point, or a moment (in O) on the body of a frame."""
-
-    point: str | None = None
-    force: tuple | None = None
-    frame: str | None = None
-    moment: tuple | None = None
-
-
-@dataclass(frozen=True)
-class SpatialSpec:
-    """The mechanics of a spatial scene file, as read (:func:`read_space`)."""
-
-    frames: tuple[FrameSpec, ...]
-    points: tuple[SpacePointSpec, ...]
-    masses: tuple[MassSpec, ...]
-    bodies: tuple[SpaceBodySpec, ...]
-    loads: tuple[SpaceLoadSpec, ...]
 
 
 def _vector(reader: FormulaReader, value, where: str, key: str) -> tuple:
@@ -236,8 +168,6 @@ def _motion(reader: FormulaReader, points, frames) -> dict:
 
 def _shown(vector) -> str:
     """A vector as a message shows it: coordinates q(t) as q."""
-    from .space import printed
-
     return "[" + ", ".join(str(printed(v)) for v in vector) + "]"
 
 
@@ -246,8 +176,6 @@ def _rates(reader: FormulaReader) -> list:
 
 
 def _contacts(reader: FormulaReader, space, coordinates, eps) -> tuple[ContactSpec, ...]:
-    from .space import is_identity  # the mechanics are built once the points are read
-
     symbols = [c.symbol for c in coordinates]
     contacts = []
     for index, entry in enumerate(reader.section("contacts", required=True, kind=list)):
@@ -293,8 +221,6 @@ def _contacts(reader: FormulaReader, space, coordinates, eps) -> tuple[ContactSp
 
 
 def _friction(reader: FormulaReader, entry, where: str, point, normal) -> FrictionSpec:
-    from .space import is_identity
-
     if not isinstance(entry, dict):
         reader.doc.fail(where, "friction", "friction must be a table {mu = ..., direction = [dx, dy, dz]}")
     reader.checked(entry, f"{where}.friction", "contacts.friction")
@@ -338,8 +264,6 @@ def read_space(reader: FormulaReader, coordinates, eps) -> tuple[SpatialSpec, tu
 
     ``energy`` holds the ``[energy]`` formulas (``kinetic``, ``potential``).
     """
-    from .space import Space
-
     frames = _frames(reader)
     names = [f.name for f in frames]
     points = _points(reader, names)
