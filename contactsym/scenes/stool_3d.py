@@ -58,14 +58,13 @@ def build() -> Scene:
         N = sp.Symbol(f"N_{j}", real=True)
         contacts.append(Contact(coordinate=height, reaction=N, friction=Coulomb(mu, sliding, foot)))
     body = RigidBody("stool", centre, stool, 1, (inertia(stool, *INERTIA), centre))
-    level = {sp.Symbol(name, real=True): 0 for name in ("theta", "phi", "psi")}
     return Scene.from_lagrangian(
         Lagrangian(O, body),
         [x, y, z, psi, theta, phi],
         contacts,
         loads=[(centre, -GRAVITY * O.z)],
         frame=O,
-        at=level,
+        at={theta: 0, phi: 0, psi: 0},  # standing level
         name="stool-3d",
         figure_plan=PLAN,
         description="a three-legged stool sliding on a rough floor",
