@@ -38,8 +38,14 @@ def build() -> Scene:
 
     Examples
     --------
-    >>> build().linearization(signs=(1, 1, 1)).A[0, :]
-    Matrix([[247/100 - 61*h*mu/50, 17/100 - 61*h*mu/50, -61*h*mu/50 - 33/100]])
+    Without friction A is the Delassus matrix W^T M^-1 W, symmetric:
+
+    >>> A = build().linearization(signs=(1, 1, 1)).A
+    >>> A.shape, A.subs(sp.Symbol("mu", positive=True), 0)
+    ((3, 3), Matrix([
+    [247/100,  17/100, -33/100],
+    [ 17/100, 487/100, -63/100],
+    [-33/100, -63/100, 387/100]]))
     """
     x, y, z, psi, theta, phi = dynamicsymbols("x y z psi theta phi")
     mu, h = sp.symbols("mu h", positive=True)

@@ -44,6 +44,9 @@ The motion
     ``Psi_1`` and the sign symbols ``s_1``; each admissible for its symbol) for the
     report's region maps and phase portrait. See :mod:`contactsym.mechanism.files.figures`.
 
+Bodies in space: ``dimensions = 3`` in ``[scene]`` with ``[frames]``, points, bodies, loads
+and contacts in 3-D (see :mod:`contactsym.mechanism.files.spatial`).
+
 A file is refused, with the cap named, beyond the sizes of :class:`Limits` (bytes,
 coordinates, contacts, points, ...; pass ``limits=Limits(...)`` to read a larger one) and
 the caps on formulas of :mod:`contactsym.parse`. Only regular files are read.
