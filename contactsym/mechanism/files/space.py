@@ -100,12 +100,17 @@ def is_identity(expr: sp.Expr, value) -> bool:
     Examples
     --------
     >>> b = sp.Symbol("beta", real=True)
-    >>> is_identity(sp.cos(b)**2 + sp.sin(b)**2, 1), is_identity(sp.cos(b), 0)
-    (True, False)
+    >>> is_identity(sp.cos(b)**2 + sp.sin(b)**2, 1), is_identity(sp.cos(b/2)**2 + sp.sin(b/2)**2, 1)
+    (True, True)
+    >>> is_identity(sp.cos(b), 0)
+    False
     """
     difference = sp.sympify(expr) - value
     field = TrigField([difference])
-    return not field.element(difference)
+    if not field.element(difference):
+        return True
+    # half angles and other compound arguments: trigsimp, on the few terms of a norm or a dot product
+    return sp.count_ops(difference) <= 200 and sp.trigsimp(sp.expand(difference)) == 0
 
 
 @lru_cache(maxsize=32)
