@@ -117,8 +117,15 @@ class _Named:
         return symbol
 
 
+#: Long expressions beyond this many nodes are described by their size as derived, not expanded.
+DESCRIBE_NODES = 20000
+
+
 def _describe(expr: sp.Expr) -> str:
     """A short description of a long expression: its kind, number of terms and symbols."""
+    if _nodes(expr, DESCRIBE_NODES) > DESCRIBE_NODES:  # expanding it could take minutes: its size as derived
+        symbols = ", ".join(f"${tex(s)}$" for s in sorted(expr.free_symbols, key=str))
+        return f"an expression of more than {DESCRIBE_NODES} nodes in {symbols}"
     numerator, denominator = sp.fraction(sp.together(expr))
     terms = len(sp.Add.make_args(sp.expand(numerator)))
     symbols = ", ".join(f"${tex(s)}$" for s in sorted(expr.free_symbols, key=str))

@@ -4,6 +4,8 @@ friction against the same derivation and the planar 4/3, and the stool's robustn
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -99,6 +101,11 @@ def test_rod_critical_friction_is_newton_eulers_and_the_planar_four_thirds():
 # --- the stool ----------------------------------------------------------------------------------
 
 
+@lru_cache(maxsize=1)
+def _stool():
+    return stool_3d.build()
+
+
 def _stool_newton_euler(v):
     arms = [np.array([float(a - stool_3d.CENTRE[0]), float(b - stool_3d.CENTRE[1]), -v["h"]]) for a, b in stool_3d.FEET]
     sliding = np.array([*map(float, stool_3d.SLIDING), 0.0])
@@ -106,7 +113,7 @@ def _stool_newton_euler(v):
 
 
 def test_stool_mass_matrix_delassus_and_h_are_newton_eulers_at_random_configurations():
-    stool = cs.scene("stool-3d")
+    stool = _stool()
     rng = np.random.default_rng(7)
     for _ in range(30):
         values = dict(zip(Q, [*rng.uniform(-1, 1, 3), *rng.uniform(-1.4, 1.4, 3)])) | {"h": rng.uniform(0.1, 2)}
@@ -114,7 +121,7 @@ def test_stool_mass_matrix_delassus_and_h_are_newton_eulers_at_random_configurat
 
 
 def test_stool_is_classified_with_certificates_or_witness_laws_that_eigenvalues_confirm():
-    stool = cs.scene("stool-3d")
+    stool = _stool()
     rng = np.random.default_rng(11)
     verdicts = set()
     for signs in [(1, 1, 1), (1, -1, 1), (-1, 1, -1)]:
@@ -144,3 +151,17 @@ def rod_file():
     from tests.mechanism.files.test_reader import EXAMPLES
 
     return load_scene(EXAMPLES / "painleve-rod-3d.toml")
+
+
+def test_the_stool_file_gives_the_stool_scene():
+    from contactsym.mechanism.files import load_scene
+    from tests.mechanism.files.test_reader import EXAMPLES
+
+    own, built = load_scene(EXAMPLES / "stool-3d.toml").contact_space, _stool().contact_space
+    assert (own.M, own.F, own.W, own.friction, own.reactions) == (
+        built.M,
+        built.F,
+        built.W,
+        built.friction,
+        built.reactions,
+    )
