@@ -115,6 +115,7 @@ def _sized(doc: TomlSource, limits: Limits) -> None:
         ("coordinates", "scene", "coordinates", "max_coordinates", count("scene", "coordinates")),
         ("contacts", "contacts", None, "max_contacts", count("contacts")),
         ("points", "points", None, "max_points", count("points")),
+        ("frames", "frames", None, "max_points", count("frames")),
         ("masses, bodies and loads", "", None, "max_items", count("masses") + count("bodies") + count("loads")),
         (
             "parameters, functions and intervals",

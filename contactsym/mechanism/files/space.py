@@ -40,6 +40,11 @@ class FrameSpec:
 
     ``kind`` is ``body_fixed``, ``space_fixed`` (``sequence`` such as ``"zyx"``, three
     ``angles``) or ``euler_parameters`` (four ``angles``: a unit quaternion).
+
+    Examples
+    --------
+    >>> FrameSpec("rod", None, "body_fixed", "zyx", dynamicsymbols("psi theta phi"), 3).angles
+    [psi(t), theta(t), phi(t)]
     """
 
     name: str
@@ -52,7 +57,13 @@ class FrameSpec:
 
 @dataclass(frozen=True)
 class SpacePointSpec:
-    """A point at ``position`` in O, or fixed in ``frame`` at ``offset`` (in that frame) from point ``base``."""
+    """A point at ``position`` in O, or fixed in ``frame`` at ``offset`` (in that frame) from point ``base``.
+
+    Examples
+    --------
+    >>> SpacePointSpec("A", None, "C", "rod", (1, 0, 0), 7).frame
+    'rod'
+    """
 
     name: str
     position: tuple | None
@@ -64,7 +75,13 @@ class SpacePointSpec:
 
 @dataclass(frozen=True)
 class SpaceBodySpec:
-    """A rigid body at a point, turning with a frame; ``inertia`` = (xx, yy, zz, xy, yz, zx) in that frame."""
+    """A rigid body at a point, turning with a frame; ``inertia`` = (xx, yy, zz, xy, yz, zx) in that frame.
+
+    Examples
+    --------
+    >>> SpaceBodySpec("C", "rod", 1, (1, 2, 2, 0, 0, 0), 9).inertia[:3]
+    (1, 2, 2)
+    """
 
     point: str
     frame: str
@@ -75,7 +92,13 @@ class SpaceBodySpec:
 
 @dataclass(frozen=True)
 class SpaceLoadSpec:
-    """A force (components in O) at a point, or a moment (in O) on the body of a frame."""
+    """A force (components in O) at a point, or a moment (in O) on the body of a frame.
+
+    Examples
+    --------
+    >>> SpaceLoadSpec(frame="rod", moment=(0, 0, 1)).point is None
+    True
+    """
 
     point: str | None = None
     force: tuple | None = None
@@ -85,7 +108,13 @@ class SpaceLoadSpec:
 
 @dataclass(frozen=True)
 class SpatialSpec:
-    """The mechanics of a spatial scene file, as read (:func:`read_space`)."""
+    """The mechanics of a spatial scene file, as read (:func:`contactsym.mechanism.files.spatial.read_space`).
+
+    Examples
+    --------
+    >>> SpatialSpec((), (), (), (), ()).frames
+    ()
+    """
 
     frames: tuple[FrameSpec, ...]
     points: tuple[SpacePointSpec, ...]
@@ -138,7 +167,21 @@ def singular_set(kind: str, sequence: str) -> sp.Expr:
 
 def check_orientations(reader, spec: SpatialSpec, coordinates, at: dict) -> None:
     """Refuse a rotation sequence that is singular (gimbal lock) everywhere, at the ``[at]``
-    configuration, or somewhere in the ``[intervals]`` of its angles."""
+    configuration, or somewhere in the ``[intervals]`` of its angles.
+
+    Examples
+    --------
+    >>> from contactsym.mechanism.files import read_spec
+    >>> text = ('[scene]\\ncoordinates = ["z", "a"]\\ndimensions = 3\\n[frames]\\n'
+    ...         'F = {body_fixed = "zyx", angles = ["0", "a", "0"]}\\n[points]\\nC = ["0", "0", "z"]\\n'
+    ...         '[[bodies]]\\npoint = "C"\\nframe = "F"\\nmass = "1"\\ninertia = ["1", "1", "1"]\\n'
+    ...         '[[contacts]]\\ngap = "z"\\nreaction = "N"\\n[at]\\na = "pi/2"\\n')
+    >>> try:
+    ...     read_spec(text, "a.toml")
+    ... except SceneFileError as error:
+    ...     print(str(error).split(";")[0])
+    a.toml:5: the rotation zyx of frame 'F' (angles 0, a, 0) is in gimbal lock at the configuration [at] (cos(a) = 0)
+    """
     for frame in spec.frames:
         if frame.kind == "euler_parameters":
             if not is_identity(sum(e**2 for e in frame.angles), 1):

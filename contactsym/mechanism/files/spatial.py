@@ -263,6 +263,16 @@ def read_space(reader: FormulaReader, coordinates, eps) -> tuple[SpatialSpec, tu
     """The frames, points, bodies, loads and contacts of a spatial file: (SpatialSpec, contacts, energy).
 
     ``energy`` holds the ``[energy]`` formulas (``kinetic``, ``potential``).
+
+    Examples
+    --------
+    >>> from contactsym.mechanism.files import read_spec
+    >>> text = ('[scene]\\ncoordinates = ["z"]\\ndimensions = 3\\n[points]\\nC = ["0", "0", "z"]\\n'
+    ...         '[[masses]]\\npoint = "C"\\nmass = "1"\\n'
+    ...         '[[contacts]]\\ngap = {point = "C", normal = ["0", "0", "1"]}\\nreaction = "N"\\n')
+    >>> spec = read_spec(text, "a.toml")
+    >>> spec.contacts[0].gap, [p.name for p in spec.space.points]
+    (z(t), ['C'])
     """
     frames = _frames(reader)
     names = [f.name for f in frames]
