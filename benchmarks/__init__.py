@@ -20,6 +20,7 @@ BENCHMARKS = (
     "closed_forms_k3",
     "hopf_direction",
     "squeal",
+    "spatial",
 )
 
 

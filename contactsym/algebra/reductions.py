@@ -285,8 +285,14 @@ def _expand_angles(expr: sp.Expr) -> sp.Expr:
 def _reduced(poly, pairs):
     """The normal form: cos q**2 = 1 - sin q**2 and s**2 = 1 used until no power of either exceeds 1."""
     R = poly.ring
+    signs = [i for i, g in enumerate(R.symbols) if isinstance(g, SignSymbol)]
+    if signs and any(poly.degree(i) > 1 for i in signs):  # s**2 = 1: each exponent of s taken mod 2, term by term
+        reduced = {}
+        for monomial, coefficient in poly.terms():
+            monomial = tuple(e % 2 if i in signs else e for i, e in enumerate(monomial))
+            reduced[monomial] = reduced.get(monomial, 0) + coefficient
+        poly = R.from_dict({m: c for m, c in reduced.items() if c})
     squares = [(R.gens[c] ** 2, 1 - R.gens[s] ** 2, c) for c, s in pairs]
-    squares += [(R.gens[i] ** 2, R.one, i) for i, g in enumerate(R.symbols) if isinstance(g, SignSymbol)]
     for square, value, i in squares:
         while poly.degree(i) > 1:
             quotient, remainder = poly.div(square)

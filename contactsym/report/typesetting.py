@@ -117,11 +117,19 @@ class _Named:
         return symbol
 
 
+#: Long expressions beyond this many nodes are described by their size as derived, not expanded.
+DESCRIBE_NODES = 20000
+
+
 def _describe(expr: sp.Expr) -> str:
     """A short description of a long expression: its kind, number of terms and symbols."""
+    symbols = ", ".join(f"${tex(s)}$" for s in sorted(expr.free_symbols, key=str))
+    if not isinstance(expr, sp.Expr):  # a condition (And, Or, Not of relations): nothing to expand
+        return f"a condition of {_nodes(expr, 10**6)} nodes in {symbols}"
+    if _nodes(expr, DESCRIBE_NODES) > DESCRIBE_NODES:  # expanding it could take minutes: its size as derived
+        return f"an expression of more than {DESCRIBE_NODES} nodes in {symbols}"
     numerator, denominator = sp.fraction(sp.together(expr))
     terms = len(sp.Add.make_args(sp.expand(numerator)))
-    symbols = ", ".join(f"${tex(s)}$" for s in sorted(expr.free_symbols, key=str))
     kind = "a polynomial" if denominator == 1 else "a rational function, numerator"
     try:
         degree = sp.Poly(sp.expand(numerator), *sorted(expr.free_symbols, key=str)).total_degree()

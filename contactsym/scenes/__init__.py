@@ -21,6 +21,7 @@ _MODULES = {
     "double-pendulum-tip": "double_pendulum_tip",
     "painleve-rod": "painleve_rod",
     "two-leg-block": "two_leg_block",
+    "painleve-rod-3d": "painleve_rod_3d",
 }
 
 #: The scene that ``contactsym`` shows when no scene is named.
@@ -39,7 +40,7 @@ def scene_names() -> list[str]:
     Examples
     --------
     >>> scene_names()
-    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake', 'double-pendulum-tip', 'painleve-rod', 'two-leg-block']
+    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake', 'double-pendulum-tip', 'painleve-rod', 'two-leg-block', 'painleve-rod-3d']
     """
     return list(_MODULES)
 
@@ -54,7 +55,7 @@ def scene(name: str):
     >>> scene("break")
     Traceback (most recent call last):
     ...
-    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, double-pendulum-tip, painleve-rod, two-leg-block.
+    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, double-pendulum-tip, painleve-rod, two-leg-block, painleve-rod-3d.
     """
     name = scene_name(name)
     if name not in _MODULES:

@@ -26,6 +26,12 @@ def read_points(reader: FormulaReader) -> tuple[PointSpec, ...]:
         body = angle = None
         if isinstance(entry, dict):
             reader.checked(entry, "points", "points.entry")
+            if "position" not in entry or {"frame", "offset"} & set(entry):
+                reader.doc.fail(
+                    "points",
+                    name,
+                    "a point of the plane is {position = [x, y], ...} (frame and offset: dimensions = 3)",
+                )
             if "body" in entry:
                 body = reader.reference(entry, "body", "points", list(points), "points declared above it")
             angle = reader.formula(entry["angle"], "points", name) if "angle" in entry else None
@@ -49,6 +55,8 @@ def read_motion(reader: FormulaReader, points: tuple[PointSpec, ...]) -> dict:
     for index, entry in enumerate(reader.section("bodies", kind=list)):
         where = f"bodies.{index}"
         reader.checked(entry, where, "bodies")
+        if "angle" not in entry or "frame" in entry:
+            reader.doc.fail(where, None, "a body in the plane needs angle = ... (frame = ... is for dimensions = 3)")
         angle = reader.formula(entry["angle"], where, "angle")
         point = reader.reference(entry, "point", where, known, "[points]")
         mass, moment = (reader.formula(entry[k], where, k) for k in ("mass", "inertia"))

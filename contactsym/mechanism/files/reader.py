@@ -44,6 +44,9 @@ The motion
     ``Psi_1`` and the sign symbols ``s_1``; each admissible for its symbol) for the
     report's region maps and phase portrait. See :mod:`contactsym.mechanism.files.figures`.
 
+Bodies in space: ``dimensions = 3`` in ``[scene]`` with ``[frames]``, points, bodies, loads
+and contacts in 3-D (see :mod:`contactsym.mechanism.files.spatial`).
+
 A file is refused, with the cap named, beyond the sizes of :class:`Limits` (bytes,
 coordinates, contacts, points, ...; pass ``limits=Limits(...)`` to read a larger one) and
 the caps on formulas of :mod:`contactsym.parse`. Only regular files are read.
@@ -67,6 +70,8 @@ from .bodies import Plane, read_motion, read_points
 from .contacts import COMPLIANCE_LAWS, build_contact, read_contacts
 from .declarations import FormulaReader, read_declarations
 from .figures import pipeline_names, read_figures
+from .space import Space, check_orientations
+from .spatial import read_space
 from .spec import FigurePlan, Limits, SceneSpec
 from .toml_source import SceneFileError, TomlSource, shown
 
@@ -114,6 +119,7 @@ def _sized(doc: TomlSource, limits: Limits) -> None:
         ("coordinates", "scene", "coordinates", "max_coordinates", count("scene", "coordinates")),
         ("contacts", "contacts", None, "max_contacts", count("contacts")),
         ("points", "points", None, "max_points", count("points")),
+        ("frames", "frames", None, "max_points", count("frames")),
         ("masses, bodies and loads", "", None, "max_items", count("masses") + count("bodies") + count("loads")),
         (
             "parameters, functions and intervals",
@@ -133,6 +139,23 @@ def _switching(contacts, formulas) -> int:
     contact, one per distinct Abs or sign written in the motion."""
     written = {a.args[0] for f in formulas for a in f.atoms(sp.Abs, sp.sign)}
     return len(written) + sum(c.friction is not None for c in contacts)
+
+
+def _dimensions(doc: TomlSource, head: dict, lagrangian: bool) -> int:
+    """2 (the plane, by default) or 3 (space: :mod:`contactsym.mechanism.files.spatial`)."""
+    dimensions = head.get("dimensions", 2)
+    if isinstance(dimensions, bool) or dimensions not in (2, 3):
+        doc.fail("scene", "dimensions", f"dimensions = {shown(dimensions)} must be 2 (the plane) or 3 (space)")
+    if dimensions == 3 and not lagrangian:
+        doc.fail(
+            "scene",
+            "dimensions",
+            "dimensions = 3 is for a Lagrangian in space ([frames], [points], "
+            "[[bodies]]); with [accelerations] leave it out",
+        )
+    if dimensions == 2 and "frames" in doc.data:
+        doc.fail("frames", None, "[frames] are for a scene in space; add dimensions = 3 to [scene]")
+    return dimensions
 
 
 def read_spec(
@@ -165,9 +188,13 @@ def read_spec(
     if not lagrangian and any(t in doc.data for t in _LAGRANGIAN_TABLES):
         used = next(t for t in _LAGRANGIAN_TABLES if t in doc.data)
         doc.fail(used, None, f"[{used}] is for a Lagrangian, but the file gives [accelerations]; remove one of them")
-    points = read_points(reader) if lagrangian else ()
+    spatial = _dimensions(doc, head, lagrangian) == 3
+    points = read_points(reader) if lagrangian and not spatial else ()
     eps = SceneSpec.eps
-    contacts = read_contacts(reader, coordinates, lagrangian, [p.name for p in points], eps)
+    if spatial:
+        space, contacts, energy = read_space(reader, coordinates, eps)
+    else:
+        contacts = read_contacts(reader, coordinates, lagrangian, [p.name for p in points], eps)
     solve_for = reader.formula(head["solve_for"], "scene", "solve_for") if "solve_for" in head else None
     if solve_for is not None and not isinstance(solve_for, sp.Symbol):
         doc.fail("scene", "solve_for", f"solve_for = {shown(head['solve_for'])} must name a parameter")
@@ -187,7 +214,12 @@ def read_spec(
         solve_for=solve_for,
         eps=eps,
     )
-    if lagrangian:
+    if spatial:
+        check_orientations(reader, space, coordinates, dict(options["at"]))
+        options.update(space=space, **energy)
+        forces = [c for load in space.loads for c in (load.force or load.moment)]
+        written = [energy["kinetic"], energy["potential"], *forces]
+    elif lagrangian:
         options.update(points=points, **read_motion(reader, points))
         written = [
             options["kinetic"],
@@ -228,7 +260,8 @@ def build_scene(spec: SceneSpec) -> Scene:
     """
     if not isinstance(spec, SceneSpec):
         raise SceneFileError(f"build_scene takes a SceneSpec (from read_spec), not {shown(spec)}.")
-    plane = Plane(spec.points) if spec.lagrangian else None
+    plane = Plane(spec.points) if spec.lagrangian and spec.space is None else None
+    plane = Space(spec.space) if spec.space is not None else plane
     contacts = [build_contact(c, plane, spec.source, spec.eps) for c in spec.contacts]
     presentation = dict(spec.presentation)
     count_presentation = None

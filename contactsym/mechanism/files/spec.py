@@ -65,10 +65,13 @@ class TableSchema:
     ``keys`` maps a fixed key to its kind; a table of free names (``[parameters]``) has
     ``keys = None`` and gives the kind of every entry as ``entries``. Kinds: ``formula``
     (text in quotes or a number), ``names`` (a list of names), ``pair`` (two formulas),
-    ``bool``, ``text``, ``label`` (the scene's name), ``name`` (a name declared elsewhere in
+    ``formulas`` (a list of formulas), ``bool``, ``text``, ``label`` (the scene's name), ``name`` (a name declared elsewhere in
     the file), ``new name`` (a name this key declares), ``table`` and ``tables`` (a table, an
     array of tables), ``law``, ``number``, ``numbers`` (a pair of numbers), ``entry`` (read
-    by the table's own rules).
+    by the table's own rules). In a spatial file (``dimensions = 3``, see
+    :mod:`contactsym.mechanism.files.spatial`) a ``pair`` is three formulas (x, y, z), a body's
+    ``inertia`` is its tensor in its frame (three principal moments or six entries xx, yy, zz,
+    xy, yz, zx), and a gap may be a table ``{point, normal, distance}``.
     """
 
     keys: MappingProxyType | None
@@ -112,8 +115,16 @@ SCHEMA = MappingProxyType(
             presentation="table",
             count_presentation="table",
             figures="table",
+            frames="table",
         ),
-        "scene": _table(("coordinates",), name="label", description="text", coordinates="names", solve_for="formula"),
+        "scene": _table(
+            ("coordinates",),
+            name="label",
+            description="text",
+            coordinates="names",
+            solve_for="formula",
+            dimensions="number",
+        ),
         "parameters": _free("entry"),
         "parameters.entry": _table((), assume="text", symbol="text", interval="pair"),
         "intervals": _free("pair"),
@@ -121,15 +132,16 @@ SCHEMA = MappingProxyType(
         "accelerations": _free("formula"),
         "energy": _table((), kinetic="formula", potential="formula"),
         "points": _free("entry"),
-        "points.entry": _table(("position",), position="pair", body="name", angle="formula"),
+        "points.entry": _table((), position="pair", body="name", angle="formula", frame="name", offset="pair"),
         "masses": _table(("point", "mass"), point="name", mass="formula"),
         "bodies": _table(
-            ("point", "angle", "mass", "inertia"), point="name", angle="formula", mass="formula", inertia="formula"
+            ("point", "mass", "inertia"), point="name", angle="formula", frame="name", mass="formula", inertia="formula"
         ),
-        "loads": _table((), point="name", force="pair", angle="formula", moment="formula"),
+        "loads": _table((), point="name", force="pair", angle="formula", frame="name", moment="formula"),
         "contacts": _table(
             ("gap", "reaction"), gap="formula", reaction="new name", unilateral="bool", law="law", friction="table"
         ),
+        "contacts.gap": _table(("point", "normal"), point="name", normal="pair", distance="formula"),
         "contacts.friction": _table(("direction",), mu="formula", viscous="formula", point="name", direction="entry"),
         "at": _free("formula"),
         "presentation": _free("formula"),
@@ -138,6 +150,15 @@ SCHEMA = MappingProxyType(
             ("x", "y", "x_range", "y_range"), x="name", y="name", x_range="numbers", y_range="numbers", values="table"
         ),
         "figures.values": _free("number"),
+        "frames": _free("entry"),
+        "frames.entry": _table(
+            (),
+            body_fixed="text",
+            space_fixed="text",
+            angles="formulas",
+            euler_parameters="formulas",
+            relative_to="name",
+        ),
     }
 )
 
@@ -345,6 +366,8 @@ class SceneSpec:
     solve_for: sp.Symbol | None = None
     figures: FigurePlan | None = None
     eps: sp.Symbol = sp.Symbol("epsilon", positive=True)
+    #: The frames, points, bodies and loads of a spatial file (``dimensions = 3``), else None.
+    space: object = None
 
     @property
     def lagrangian(self) -> bool:

@@ -54,6 +54,33 @@ BASE = {
     "figures": {"x": "theta", "y": "mu", "x_range": [0.1, 1.5], "y_range": [0, 2], "values": {"m": 1, "J": 1}},
 }
 
+#: A spatial document (dimensions = 3) holding the keys only a scene in space has.
+SPATIAL = {
+    "scene": {"coordinates": ["x", "y", "z", "psi", "theta", "phi"], "dimensions": 3},
+    "parameters": {"m": "positive", "l": "positive", "J": "positive", "mu": "positive", "F": "real"},
+    "intervals": {"theta": [0, "pi/2"]},
+    "frames": {
+        "base": {"space_fixed": "zyx", "angles": ["0", "0", "0"]},
+        "tilt": {"euler_parameters": ["1", "0", "0", "0"], "relative_to": "base"},
+        "rod": {"body_fixed": "zyx", "angles": ["psi", "theta", "phi"], "relative_to": "tilt"},
+    },
+    "points": {
+        "C": ["x", "y", "z"],
+        "B": {"position": ["x", "y", "z"]},
+        "P": {"body": "C", "frame": "rod", "offset": ["l", "0", "0"]},
+    },
+    "masses": [{"point": "B", "mass": "m"}],
+    "bodies": [{"point": "C", "frame": "rod", "mass": "m", "inertia": ["J", "m*l^2/3", "m*l^2/3"]}],
+    "loads": [{"point": "C", "force": ["0", "0", "-m"]}, {"frame": "rod", "moment": ["F", "0", "0"]}],
+    "contacts": [
+        {
+            "gap": {"point": "P", "normal": ["0", "0", "1"], "distance": "0"},
+            "reaction": "N",
+            "friction": {"mu": "mu", "point": "P", "direction": ["1", "0", "0"]},
+        }
+    ],
+}
+
 #: Values of another kind than each kind of the schema (a formula gets text outside the grammar too).
 WRONG = {
     "formula": [True, [1, 2], {"a": 1}, "x +", "nope", "1e400"],
@@ -70,7 +97,11 @@ WRONG = {
     "tables": [1, "x", {"a": 1}, [1]],
     "law": [1, "hertz", {"name": 1}, {"name": "law"}, {"name": "generic", "stiffness": 1}],
     "entry": [1, True, "x"],
+    "formulas": ["x", [True], {"a": 1}, ["x +"]],
 }
+
+#: In space a pair is three formulas (x, y, z).
+WRONG_IN_SPACE = {**WRONG, "pair": ["x", ["1"], [True, 1, 1], {"a": 1}, ["1", "2"]]}
 
 #: Bad entries of the tables of free names.
 WRONG_ENTRIES = {
@@ -82,6 +113,7 @@ WRONG_ENTRIES = {
     "presentation": [True, [1], "nope"],
     "count_presentation": [True, [1], "nope"],
     "figures.values": ["1", True, [1]],
+    "frames": [1, True, "x", {"body_fixed": "zyx"}, {"body_fixed": "zyy", "angles": ["0", "0", "0"]}],
 }
 
 
@@ -126,6 +158,8 @@ def _where(schema: str, document: dict) -> tuple[list, str]:
         "points.entry": (["points", "P"], "points"),
         "contacts.friction": (["contacts", 0, "friction"], "contacts.0"),
         "figures.values": (["figures", "values"], "figures"),
+        "frames.entry": (["frames", "rod"], "frames"),
+        "contacts.gap": (["contacts", 0, "gap"], "contacts.0"),
     }
     if schema in paths:
         return paths[schema]
@@ -134,13 +168,27 @@ def _where(schema: str, document: dict) -> tuple[list, str]:
     return [schema], schema
 
 
+def _holds(document: dict, schema: str, key: str | None) -> bool:
+    try:
+        table = _table_of(document, schema, key)[0]
+    except (KeyError, IndexError, TypeError):
+        return False
+    return key is None or key in table
+
+
+def _document(schema: str, key: str | None) -> dict:
+    """BASE (a scene in the plane), or SPATIAL for the keys that only a scene in space has."""
+    return BASE if _holds(BASE, schema, key) else SPATIAL
+
+
 def _cases():
     for schema, rules in SCHEMA.items():
         if rules.keys is not None:
             for key, kind in rules.keys.items():
                 if key == "accelerations":  # the other way to give the motion: see ACCELERATIONS
                     continue
-                for index, wrong in enumerate(WRONG[kind]):
+                wrongs = WRONG if _document(schema, key) is BASE else WRONG_IN_SPACE
+                for index, wrong in enumerate(wrongs[kind]):
                     yield pytest.param(schema, key, wrong, id=f"{schema or 'top'}.{key}={kind}#{index}")
         for index, wrong in enumerate(WRONG_ENTRIES.get(schema, ())):
             yield pytest.param(schema, None, wrong, id=f"{schema}.<entry>#{index}")
@@ -153,6 +201,9 @@ def _table_of(document: dict, schema: str, key: str | None):
     for step in path:
         table = table[step]
     array = path[0] if path and isinstance(document.get(path[0]), list) else None
+    if schema == "frames.entry" and key is not None and key not in table:  # the frame that has the key
+        name = next((n for n, entry in document["frames"].items() if key in entry), path[1])
+        return document["frames"][name], block
     if array and key is not None and key not in table:
         for index, entry in enumerate(document[array]):
             inner = entry.get(path[2]) if len(path) > 2 else entry
@@ -161,19 +212,20 @@ def _table_of(document: dict, schema: str, key: str | None):
     return table, block
 
 
-def test_the_base_document_is_valid_and_holds_every_key_of_the_schema():
+def test_the_base_documents_are_valid_and_hold_every_key_of_the_schema():
     text, _ = dump(BASE)
     scene = read_scene(text, "b.toml")
     assert scene.k == 2 and scene.figure_plan.x == "theta"
+    assert read_spec(dump(SPATIAL)[0], "s.toml").space is not None
     for schema, rules in SCHEMA.items():
         if rules.keys is not None:
-            present = {key for key in rules.keys if key in _table_of(BASE, schema, key)[0]}
+            present = {key for key in rules.keys if _holds(BASE, schema, key) or _holds(SPATIAL, schema, key)}
             assert set(rules.keys) - {"accelerations"} == present, schema
 
 
 @pytest.mark.parametrize("schema, key, wrong", list(_cases()))
 def test_a_wrong_kind_at_any_key_gives_one_line_at_its_table(schema, key, wrong):
-    document = copy.deepcopy(BASE)
+    document = copy.deepcopy(_document(schema, key))
     table, block = _table_of(document, schema, key)
     table[key if key is not None else "zz" if schema != "figures.values" else "m"] = wrong
     text, blocks = dump(document)
