@@ -12,6 +12,7 @@ derived system and its code generation (1.7 % of a brake cycle, measured with cP
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -20,6 +21,7 @@ import numpy as np
 import sympy as sp
 
 from .. import numerics
+from ..numerics.buffered import BufferedCode, through_tan
 from ..validate import shorten
 from .grid import AtlasError, Grid
 from .kernel import Kernel, Setup, setup_for
@@ -65,6 +67,8 @@ class Quantity:
             raise AtlasError("a Quantity needs a name (text), a builder (a function) and options (a dict).")
 
     def build(self, scene, grid: Grid, values: Mapping | None) -> Kernel:
+        if self.builder in _VECTORISED:  # their kernels are kept per scene: see _once_per_scene
+            return _once_per_scene(self.builder, scene, grid, values, self.options)
         return self.builder(scene, grid, values, **self.options)
 
     def key(self) -> str:
@@ -74,6 +78,8 @@ class Quantity:
 
 
 def _classifier(setup: Setup, conditions, what: str, extra=()) -> numerics.PointClassifier:
+    """A classifier of the grid's and the fixed symbols (then ``extra``): one per scene and quantity, whatever
+    the fixed numbers (they are arguments of its code, read once per chunk: see ``Setup.columns``)."""
     conditions = tuple(setup.prepare(c, what, extra) for c in conditions)
     try:
         return _built_classifier(conditions, setup.symbols + tuple(extra))
@@ -86,6 +92,43 @@ def _built_classifier(conditions: tuple, symbols: tuple) -> numerics.PointClassi
     """One classifier per scene and quantity: building one factors every condition (``sp.factor``),
     which costs far more than a sweep's chunk; the classifier is read-only once built."""
     return numerics.PointClassifier(conditions, symbols)
+
+
+#: Kernels of the vectorised quantities, per scene: see :func:`_once_per_scene`.
+_KERNELS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _once_per_scene(builder: Callable, scene, grid: Grid, values, options: dict) -> Kernel:
+    """The kernel of a vectorised quantity, kept per scene, grid (names and ends), fixed numbers and options.
+
+    The symbolic work of a kernel (conditions prepared, code generated) costs far more than a
+    chunk; a sweep run again, or over another grid of the same parameters and range, takes the
+    kernel built before (read-only: its scratch is per thread). Fixed values that are not
+    numbers (functions) are not compared: such a kernel is built afresh.
+    """
+    try:
+        fixed = tuple(sorted((type(k).__name__, str(k), float(v)) for k, v in dict(values or {}).items()))
+    except (TypeError, ValueError):
+        return builder(scene, grid, values, **options)
+    ends = tuple((float(a.min()), float(a.max())) for a in grid.axes)
+    key = (builder.__name__, grid.names, ends, fixed, repr(sorted(options.items())))
+    store = _KERNELS.setdefault(scene, {})
+    if key not in store:
+        if len(store) >= 32:  # a long session of many sweeps: keep the memory bounded
+            store.clear()
+        store[key] = builder(scene, grid, values, **options)
+    return store[key]
+
+
+@lru_cache(maxsize=32)
+def _robust_function(robust: tuple, symbols: tuple):
+    """The robust regions' code, once per scene and fixed values (code generation costs more than a chunk):
+    buffered code (truth values as 1.0 and 0.0, even powers of sin and cos through tan), else lambdify."""
+    try:
+        return BufferedCode(symbols, [through_tan(b) for b in robust])
+    except numerics.NumericsError:
+        function = numerics.lambdify_cse(symbols, list(robust))
+        return lambda columns, buffers: function(*columns)
 
 
 def _strict(condition) -> list:
@@ -137,18 +180,21 @@ class _Classification(Kernel):
 
     def __init__(self, setup: Setup, robust: list, classifier):
         self.setup, self.classifier = setup, classifier
-        self.function = numerics.lambdify_cse(setup.symbols, robust)
+        self.function = _robust_function(tuple(setup.specialised(b) for b in robust), setup.swept)
 
     def evaluate(self, points):
         n = len(points)
-        columns = self.setup.columns(points)
+        columns = self.setup.grid_columns(points)
+        buffers = self.scratch("robust", (getattr(self.function, "buffers", 0), n))
         stable, unstable, dependent = (
-            np.broadcast_to(np.asarray(m, dtype=bool), (n,)) for m in self.function(*columns)
+            np.broadcast_to(np.asarray(m) != 0, (n,)) for m in self.function(columns, buffers)
         )
         out = np.full((n, 2), np.nan)
-        out[:, 0] = np.select([stable, unstable, dependent], [1.0, -1.0, 0.0], np.nan)
+        region = out[:, 0]
+        for value, mask in ((0.0, dependent), (-1.0, unstable), (1.0, stable)):  # the first that holds wins
+            np.copyto(region, value, where=mask)
         if self.classifier is not None:
-            out[:, 1] = self.classifier(*columns).stable
+            out[:, 1] = self.classifier(*columns, *self.setup.fixed_columns(n)).stable
         return out
 
 
@@ -174,7 +220,7 @@ class _StableFraction(Kernel):
 
     def evaluate(self, points):
         n, count = len(points), len(self.laws)
-        columns = [np.repeat(c, count) for c in self.setup.columns(points)]
+        columns = [np.repeat(c, count) for c in self.setup.grid_columns(points)] + self.setup.fixed_columns(n * count)
         columns += [np.tile(self.laws[:, j], n) for j in range(self.laws.shape[1])]
         stable = self.classifier(*columns).stable.reshape(n, count)
         return (stable == 1).mean(axis=1)
@@ -381,6 +427,9 @@ def function(fn: Callable, outputs: Sequence[str] | None = None) -> Quantity:
     names = tuple(names)
     return Quantity(f"function {getattr(fn, '__qualname__', 'value')}", build_function, {"fn": fn, "outputs": names})
 
+
+#: The builders whose kernels are kept per scene (vectorised: no state of their own).
+_VECTORISED = (_build_leading_eigenvalue, _build_classification, _build_stable_fraction, _build_equilibrium_count)
 
 #: Built-in quantities by name, with their default options.
 QUANTITIES = {
