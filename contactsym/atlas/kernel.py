@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import threading
+import weakref
 from dataclasses import dataclass
 
 import numpy as np
@@ -11,7 +12,7 @@ import sympy as sp
 from .. import numerics
 from .grid import REASON_LIMIT, AtlasError, Grid
 
-__all__ = ["Kernel", "Reasons", "Setup", "setup_for"]
+__all__ = ["Kernel", "Reasons", "Setup", "once_per_scene", "setup_for"]
 
 
 def _reason(error: BaseException) -> str:
@@ -204,3 +205,39 @@ def setup_for(scene, grid: Grid, values) -> Setup:
         tuple(float(vals.numbers[s]) for s in fixed),
         numerics.NumericValues({}, vals.functions),
     )
+
+
+#: Kernels of the vectorised quantities, per scene: see :func:`once_per_scene`.
+_KERNELS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def once_per_scene(builder, scene, grid: Grid, values, options: dict) -> Kernel:
+    """The kernel of a vectorised quantity, kept per scene, grid (names and ends), fixed numbers and options.
+
+    The symbolic work of a kernel (conditions prepared, code generated) costs far more than a
+    chunk; a sweep run again, or over another grid of the same parameters and range, takes the
+    kernel built before (read-only: its scratch is per thread). Fixed values that are not
+    numbers (functions) are not compared: such a kernel is built afresh.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> from contactsym import atlas
+    >>> from contactsym.atlas.quantities import classification
+    >>> builder, grid = classification().builder, atlas.as_grid({"mu": [0.5, 1.5]})
+    >>> first = once_per_scene(builder, cs.scene("brake"), grid, {"alpha": 1.0, "m": 1}, {"signs": None})
+    >>> first is once_per_scene(builder, cs.scene("brake"), grid, {"alpha": 1.0, "m": 1}, {"signs": None})
+    True
+    """
+    try:
+        fixed = tuple(sorted((type(k).__name__, str(k), float(v)) for k, v in dict(values or {}).items()))
+    except (TypeError, ValueError):
+        return builder(scene, grid, values, **options)
+    ends = tuple((float(a.min()), float(a.max())) for a in grid.axes)
+    key = (builder.__name__, grid.names, ends, fixed, repr(sorted(options.items())))
+    store = _KERNELS.setdefault(scene, {})
+    if key not in store:
+        if len(store) >= 32:  # a long session of many sweeps: keep the memory bounded
+            store.clear()
+        store[key] = builder(scene, grid, values, **options)
+    return store[key]

@@ -12,7 +12,6 @@ derived system and its code generation (1.7 % of a brake cycle, measured with cP
 
 from __future__ import annotations
 
-import weakref
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -24,7 +23,7 @@ from .. import numerics
 from ..numerics.buffered import BufferedCode, through_tan
 from ..validate import shorten
 from .grid import AtlasError, Grid
-from .kernel import Kernel, Setup, setup_for
+from .kernel import Kernel, Setup, once_per_scene, setup_for
 from .options import check_options
 from .pointwise import SQUEAL_METHODS, PointFailure, build_catastrophe, build_cycle, build_function, build_squeal
 
@@ -67,8 +66,8 @@ class Quantity:
             raise AtlasError("a Quantity needs a name (text), a builder (a function) and options (a dict).")
 
     def build(self, scene, grid: Grid, values: Mapping | None) -> Kernel:
-        if self.builder in _VECTORISED:  # their kernels are kept per scene: see _once_per_scene
-            return _once_per_scene(self.builder, scene, grid, values, self.options)
+        if self.builder in _VECTORISED:  # their kernels are kept per scene: see once_per_scene
+            return once_per_scene(self.builder, scene, grid, values, self.options)
         return self.builder(scene, grid, values, **self.options)
 
     def key(self) -> str:
@@ -92,32 +91,6 @@ def _built_classifier(conditions: tuple, symbols: tuple) -> numerics.PointClassi
     """One classifier per scene and quantity: building one factors every condition (``sp.factor``),
     which costs far more than a sweep's chunk; the classifier is read-only once built."""
     return numerics.PointClassifier(conditions, symbols)
-
-
-#: Kernels of the vectorised quantities, per scene: see :func:`_once_per_scene`.
-_KERNELS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
-
-
-def _once_per_scene(builder: Callable, scene, grid: Grid, values, options: dict) -> Kernel:
-    """The kernel of a vectorised quantity, kept per scene, grid (names and ends), fixed numbers and options.
-
-    The symbolic work of a kernel (conditions prepared, code generated) costs far more than a
-    chunk; a sweep run again, or over another grid of the same parameters and range, takes the
-    kernel built before (read-only: its scratch is per thread). Fixed values that are not
-    numbers (functions) are not compared: such a kernel is built afresh.
-    """
-    try:
-        fixed = tuple(sorted((type(k).__name__, str(k), float(v)) for k, v in dict(values or {}).items()))
-    except (TypeError, ValueError):
-        return builder(scene, grid, values, **options)
-    ends = tuple((float(a.min()), float(a.max())) for a in grid.axes)
-    key = (builder.__name__, grid.names, ends, fixed, repr(sorted(options.items())))
-    store = _KERNELS.setdefault(scene, {})
-    if key not in store:
-        if len(store) >= 32:  # a long session of many sweeps: keep the memory bounded
-            store.clear()
-        store[key] = builder(scene, grid, values, **options)
-    return store[key]
 
 
 @lru_cache(maxsize=32)
