@@ -326,6 +326,12 @@ def reason_text(ds):
     xr = _require("xarray")
     if not isinstance(ds, xr.Dataset) or "reason_code" not in ds or "reasons" not in ds.attrs:
         raise AtlasError(f"{shorten(ds)} is not an atlas: give the Dataset that sweep returned.")
-    table = np.asarray(json.loads(ds.attrs["reasons"]), dtype=object)
     codes = ds["reason_code"]
-    return xr.DataArray(table[codes.values], dims=codes.dims, coords=codes.coords, name="reason")
+    try:
+        table = np.asarray(json.loads(ds.attrs["reasons"]), dtype=object)
+        texts = table[np.asarray(codes.values, dtype=np.int64)]
+    except (TypeError, ValueError, IndexError):  # JSON that is not a list of texts, or codes beyond it
+        raise AtlasError(
+            "the atlas's reason codes and attrs['reasons'] do not match; the Dataset was changed."
+        ) from None
+    return xr.DataArray(texts, dims=codes.dims, coords=codes.coords, name="reason")
