@@ -4,7 +4,8 @@ Ours: the closed-form Hurwitz conditions of the brake (4.7), factored, with fact
 known sign dropped, evaluated vectorised by ``contactsym.numerics.PointClassifier`` with
 a certified error bound; points inside the band are decided exactly in rationals.
 Baseline: per point, the matrix (4.5) and ``numpy.linalg.eigvals`` (timed on a subsample
-and extrapolated; all points are checked against the batched eigenvalues).
+and extrapolated; all points are checked against the batched eigenvalues). Times are CPU
+seconds of this process (best of several runs): the bench shares its machine.
 """
 
 from __future__ import annotations
@@ -42,20 +43,22 @@ def _on_hopf_line(rng, n):
 
 
 def _best_of(repeat, function):
+    """(seconds, result): the least CPU time of this process over ``repeat`` runs. CPU time, not wall time: on
+    a shared machine a run of a few milliseconds is preempted by the other jobs more often than not."""
     best, result = math.inf, None
     for _ in range(repeat):
-        started = time.perf_counter()
+        started = time.process_time()
         result = function()
-        best = min(best, time.perf_counter() - started)
+        best = min(best, time.process_time() - started)
     return best, result
 
 
 def _per_point_eigenvalues(M, values, index) -> float:
     """Seconds per point: build (4.5) for one point, then ``numpy.linalg.eigvals``."""
-    started = time.perf_counter()
+    started = time.process_time()
     for i in index:
         np.linalg.eigvals(np.array(M(*[v[i] for v in values]), dtype=float)).real.max()
-    return (time.perf_counter() - started) / len(index)
+    return (time.process_time() - started) / len(index)
 
 
 def _batched_max_real_part(matrix, parameters, values) -> np.ndarray:
