@@ -159,10 +159,9 @@ class _Classification(Kernel):
         n = len(points)
         columns = self.setup.grid_columns(points)
         buffers = self.scratch("robust", (getattr(self.function, "buffers", 0), n))
-        stable, unstable, dependent = (
-            np.broadcast_to(np.asarray(m) != 0, (n,)) for m in self.function(columns, buffers)
-        )
-        out = np.full((n, 2), np.nan)
+        # truth values as arrays of the points or, where constant, as one value (copyto broadcasts it)
+        stable, unstable, dependent = (np.asarray(m) != 0 for m in self.function(columns, buffers))
+        out = np.full((2, n), np.nan).T  # column-major: each output's column is contiguous
         region = out[:, 0]
         for value, mask in ((0.0, dependent), (-1.0, unstable), (1.0, stable)):  # the first that holds wins
             np.copyto(region, value, where=mask)

@@ -244,7 +244,12 @@ class PointClassifier:
         shape = np.broadcast(*arrays).shape if arrays else ()
         # no copies: an array of the points' shape is read in place, one value stays one value (a view of
         # zero stride, checked once), and only an array broadcast along some axes is copied
-        arrays = [np.broadcast_to(a.reshape(()) if a.size == 1 else a, shape).reshape(-1) for a in arrays]
+        arrays = [
+            a.reshape(-1)
+            if a.shape == shape
+            else np.broadcast_to(a.reshape(()) if a.size == 1 else a, shape).reshape(-1)
+            for a in arrays
+        ]
         size = int(np.prod(shape))
         factor_signs = np.empty((len(self.kept), size), dtype=np.int8)
         signs = np.empty((len(self.conditions), size), dtype=np.int8)
