@@ -2,7 +2,8 @@
 
 The squeal atlas of the brake (``atlas.cycle``: one fast-subsystem cycle per point) is
 swept in this process (the baseline), on Dask's local process scheduler and on a
-``LocalCluster`` of 1 and 2 worker processes; error = the largest difference from the
+``LocalCluster`` of 1 and 2 worker processes (``--quick``: the 2-worker cluster alone, one
+point per worker); error = the largest difference from the
 in-process result (0: bit for bit). A vectorised quantity (``stable_fraction``) is swept
 in this process and on the 2-worker cluster. Dask's per-task overhead is measured with a
 function that does nothing; with the measured per-point cost it gives the estimate of a
@@ -56,20 +57,21 @@ def run(quick: bool, out) -> list[dict]:
     here_s, here = _timed(scheduler="sync", **squeal)
     per_point = (time.process_time() - cpu) / count  # CPU time: on a shared machine wall time also counts the others
     records = []
-    local_s, local = _timed(scheduler="processes", workers=2, **squeal)
-    records.append(
-        record(
-            "atlas/squeal/dask-local-processes-2",
-            local_s,
-            here_s,
-            _difference(local, here, "amplitude"),
-            count,
-            f"{count / local_s:.3g} points/s against {count / here_s:.3g} in this process (ratio: speed-up); "
-            "includes starting the process pool",
+    if not quick:  # --quick: the 2-worker cluster alone (each pool and cluster costs seconds of start-up and cycles)
+        local_s, local = _timed(scheduler="processes", workers=2, **squeal)
+        records.append(
+            record(
+                "atlas/squeal/dask-local-processes-2",
+                local_s,
+                here_s,
+                _difference(local, here, "amplitude"),
+                count,
+                f"{count / local_s:.3g} points/s against {count / here_s:.3g} in this process (ratio: speed-up); "
+                "includes starting the process pool",
+            )
         )
-    )
     throughput = {}
-    for workers in (1, 2):
+    for workers in (2,) if quick else (1, 2):
         with LocalCluster(n_workers=workers, threads_per_worker=1, dashboard_address=None, silence_logs=50) as c:
             with Client(c) as client:
                 warm = {"mu": [1.3, 1.5], "Phi_1": [-2.5]}  # one cycle per worker first: imports, code, caches

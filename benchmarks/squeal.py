@@ -11,6 +11,7 @@ simulation of the fast subsystem from inside and outside the predicted cycle (0.
 
 from __future__ import annotations
 
+import json
 import time
 
 import numpy as np
@@ -69,9 +70,9 @@ def run(quick: bool, out) -> list[dict]:
     ours = (time.process_time() - started) / ds.amplitude.size
     baseline, outcomes = _baseline_per_point(grid, baseline_points)
     method = ds.method.values
-    unexplained = int(np.sum(np.isnan(ds.amplitude.values) & (ds.reason.values == "")))
+    unexplained = int(np.sum(np.isnan(ds.amplitude.values) & (ds.reason_code.values == 0)))
     by_method = {int(k): int(np.sum(method == k)) for k in (0, 1)}
-    nan_reasons = sorted({str(r).split(";")[0] for r in ds.reason.values.ravel() if r})
+    nan_reasons = sorted({str(r).split(";")[0] for r in json.loads(ds.attrs["reasons"]) if r})
     records = [
         record(
             f"squeal/atlas-{side}x{side}-per-point",

@@ -6,7 +6,8 @@ frequency, what fraction of admissible laws is stable, when the impact-type cata
 comes, over a grid of parameters.
 
 - :func:`sweep` ``(scene, quantity, grid, values=..., client=..., store=...)`` returns an
-  ``xarray.Dataset`` labelled by the grid; a failing point is NaN with its reason.
+  ``xarray.Dataset`` labelled by the grid; a failing point is NaN with its reason (a code per
+  point, the texts once: :func:`reason_text`).
 - quantities: :func:`classification`, :func:`leading_eigenvalue`, :func:`stable_fraction`,
   :func:`equilibrium_count`, :func:`cycle`, :func:`catastrophe`, and :func:`function` for
   the user's own.
@@ -32,7 +33,7 @@ from .quantities import (
     leading_eigenvalue,
     stable_fraction,
 )
-from .run import connect, sweep
+from .run import connect, reason_text, sweep
 
 __all__ = [
     "QUANTITIES",
@@ -52,6 +53,7 @@ __all__ = [
     "equilibrium_count",
     "function",
     "leading_eigenvalue",
+    "reason_text",
     "stable_fraction",
     "sweep",
 ]

@@ -159,7 +159,9 @@ def run_atlas(args) -> int:
         print(ds)
     else:
         _write(ds, out)
-        failed = int((ds["reason"] != "").sum())
+        failed = int((ds["reason_code"] != 0).sum())
         points = int(np.prod(list(ds.sizes.values())))
-        print(f"wrote {out}: {ds.attrs['quantity']} at {points} points ({failed} without a value: see 'reason')")
+        print(
+            f"wrote {out}: {ds.attrs['quantity']} at {points} points ({failed} without a value: see reason_code and attrs['reasons'])"
+        )
     return 0

@@ -12,17 +12,21 @@ import sympy as sp
 
 from ..errors import AtlasError
 
-__all__ = ["AtlasError", "Grid", "MAX_POINTS", "REASON_LIMIT", "as_grid", "check_size", "result_bytes"]
+__all__ = ["AtlasError", "Grid", "MAX_POINTS", "MAX_REASONS", "REASON_LIMIT", "as_grid", "check_size", "result_bytes"]
 
 #: The largest grid :func:`as_grid` accepts unless told otherwise.
 MAX_POINTS = 10**9
 #: The longest reason kept for a point without a value (characters).
 REASON_LIMIT = 300
+#: The most distinct reasons a sweep keeps; beyond, a point's reason says that the table is full.
+MAX_REASONS = 2**16 - 1
 #: Bytes per point and output: the float64 value in the results and again in the Dataset.
 _BYTES_PER_VALUE = 16
-#: Bytes per point for its reason: a pointer in the results and the Dataset, and, at worst, a string of its own
-#: (a Python str of REASON_LIMIT ASCII characters takes 49 + REASON_LIMIT bytes).
-_BYTES_PER_REASON = 2 * 8 + 49 + REASON_LIMIT
+#: Bytes per point for its reason: a code (at most 2 bytes, see MAX_REASONS) in the results and in the Dataset.
+_BYTES_PER_REASON = 2 * 2
+#: Bytes of the reason table at its fullest: per entry a str of REASON_LIMIT ASCII characters (49 + REASON_LIMIT
+#: bytes), a pointer, and a dictionary entry (about 100 bytes) to find it.
+_REASON_TABLE_BYTES = (MAX_REASONS + 1) * (49 + REASON_LIMIT + 8 + 100)
 
 
 @dataclass(frozen=True, eq=False)
@@ -56,9 +60,42 @@ class Grid:
         return math.prod(self.shape)
 
     def points(self, start: int, stop: int) -> np.ndarray:
-        """Points ``start:stop`` of the flattened grid, one row each: computed, never stored whole."""
-        index = np.unravel_index(np.arange(start, stop), self.shape)
-        return np.column_stack([axis[i] for axis, i in zip(self.axes, index)]).reshape(stop - start, len(self.axes))
+        """Points ``start:stop`` of the flattened grid, one row each: computed, never stored whole.
+
+        Column-major, so that each column (one parameter at every point) is contiguous."""
+        out = np.empty((stop - start, len(self.axes)), order="F")
+        for j, column in enumerate(self.columns(start, stop)):
+            out[:, j] = column
+        return out
+
+    def columns(self, start: int, stop: int) -> list[np.ndarray]:
+        """Per axis, its value at the points ``start:stop``: runs of equal values, made by ``numpy.repeat``.
+
+        Examples
+        --------
+        >>> [c.tolist() for c in as_grid({"mu": [0.5, 1.0], "alpha": [1.0, 2.0, 3.0]}).columns(1, 5)]
+        [[0.5, 0.5, 1.0, 1.0], [2.0, 3.0, 1.0, 2.0]]
+        """
+        out, inner = [], self.size
+        for axis in self.axes:
+            inner //= len(axis)  # points per step along this axis
+            if stop <= start:
+                out.append(np.empty(0))
+                continue
+            period, count = inner * len(axis), stop - start
+            offset = start % period
+            if period <= count:  # whole periods, repeated: copies, no index arithmetic
+                out.append(np.tile(np.repeat(axis, inner), -(-(offset + count) // period))[offset : offset + count])
+                continue
+            if inner == 1:  # a window of the axis, wrapping around at most once
+                out.append(np.concatenate([axis[offset : offset + count], axis[: max(0, offset + count - period)]]))
+                continue
+            first, last = start // inner, (stop - 1) // inner
+            runs = np.full(last - first + 1, inner)
+            runs[0] -= start - first * inner
+            runs[-1] -= (last + 1) * inner - stop
+            out.append(np.repeat(axis[np.arange(first, last + 1) % len(axis)], runs))
+        return out
 
     def token(self) -> bytes:
         """The grid's identity, for a checkpoint's fingerprint."""
@@ -135,8 +172,16 @@ def as_grid(grid, *, max_points: int | None = None, outputs: int = 1) -> Grid:
 
 
 def result_bytes(points: int, outputs: int = 1) -> int:
-    """Memory a sweep's results may take: the values, twice, and the reasons, counted as distinct strings."""
-    return points * (outputs * _BYTES_PER_VALUE + _BYTES_PER_REASON)
+    """Memory a sweep's results may take: the values, twice, the reasons' codes, twice, and the reason table.
+
+    Examples
+    --------
+    >>> round(result_bytes(10**6, outputs=2) / 2**20)  # MiB: 32 bytes of values and 4 of codes per point, the table
+    63
+    """
+    return points * (outputs * _BYTES_PER_VALUE + _BYTES_PER_REASON) + min(points, MAX_REASONS + 1) * (
+        _REASON_TABLE_BYTES // (MAX_REASONS + 1)
+    )
 
 
 def check_size(points: int, outputs: int = 1, max_points: int | None = None) -> None:

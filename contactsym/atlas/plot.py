@@ -104,7 +104,7 @@ def atlas_data(
     ('alpha', 'mu', ['law-dependent', 'stable for every law'], ('Hopf line',))
     """
     _check_atlas_arguments(ds, variable, x, y, scene, resolution)
-    names = [v for v in ds.data_vars if v != "reason"]
+    names = [v for v in ds.data_vars if v != "reason_code"]
     variable = variable or names[0]
     if variable not in ds.data_vars:
         raise AtlasError(f"the atlas has no variable {variable!r}; it has {names}.")

@@ -20,9 +20,10 @@ import numpy as np
 import sympy as sp
 
 from .. import numerics
+from ..numerics.buffered import BufferedCode, through_tan
 from ..validate import shorten
 from .grid import AtlasError, Grid
-from .kernel import Kernel, Setup, setup_for
+from .kernel import Kernel, Setup, once_per_scene, setup_for
 from .options import check_options
 from .pointwise import SQUEAL_METHODS, PointFailure, build_catastrophe, build_cycle, build_function, build_squeal
 
@@ -65,6 +66,8 @@ class Quantity:
             raise AtlasError("a Quantity needs a name (text), a builder (a function) and options (a dict).")
 
     def build(self, scene, grid: Grid, values: Mapping | None) -> Kernel:
+        if self.builder in _VECTORISED:  # their kernels are kept per scene: see once_per_scene
+            return once_per_scene(self.builder, scene, grid, values, self.options)
         return self.builder(scene, grid, values, **self.options)
 
     def key(self) -> str:
@@ -74,6 +77,8 @@ class Quantity:
 
 
 def _classifier(setup: Setup, conditions, what: str, extra=()) -> numerics.PointClassifier:
+    """A classifier of the grid's and the fixed symbols (then ``extra``): one per scene and quantity, whatever
+    the fixed numbers (they are arguments of its code, read once per chunk: see ``Setup.columns``)."""
     conditions = tuple(setup.prepare(c, what, extra) for c in conditions)
     try:
         return _built_classifier(conditions, setup.symbols + tuple(extra))
@@ -86,6 +91,17 @@ def _built_classifier(conditions: tuple, symbols: tuple) -> numerics.PointClassi
     """One classifier per scene and quantity: building one factors every condition (``sp.factor``),
     which costs far more than a sweep's chunk; the classifier is read-only once built."""
     return numerics.PointClassifier(conditions, symbols)
+
+
+@lru_cache(maxsize=32)
+def _robust_function(robust: tuple, symbols: tuple):
+    """The robust regions' code, once per scene and fixed values (code generation costs more than a chunk):
+    buffered code (truth values as 1.0 and 0.0, even powers of sin and cos through tan), else lambdify."""
+    try:
+        return BufferedCode(symbols, [through_tan(b) for b in robust])
+    except numerics.NumericsError:
+        function = numerics.lambdify_cse(symbols, list(robust))
+        return lambda columns, buffers: function(*columns)
 
 
 def _strict(condition) -> list:
@@ -137,18 +153,20 @@ class _Classification(Kernel):
 
     def __init__(self, setup: Setup, robust: list, classifier):
         self.setup, self.classifier = setup, classifier
-        self.function = numerics.lambdify_cse(setup.symbols, robust)
+        self.function = _robust_function(tuple(setup.specialised(b) for b in robust), setup.swept)
 
     def evaluate(self, points):
         n = len(points)
-        columns = self.setup.columns(points)
-        stable, unstable, dependent = (
-            np.broadcast_to(np.asarray(m, dtype=bool), (n,)) for m in self.function(*columns)
-        )
-        out = np.full((n, 2), np.nan)
-        out[:, 0] = np.select([stable, unstable, dependent], [1.0, -1.0, 0.0], np.nan)
+        columns = self.setup.grid_columns(points)
+        buffers = self.scratch("robust", (getattr(self.function, "buffers", 0), n))
+        # truth values as arrays of the points or, where constant, as one value (copyto broadcasts it)
+        stable, unstable, dependent = (np.asarray(m) != 0 for m in self.function(columns, buffers))
+        out = np.full((2, n), np.nan).T  # column-major: each output's column is contiguous
+        region = out[:, 0]
+        for value, mask in ((0.0, dependent), (-1.0, unstable), (1.0, stable)):  # the first that holds wins
+            np.copyto(region, value, where=mask)
         if self.classifier is not None:
-            out[:, 1] = self.classifier(*columns).stable
+            out[:, 1] = self.classifier(*columns, *self.setup.fixed_columns(n)).stable
         return out
 
 
@@ -174,7 +192,7 @@ class _StableFraction(Kernel):
 
     def evaluate(self, points):
         n, count = len(points), len(self.laws)
-        columns = [np.repeat(c, count) for c in self.setup.columns(points)]
+        columns = [np.repeat(c, count) for c in self.setup.grid_columns(points)] + self.setup.fixed_columns(n * count)
         columns += [np.tile(self.laws[:, j], n) for j in range(self.laws.shape[1])]
         stable = self.classifier(*columns).stable.reshape(n, count)
         return (stable == 1).mean(axis=1)
@@ -381,6 +399,9 @@ def function(fn: Callable, outputs: Sequence[str] | None = None) -> Quantity:
     names = tuple(names)
     return Quantity(f"function {getattr(fn, '__qualname__', 'value')}", build_function, {"fn": fn, "outputs": names})
 
+
+#: The builders whose kernels are kept per scene (vectorised: no state of their own).
+_VECTORISED = (_build_leading_eigenvalue, _build_classification, _build_stable_fraction, _build_equilibrium_count)
 
 #: Built-in quantities by name, with their default options.
 #:

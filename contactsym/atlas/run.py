@@ -22,15 +22,16 @@ from ..mechanism.scene import Scene
 from ..scenes import scene as scene_by_name
 from ..validate import cut, flag, path_text, shorten
 from .grid import REASON_LIMIT, AtlasError, Grid, as_grid, check_size
-from .kernel import Kernel
+from .kernel import Kernel, Reasons, code_type
 from .options import check_options
 from .quantities import as_quantity
 from .store import MemoryResults, ZarrResults, fingerprint
 
-__all__ = ["sweep"]
+__all__ = ["reason_text", "sweep"]
 
-#: Points per task: a vectorised kernel takes many at once; a simulation is worth a task of its own.
-VECTOR_CHUNK, POINT_CHUNK = 4096, 16
+#: Points per task: a vectorised kernel takes many at once (a few MiB of columns and results per task;
+#: the classifier works through them in cache-sized pieces); a simulation is worth a task of its own.
+VECTOR_CHUNK, POINT_CHUNK = 1 << 16, 16
 
 
 def _require(module: str):
@@ -47,15 +48,31 @@ def _chunk(kernel: Kernel, grid: Grid, chunk: int, index: int) -> tuple:
     """One task: the kernel on one chunk of the grid; a NaN always comes with its reason."""
     start = index * chunk
     values, reasons = kernel(grid.points(start, min(start + chunk, grid.size)))
+    reasons = reasons if isinstance(reasons, Reasons) else Reasons.from_texts(reasons)
     values = np.asarray(values, dtype=float).reshape(len(reasons), len(kernel.outputs))
+    return index, values, _explained(kernel, values, reasons)
+
+
+def _explained(kernel: Kernel, values: np.ndarray, reasons: Reasons) -> Reasons:
+    """``reasons`` with a text for every NaN that has none: which outputs are NaN, and why if the kernel says."""
+    with np.errstate(all="ignore"):  # a row sum is NaN where a value is (or where inf - inf: sorted out below)
+        candidates = np.nonzero(np.isnan(values @ np.ones(values.shape[1])) & (reasons.codes == 0))[0]
+    nan = np.isnan(values[candidates])
+    missing = np.zeros(len(values), dtype=bool)
+    missing[candidates[nan.any(axis=1)]] = True
+    if not missing.any():
+        return reasons
     explained = getattr(kernel, "nan_reasons", {})
-    reasons = list(reasons)
-    for i in np.nonzero(np.isnan(values).any(axis=1))[0]:
-        if not reasons[i]:
-            names = [name for name, v in zip(kernel.outputs, values[i]) if np.isnan(v)]
-            why = "; ".join(explained.get(name, f"{name}: the quantity has no value here") for name in names)
-            reasons[i] = f"NaN: {why}"
-    return index, values, [reason[:REASON_LIMIT] for reason in reasons]
+    pattern = np.isnan(values[missing]) @ (1 << np.arange(values.shape[1], dtype=np.uint64))  # NaN outputs as bits
+    table, codes = list(reasons.table), reasons.codes.astype(np.uint32)
+    found = np.empty(len(pattern), dtype=np.uint32)
+    for bits in np.unique(pattern):
+        names = [name for j, name in enumerate(kernel.outputs) if int(bits) >> j & 1]
+        why = "; ".join(explained.get(name, f"{name}: the quantity has no value here") for name in names)
+        found[pattern == bits] = len(table)
+        table.append(f"NaN: {why}"[:REASON_LIMIT])
+    codes[missing] = found
+    return Reasons(codes.astype(code_type(len(table))), table)
 
 
 def _chunk_size(chunks, size: int, kernel: Kernel) -> int:
@@ -212,8 +229,9 @@ def sweep(
     Returns
     -------
     xarray.Dataset
-        One variable per output of the quantity, ``reason`` (why a point is NaN; empty
-        where it has a value; a NaN always has one), and attributes ``scene``, ``quantity``,
+        One variable per output of the quantity, ``reason_code`` (why a point is NaN: a code
+        into the JSON list ``attrs["reasons"]``, 0 for ``""`` where it has a value; a NaN always
+        has one; :func:`reason_text` gives the texts), and attributes ``scene``, ``quantity``,
         ``fixed`` (the fixed numbers, JSON), ``points_computed``, ``points_resumed`` and
         ``chunks_recomputed`` (stored chunks that were lost or damaged, JSON).
 
@@ -265,8 +283,10 @@ def sweep(
 def _dataset(xr, scene, quantity, values, grid: Grid, outputs, results, resumed: int):
     data, reasons = results.read()
     variables = {name: (grid.names, data[:, j].reshape(grid.shape)) for j, name in enumerate(outputs)}
-    variables["reason"] = (grid.names, np.asarray(reasons, dtype=object).reshape(grid.shape))  # not fixed-width
+    codes = reasons.codes.astype(code_type(len(reasons.table)), copy=False)  # uint8 unless the table is long
+    variables["reason_code"] = (grid.names, codes.reshape(grid.shape))
     attrs = {
+        "reasons": json.dumps(reasons.table),  # reason_code indexes this list; 0 is "" (the point has a value)
         "scene": scene.name,
         "quantity": quantity.name,
         "fixed": json.dumps(_numbers(values)),
@@ -286,3 +306,32 @@ def _numbers(values) -> dict:
         except (TypeError, ValueError):
             continue
     return out
+
+
+def reason_text(ds):
+    """Why each point of an atlas has no value: the texts of ``ds.reason_code`` (``""`` where it has one).
+
+    The Dataset stores one small code per point and the table of texts once, in
+    ``ds.attrs["reasons"]`` (JSON); this is the text per point, labelled as the atlas.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> def inverse(values):
+    ...     return 1 / values["mu"]
+    >>> ds = sweep("brake", inverse, {"mu": [0.5, 0.0]}, scheduler="sync")
+    >>> ds.reason_code.values.tolist(), reason_text(ds).values.tolist()
+    ([0, 1], ['', 'ZeroDivisionError: float division by zero'])
+    """
+    xr = _require("xarray")
+    if not isinstance(ds, xr.Dataset) or "reason_code" not in ds or "reasons" not in ds.attrs:
+        raise AtlasError(f"{shorten(ds)} is not an atlas: give the Dataset that sweep returned.")
+    codes = ds["reason_code"]
+    try:
+        table = np.asarray(json.loads(ds.attrs["reasons"]), dtype=object)
+        texts = table[np.asarray(codes.values, dtype=np.int64)]
+    except (TypeError, ValueError, IndexError):  # JSON that is not a list of texts, or codes beyond it
+        raise AtlasError(
+            "the atlas's reason codes and attrs['reasons'] do not match; the Dataset was changed."
+        ) from None
+    return xr.DataArray(texts, dims=codes.dims, coords=codes.coords, name="reason")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import threading
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
@@ -15,6 +16,7 @@ from .. import validate
 from ..errors import NumericsError
 from ..parse import sympy_only
 from ..progress import Budget, Progress
+from .buffered import BufferedCode, through_tan
 from .certified import _exact_float, _gamma, certified_sign
 from .codegen import lambdify_cse
 
@@ -87,10 +89,16 @@ class PointClassifier:
         if free - set(self.parameters):
             raise NumericsError(f"the conditions also need values for {sorted(map(str, free - set(self.parameters)))}.")
         self.parts = [self._split(factor) for factor in self.kept]
-        code = [tuple(_through_tan(g) for g in p) for p in self.parts]
+        code = [tuple(through_tan(g) for g in p) for p in self.parts]
         self.gammas = [_gamma(max(_roundings(g) for g in p) + 3) for p in code]
-        self._function = lambdify_cse(self.parameters, [g for p in code for g in p])
+        flat = [g for p in code for g in p]
+        try:  # every operation into a reused buffer: the chunk stays in the cache, no temporaries
+            self._buffered: BufferedCode | None = BufferedCode(self.parameters, flat)
+            self._function = None
+        except NumericsError:  # a part without a buffered form (e.g. a symbolic exponent)
+            self._buffered, self._function = None, lambdify_cse(self.parameters, flat)
         self._mp_function = self._mp_functions()
+        self._workspaces = threading.local()
 
     def _mp_functions(self) -> list:
         return [sp.lambdify(self.parameters, list(p), modules="mpmath") for p in self.parts]
@@ -98,11 +106,21 @@ class PointClassifier:
     def __getstate__(self) -> dict:
         # code generated for mpmath holds mpmath's context, which does not pickle (a Dask
         # worker receives the classifier by value): it is generated again when first needed
-        return {k: v for k, v in self.__dict__.items() if k != "_mp_function"}
+        return {k: v for k, v in self.__dict__.items() if k not in ("_mp_function", "_workspaces")}
 
     def __setstate__(self, state: dict) -> None:
         self.__dict__.update(state)
         self._mp_function = None
+        self._workspaces = threading.local()
+
+    def _workspace(self, size: int) -> tuple[np.ndarray, np.ndarray]:
+        """Float buffers for the generated code (two more for the sign test) and two int8 rows, per thread."""
+        rows = (self._buffered.buffers if self._buffered is not None else 0) + 2
+        found = getattr(self._workspaces, "arrays", None)
+        if found is None or found[0].shape[1] < size:
+            found = (np.empty((rows, size)), np.empty((2, size), dtype=np.int8))
+            self._workspaces.arrays = found
+        return found
 
     @staticmethod
     def _reduce(condition: sp.Expr) -> tuple[int, list]:
@@ -155,7 +173,9 @@ class PointClassifier:
         for symbol, a in zip(self.parameters, arrays):
             if a.size == 0:
                 continue
-            low, high = a.min(), a.max()  # NaN propagates; +-inf shows in the extremes
+            if a.strides == (0,):  # one value for every point
+                a = a[:1]
+            low, high = np.minimum.reduce(a), np.maximum.reduce(a)  # NaN propagates; +-inf shows in the extremes
             if not (math.isfinite(low) and math.isfinite(high)):
                 raise NumericsError(f"the values of {symbol} are not all finite.")
             if symbol.is_positive and not low > 0:
@@ -163,37 +183,37 @@ class PointClassifier:
             if symbol.is_negative and not high < 0:
                 raise NumericsError(f"{symbol} is declared negative; some values are >= 0.")
 
-    def _float_stage(self, arrays, size: int) -> np.ndarray:
-        """Per kept factor: its sign where certain (+1/-1) and 0 where not (int8).
+    def _float_stage(self, arrays, out: np.ndarray) -> None:
+        """Per kept factor, into ``out``: its sign where certain (+1/-1) and 0 where not (int8).
 
         An overflow, underflow or invalid operation would void the relative error bounds:
         a chunk where one occurs is halved until the points that cause it are found, and
         those are left to the exact path.
         """
+        size = out.shape[1]
         try:
             with np.errstate(all="raise"):
-                return self._signs(arrays, size)
+                self._signs(arrays, out)
         except FloatingPointError:
             if size == 1:
-                return np.zeros((len(self.kept), 1), dtype=np.int8)
+                out[...] = 0
+                return
             half = size // 2
-            return np.concatenate(
-                [
-                    self._float_stage([a[:half] for a in arrays], half),
-                    self._float_stage([a[half:] for a in arrays], size - half),
-                ],
-                axis=1,
-            )
+            self._float_stage([a[:half] for a in arrays], out[:, :half])
+            self._float_stage([a[half:] for a in arrays], out[:, half:])
 
-    def _signs(self, arrays, size: int) -> np.ndarray:
-        values = iter(self._function(*arrays))
-        out = np.empty((len(self.kept), size), dtype=np.int8)
+    def _signs(self, arrays, out: np.ndarray) -> None:
+        size = out.shape[1]
+        floats, small = self._workspace(size)
+        if self._buffered is not None:
+            values = iter(self._buffered(arrays, floats[:-2]))
+        else:
+            values = iter(_as_array(v, size) for v in self._function(*arrays))
+        scratch = (floats[-2, :size], floats[-1, :size], small[0, :size], small[1, :size])
         for position, part in enumerate(self.parts):
-            groups = [_as_array(next(values), size) for _ in part]
-            out[position] = _certain_sign(
-                groups, max(self.band, 2 * self.gammas[position]), self._zero_parts()[position]
-            )
-        return out
+            groups = [next(values) for _ in part]
+            width = max(self.band, 2 * self.gammas[position])
+            _certain_sign(groups, width, self._zero_parts()[position], out[position], scratch)
 
     def _zero_parts(self) -> list[tuple[bool, bool]]:
         """Per kept factor, (P = 0, M = 0): compared once, not per chunk (a SymPy comparison of large sums)."""
@@ -222,22 +242,27 @@ class PointClassifier:
         budget = Budget(progress, max_seconds)
         arrays = self._check(arrays)
         shape = np.broadcast(*arrays).shape if arrays else ()
+        # no copies: an array of the points' shape is read in place, one value stays one value (a view of
+        # zero stride, checked once), and only an array broadcast along some axes is copied
         arrays = [
-            a.ravel() if a.shape == shape else np.ascontiguousarray(np.broadcast_to(a, shape)).ravel() for a in arrays
+            a.reshape(-1)
+            if a.shape == shape
+            else np.broadcast_to(a.reshape(()) if a.size == 1 else a, shape).reshape(-1)
+            for a in arrays
         ]
         size = int(np.prod(shape))
         factor_signs = np.empty((len(self.kept), size), dtype=np.int8)
         signs = np.empty((len(self.conditions), size), dtype=np.int8)
         stable = np.empty(size, dtype=np.int8)
-        for start in range(0, size, chunk):  # chunks that stay in the cache
+        in_band = np.empty(size, dtype=bool)
+        for start in range(0, size, chunk):  # one pass per chunk: checks, generated code, signs, all in the cache
             stop = min(start + chunk, size)
             part = factor_signs[:, start:stop]
-            self._check_values([a[start:stop] for a in arrays])
-            part[...] = self._float_stage([a[start:stop] for a in arrays], stop - start)
+            pieces = [a[start:stop] for a in arrays]
+            self._check_values(pieces)
+            self._float_stage(pieces, part)
             self._combine(part, signs[:, start:stop], stable[start:stop])
-        in_band = np.zeros(size, dtype=bool)
-        for position in range(len(self.kept)):
-            in_band |= factor_signs[position] == 0
+            np.logical_not(part.all(axis=0), out=in_band[start:stop])
         points = np.nonzero(in_band)[0]
         for done, i in enumerate(points):
             if budget.report(done / len(points), f"{done} of {len(points)} points decided exactly"):
@@ -286,41 +311,36 @@ def _as_array(value, size: int) -> np.ndarray:
     return value if isinstance(value, np.ndarray) else np.full(size, float(value))
 
 
-def _certain_sign(groups, width: float, zeros: tuple[bool, bool]) -> np.ndarray:
-    """+1/-1 where the sign of P - M (+ U) is certain, 0 elsewhere (int8 array); valid for
+def _certain_sign(groups, width: float, zeros: tuple[bool, bool], out: np.ndarray, scratch) -> None:
+    """Into ``out`` (int8): +1/-1 where the sign of P - M (+ U) is certain, 0 elsewhere; valid for
     values computed without overflow, underflow or invalid operations. ``zeros``: whether
-    P and M are identically 0."""
+    P and M are identically 0; ``scratch``: two float64 and two int8 rows of ``out``'s length."""
     P, M, *rest = groups
-    if rest:  # terms of unknown sign: |F^ - F| <= gamma (P + M + |U|)
-        value = P - M + rest[0]
-        certain = np.abs(value) > width * (P + M + rest[1])
-        return np.where(certain, np.where(value > 0, 1, -1), 0).astype(np.int8)
-    if zeros[1]:  # F = P, nonnegative terms: P^ > 0 iff P > 0
-        return (P > 0).view(np.int8)
-    if zeros[0]:
-        return -(M > 0).view(np.int8)
-    # P - M > width (P + M) iff P (1 - width) > M (1 + width): no cancellation in the test
-    positive = (P * (1 - width) > M * (1 + width)).view(np.int8)
-    negative = (M * (1 - width) > P * (1 + width)).view(np.int8)
-    return positive - negative
-
-
-def _through_tan(expr: sp.Expr) -> sp.Expr:
-    """Even powers of sin and cos written with t = tan: sin^2 = t^2/(1 + t^2), cos^2 = 1/(1 + t^2).
-
-    NumPy vectorises float64 tan (within 4 units in the last place) but not sin and cos,
-    which cost several times more; the new sums have terms of one sign, so the relative
-    error bound holds.
-    """
-
-    def rewrite(node):
-        if node.is_Pow and node.exp.is_Integer and node.exp % 2 == 0 and isinstance(node.base, (sp.sin, sp.cos)):
-            t2 = sp.tan(node.base.args[0]) ** 2
-            square = t2 / (1 + t2) if isinstance(node.base, sp.sin) else 1 / (1 + t2)
-            return square ** (node.exp // 2)
-        return node
-
-    return sp.bottom_up(expr, rewrite)
+    f0, f1, i0, i1 = scratch
+    b0, b1 = i0.view(np.bool_), i1.view(np.bool_)
+    if rest:  # terms of unknown sign: |F^ - F| <= gamma (P + M + |U|); certain where |F^| > width (P + M + |U|)
+        np.subtract(P, M, out=f0)
+        np.add(f0, rest[0], out=f0)
+        np.add(P, M, out=f1)
+        np.add(f1, rest[1], out=f1)
+        np.multiply(f1, width, out=f1)
+        np.greater(f0, f1, out=b0)
+        np.negative(f1, out=f1)
+        np.less(f0, f1, out=b1)
+        np.subtract(i0, i1, out=out)
+    elif zeros[1]:  # F = P, nonnegative terms: P^ > 0 iff P > 0
+        np.greater(P, 0.0, out=out.view(np.bool_))
+    elif zeros[0]:
+        np.greater(M, 0.0, out=out.view(np.bool_))
+        np.negative(out, out=out)
+    else:  # P - M > width (P + M) iff P (1 - width)/(1 + width) > M: no cancellation in the test; the
+        # few roundings of the ratio and the product are far inside width >= 2 gamma_(r+3)
+        shrink = (1 - width) / (1 + width)
+        np.multiply(P, shrink, out=f0)
+        np.greater(f0, M, out=b0)
+        np.multiply(M, shrink, out=f0)
+        np.greater(f0, P, out=b1)
+        np.subtract(i0, i1, out=out)
 
 
 def _one_signed_form(total: sp.Expr) -> sp.Expr:

@@ -1,5 +1,6 @@
 """contactsym.atlas: sweeps checked against independent computations, on a real 2-worker LocalCluster."""
 
+import json
 import os
 
 import numpy as np
@@ -173,7 +174,9 @@ def test_failing_points_are_nan_with_a_reason():
     ds = atlas.sweep("brake", picky, {"mu": [0.5, 1.0, 1.5, 2.0]}, scheduler="sync")
     assert ds.picky.values[:2].tolist() == [0.25, 1.0]
     assert np.isnan(ds.picky.values[2:]).all()
-    assert ds.reason.values.tolist() == ["", "", "ValueError: no value at mu = 1.5", "ValueError: no value at mu = 2.0"]
+    texts = ["", "", "ValueError: no value at mu = 1.5", "ValueError: no value at mu = 2.0"]
+    assert atlas.reason_text(ds).values.tolist() == texts
+    assert ds.reason_code.dtype == np.uint8 and json.loads(ds.attrs["reasons"])[0] == ""
 
 
 def test_cycle_amplitude_is_born_past_the_hopf_line():
@@ -187,8 +190,8 @@ def test_cycle_amplitude_is_born_past_the_hopf_line():
     ]
     assert sides[0] * sides[1] < 0  # the closed-form Hopf line passes between the two points
     ds = atlas.sweep("brake", CYCLE, {"mu": mus}, values=SQUEAL, scheduler="sync")
-    assert np.isnan(ds.amplitude.values[0]) and "settles on the equilibrium" in ds.reason.values[0]
-    assert ds.amplitude.values[1] > 0.1 and ds.omega.values[1] > 0 and ds.reason.values[1] == ""
+    assert np.isnan(ds.amplitude.values[0]) and "settles on the equilibrium" in atlas.reason_text(ds).values[0]
+    assert ds.amplitude.values[1] > 0.1 and ds.omega.values[1] > 0 and ds.reason_code.values[1] == 0
 
 
 def test_plot_the_closed_form_hopf_line_falls_where_the_atlas_changes_sign():
@@ -296,17 +299,18 @@ def test_a_lost_or_damaged_chunk_is_recomputed_and_named(tmp_path):
     first = atlas.sweep("brake", quantity, grid, chunks=2, store=store, scheduler="sync")
     group = zarr.open_group(str(store), mode="r+")
     group["value_value"][2:4] = np.nan  # chunk 1 lost its values, its flag still says done
-    group["reason"][6:7] = "edited"  # chunk 3 damaged
+    group["reason_code"][6:7] = 7  # chunk 3 damaged
     again = atlas.sweep("brake", quantity, grid, chunks=2, store=store, scheduler="sync")
     assert again.chunks_recomputed == "[1, 3]" and (again.points_resumed, again.points_computed) == (4, 4)
-    assert np.array_equal(again.value.values, first.value.values) and (again.reason.values == "").all()
+    assert np.array_equal(again.value.values, first.value.values) and (again.reason_code.values == 0).all()
 
 
 def test_a_nan_always_has_a_reason():
     ds = atlas.sweep("brake", lambda v: float("nan") if v["mu"] > 1 else v["mu"], {"mu": [0.5, 1.5]})
     value = ds[next(iter(ds.data_vars))]
-    assert not np.isnan(value.values[0]) and ds.reason.values[0] == ""
-    assert np.isnan(value.values[1]) and ds.reason.values[1].startswith("NaN: ")
+    texts = atlas.reason_text(ds).values
+    assert not np.isnan(value.values[0]) and texts[0] == ""
+    assert np.isnan(value.values[1]) and texts[1].startswith("NaN: ")
 
 
 @pytest.mark.parametrize(
@@ -338,9 +342,55 @@ def test_every_option_of_every_quantity_is_checked(make, words):
 
 
 def test_the_memory_estimate_counts_the_reasons():
-    from contactsym.atlas.grid import REASON_LIMIT, result_bytes
+    from contactsym.atlas.grid import MAX_REASONS, REASON_LIMIT, result_bytes
 
-    assert result_bytes(1000, 2) >= 1000 * (2 * 8 + REASON_LIMIT)
+    # values twice and codes twice per point, and a table of distinct reasons, each up to REASON_LIMIT characters
+    assert result_bytes(1000, 2) >= 1000 * (2 * 2 * 8 + 2 * 2) + 1000 * (49 + REASON_LIMIT)
+    assert result_bytes(10**8, 1) >= 10**8 * (2 * 8 + 2 * 2) + (MAX_REASONS + 1) * (49 + REASON_LIMIT)
+
+
+def test_reason_codes_round_trip_to_the_same_texts():
+    from contactsym.atlas.kernel import Reasons
+    from contactsym.atlas.store import MemoryResults
+
+    rng = np.random.default_rng(5)
+    pool = ["", "ValueError: a", "NaN: b", "x" * 400, "é ü"]
+    texts = [pool[i] for i in rng.integers(0, len(pool), 60)]
+    reasons = Reasons.from_texts(texts)
+    assert reasons.texts().tolist() == [t[:300] for t in texts] and reasons.codes.dtype == np.uint8
+    results = MemoryResults(60, ("v",), 20)  # three chunks, each with its own table, merged into one
+    for index in range(3):
+        results.write(index, np.zeros((20, 1)), Reasons.from_texts(texts[20 * index : 20 * index + 20]))
+    assert results.read()[1].texts().tolist() == [t[:300] for t in texts]
+    many = [f"ValueError: point {i}" for i in range(300)]  # more than 255 distinct reasons: wider codes
+    wide = MemoryResults(300, ("v",), 300)
+    wide.write(0, np.zeros((300, 1)), Reasons.from_texts(many))
+    assert wide.read()[1].codes.dtype == np.uint16 and wide.read()[1].texts().tolist() == many
+
+
+def test_reason_codes_round_trip_through_a_checkpoint(tmp_path):
+    def odd(values):
+        if values["mu"] % 2:
+            raise ValueError(f"odd mu = {values['mu']:g}")
+        return values["mu"]
+
+    grid = {"mu": np.arange(1.0, 9.0)}
+    first = atlas.sweep("brake", odd, grid, chunks=3, store=tmp_path / "a.zarr", scheduler="sync")
+    again = atlas.sweep("brake", odd, grid, chunks=3, store=tmp_path / "a.zarr", scheduler="sync")
+    here = atlas.sweep("brake", odd, grid, chunks=3, scheduler="sync")
+    expected = [
+        "ValueError: odd mu = 1",
+        "",
+        "ValueError: odd mu = 3",
+        "",
+        "ValueError: odd mu = 5",
+        "",
+        "ValueError: odd mu = 7",
+        "",
+    ]
+    for ds in (first, again, here):
+        assert atlas.reason_text(ds).values.tolist() == expected
+    assert again.points_resumed == 8 and here.reason_code.dtype == np.uint8
 
 
 def test_the_cli_checks_the_grid_size_before_it_allocates(capsys):
@@ -421,7 +471,7 @@ def test_a_killed_worker_loses_no_point(cluster, tmp_path):
     ds = atlas.sweep("brake", fragile, {"mu": np.arange(1.0, 21.0)}, chunks=2, client=cluster)
     assert marker.exists()
     assert ds.fragile.values.tolist() == (np.arange(1.0, 21.0) ** 2).tolist()
-    assert (ds.reason.values == "").all()
+    assert (ds.reason_code.values == 0).all()
 
 
 def test_unreachable_scheduler_is_one_line():
@@ -505,7 +555,7 @@ def test_squeal_from_the_normal_form_near_the_line_against_a_long_simulation():
     assert ds.method.values.tolist()[:4] == [0.0, 1.0, 1.0, 1.0] and set(SQUEAL_METHODS) >= {0, 1, 2}
     assert ds.amplitude.values[0] == 0 and np.all(ds.amplitude.values[1:4] > 0)
     assert np.all(np.diff(ds.amplitude.values[1:4]) > 0) and np.all(ds.error.values[1:4] < 0.01)
-    assert np.isnan(ds.amplitude.values[4]) and "contact loss" in str(ds.reason.values[4])
+    assert np.isnan(ds.amplitude.values[4]) and "contact loss" in str(atlas.reason_text(ds).values[4])
     mu = grid["mu"][3]
     duration, period = 1.5 / (h.dalpha * (mu - h.value)), 2 * np.pi / h.omega
     simulated = []
