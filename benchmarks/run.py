@@ -33,7 +33,7 @@ def markdown(records: list[dict], quick: bool, seconds: float) -> str:
         "",
         f"`contactsym bench{' --quick' if quick else ''}` on {platform.machine()}, Python "
         f"{platform.python_version()}, {seconds:.0f} s in all. ratio = baseline_s / ours_s. "
-        "Plots: `classification.png`, `work_precision.png`, `derivation.png`, `robustness.png`, `counts.png`, `scaling.png`, `atlas.png` (not committed; rerun to make them).",
+        "Plots: `classification.png`, `work_precision.png`, `derivation.png`, `robustness.png`, `counts.png`, `scaling.png`, `atlas.png`, `closed_forms_k3.png` (not committed; rerun to make them).",
         "",
         "| name | ours_s | baseline_s | ratio | error | n | notes |",
         "|---|---|---|---|---|---|---|",

@@ -137,13 +137,23 @@ def scene_regions(scene, signs=None) -> dict[str, Region]:
         if raw is None:
             continue
         condition = closed_form(raw, scene, solve_for=getattr(scene, "solve_for", None), signs=signs)
-        regions[name] = Region(condition, name=name, description=f"{scene.name}: {attribute}")
+        regions[name] = Region(condition, name=name, description=f"{scene.name}: {_meaning(attribute, stability.k)}")
     if stability.k >= 3 and stability.undecided != sp.false:  # k <= 2: only det A = 0, where the propositions end
         statements = ("stable for every law", "unstable for every law", "law-dependent")
         named = [regions[n].condition for n in statements if n in regions]
         undecided = sp.Not(sp.Or(*named)) if len(named) == 3 else sp.true  # a numeric A: a statement is undecided
-        regions["undecided"] = Region(undecided, name="undecided", description=f"{scene.name}: no statement proved")
+        description = f"{scene.name}: undecided: no statement proved here (each may still hold)"
+        regions["undecided"] = Region(undecided, name="undecided", description=description)
     return regions
+
+
+def _meaning(attribute: str, k: int) -> str:
+    """What a region claims: for k >= 3 the statements are proved on sufficient regions only."""
+    if attribute == "hopf":
+        return "hopf: Delta_(n-1) = 0 with the other Hurwitz conditions > 0"
+    if k >= 3:
+        return f"{attribute}: where it is proved (a sufficient region; outside it the statement may still hold)"
+    return f"{attribute}: where it is proved"
 
 
 @dataclass(frozen=True, eq=False)
