@@ -91,8 +91,9 @@ def stage(scene, name: str) -> list:
     stability = scene.stability()
     if name == "frequency":
         return [stability.hopf_frequency]
-    if name == "hopf":
-        return [stability.hopf, stability.hopf_frequency]
+    if name == "hopf":  # as printed: each coefficient p_s in its shortest form (a baseline without it: as derived)
+        printed = (getattr(stability, "hopf_printed", None), getattr(stability, "hopf_frequency_printed", None))
+        return [stability.hopf, stability.hopf_frequency] if printed[0] is None else list(printed)
     if name == "regions-unlimited":  # every relation normalized, expanded and factored
         from contactsym.stages import regions
 

@@ -93,6 +93,8 @@ def _factored_by_degree_one(expr: sp.Add) -> tuple[sp.Expr, list[tuple[sp.Expr, 
         return None
     if poly.domain not in (sp.ZZ, sp.QQ) or poly.is_ground:
         return None
+    if not all(gen.is_Symbol or gen.is_Function for gen in poly.gens):
+        return None  # 1/m, sqrt(m): sympy.factor_list brings the expression over one denominator first
     exponents, reduced = poly.terms_gcd()
     if reduced.domain == sp.QQ:
         _, reduced = reduced.clear_denoms(convert=True)
