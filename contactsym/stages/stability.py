@@ -351,7 +351,7 @@ def shortest_form(polynomial: sp.Expr, outer=()) -> sp.Expr:
     """The shortest of: ``polynomial`` as it is, factored, and grouped by the monomials in ``outer``
     (e.g. the law's Phi_j, Psi_j) with each group's coefficient factored. Exact: the same polynomial.
 
-    Only a polynomial in symbols (of at most 400 terms) is rewritten; the factoring is
+    Only a polynomial in symbols (of at most 400 terms; factored whole up to 100) is rewritten; the factoring is
     :func:`contactsym.inequalities.factor_list` (cheap where variables of degree 1 split it).
 
     Examples
@@ -367,7 +367,8 @@ def shortest_form(polynomial: sp.Expr, outer=()) -> sp.Expr:
     symbols = polynomial.free_symbols
     if not polynomial.is_polynomial(*symbols):
         return polynomial
-    candidates = [polynomial, _factored(polynomial)]
+    # factoring a long irreducible sum costs a second and finds nothing: the whole is factored up to 100 terms
+    candidates = [polynomial, _factored(polynomial) if len(polynomial.args) <= 100 else polynomial]
     inner = sorted(symbols - set(outer), key=str)
     if inner and symbols & set(outer):
         groups = sp.Poly(polynomial, *sorted(symbols & set(outer), key=str)).as_dict()
