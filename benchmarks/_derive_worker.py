@@ -1,6 +1,14 @@
-"""One cold derivation in a fresh process: ``python -m benchmarks._derive_worker MODE TARGET``.
+"""One cold derivation in a fresh process: ``python -m benchmarks._derive_worker MODE TARGET [STAGE]``.
 
-MODE is ours or naive; TARGET a scene name or generic-K. Prints one JSON line.
+MODE is ours, naive or stage; TARGET a scene name, generic-K (q_i'' = sum_j a_ij N_j + b_i) or
+stool-KIND (the three-legged stool of ``tests/stool.py``, KIND numbers, masses or feet). The
+stage mode times one STAGE (frequency, hopf, regions, or regions-unlimited: regions with
+the limits RAW_OPS and FACTOR_TERMS of :mod:`contactsym.stages.regions` lifted). Prints one JSON line, with
+wall and CPU seconds.
+
+Run as a script (``python benchmarks/_derive_worker.py ...``) with another tree's
+``contactsym`` on PYTHONPATH, it times that tree on the same scenes: the stool and the
+generic scenes are built here from the public API and this tree's ``tests/stool.py``.
 """
 
 from __future__ import annotations
@@ -8,6 +16,11 @@ from __future__ import annotations
 import json
 import sys
 import time
+from importlib.util import module_from_spec, spec_from_file_location
+from pathlib import Path
+
+#: This tree's stool builder (loaded by path: a baseline tree may not have its options).
+STOOL = Path(__file__).resolve().parent.parent / "tests" / "stool.py"
 
 
 def generic_scene(k: int):
@@ -24,9 +37,19 @@ def generic_scene(k: int):
     return cs.Scene.from_accelerations(q, G, [cs.Contact(coordinate=q[i], reaction=N[i]) for i in range(k)])
 
 
+def stool_scene(kind: str):
+    """The stool of ``tests/stool.py`` with ``symbolic=kind`` (numbers, masses or feet)."""
+    spec = spec_from_file_location("_stool_builder", STOOL)
+    module = module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.stool_scene(symbolic=kind)
+
+
 def build(target: str):
     if target.startswith("generic-"):
         return generic_scene(int(target.split("-")[1]))
+    if target.startswith("stool-"):
+        return stool_scene(target.split("-", 1)[1])
     from importlib import import_module
 
     from contactsym.scenes import _MODULES
@@ -63,8 +86,38 @@ def naive(scene) -> dict:
     return {"charpoly": p, "minors": len(minors)}
 
 
+def stage(scene, name: str) -> list:
+    """The expressions of one stage: the Hopf frequency, the Hopf set and frequency, or the regions."""
+    stability = scene.stability()
+    if name == "frequency":
+        return [stability.hopf_frequency]
+    if name == "hopf":  # as printed: each coefficient p_s in its shortest form (a baseline without it: as derived)
+        printed = (getattr(stability, "hopf_printed", None), getattr(stability, "hopf_frequency_printed", None))
+        return [stability.hopf, stability.hopf_frequency] if printed[0] is None else list(printed)
+    if name == "regions-unlimited":  # every relation normalized, expanded and factored
+        from contactsym.stages import regions
+
+        regions.RAW_OPS = regions.FACTOR_TERMS = float("inf")
+    return [region.condition for region in scene.regions().values()]
+
+
+def timed_stage(target: str, name: str) -> dict:
+    """Scene build and one stage, cold (import excluded): wall and CPU seconds, the size of the result."""
+    import sympy as sp
+
+    import contactsym  # noqa: F401  (import time is not measured)
+
+    wall, cpu = time.perf_counter(), time.process_time()
+    result = stage(build(target), name)
+    wall, cpu = time.perf_counter() - wall, time.process_time() - cpu
+    return {"seconds": wall, "cpu_s": cpu, "ops": sum(int(sp.count_ops(r)) for r in result), "parts": len(result)}
+
+
 def main(argv: list[str]) -> int:
     mode, target = argv[0], argv[1]
+    if mode == "stage":
+        print(json.dumps(timed_stage(target, argv[2])))
+        return 0
     started = time.perf_counter()
     import contactsym  # noqa: F401
 

@@ -4,9 +4,12 @@ A condition on the parameters is a Boolean of relations ``P op 0``. The engine
 
 - reduces one relation exactly (:mod:`~contactsym.inequalities.relations`): factors of known
   sign dropped, the sides arranged as a reader writes them, a named parameter solved for;
+- factors a numerator as ``sympy.factor_list`` does, by a cheaper proof where one applies
+  (:mod:`~contactsym.inequalities.factors`);
 - proves short facts about conditions ``P > 0`` / ``P >= 0``
   (:mod:`~contactsym.inequalities.facts`): a known sign, an implication or an infeasible
-  combination, by a sum of conditions whose sign follows from the assumptions;
+  combination, by a sum of conditions whose sign follows from the assumptions (tried first
+  at a few exact points, where a wrong sign shows no proof exists);
 - shortens Booleans (:mod:`~contactsym.inequalities.merges`): ``|x| < c``, ``|x| > c`` and
   disjunctions that differ in one conjunct;
 - puts these together (:mod:`~contactsym.inequalities.closed`): the closed form of a Boolean.
@@ -24,7 +27,8 @@ Examples
 """
 
 from .closed import FACTOR_TERMS, RAW_OPS, closed_conjuncts, closed_form
-from .facts import Facts, half_angles, pythagorean
+from .factors import factor_list, split_by_degree_one
+from .facts import POINTS, Facts, half_angles, pythagorean, refuted
 from .merges import boolean, merge_abs, merge_and, merge_or, merge_pair, split
 from .relations import (
     FLIP,
@@ -41,6 +45,7 @@ from .relations import (
 __all__ = [
     "FACTOR_TERMS",
     "FLIP",
+    "POINTS",
     "RAW_OPS",
     "Condition",
     "Facts",
@@ -50,6 +55,7 @@ __all__ = [
     "closed_conjuncts",
     "closed_form",
     "drop_known_factors",
+    "factor_list",
     "half_angles",
     "merge_abs",
     "merge_and",
@@ -57,8 +63,10 @@ __all__ = [
     "merge_pair",
     "positive_part",
     "pythagorean",
+    "refuted",
     "solve_for",
     "split",
+    "split_by_degree_one",
     "tidy",
     "univariate",
 ]

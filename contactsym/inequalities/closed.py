@@ -45,6 +45,7 @@ def closed_form(
     *,
     raw_ops: float = RAW_OPS,
     factor_terms: float = FACTOR_TERMS,
+    memo: dict | None = None,
 ) -> sp.Basic:
     """The simplest equivalent form of a Boolean of relations, in the variables it is written in.
 
@@ -52,6 +53,10 @@ def closed_form(
     is written as ``small < big`` with the terms of known positive sign on the right, and is
     solved for ``solve_for_symbol`` when it is ``a x**2 + c`` or ``a x + c`` in it; in a
     conjunction ``x < c, -x < c`` merge into ``|x| < c`` and parts the others imply are dropped.
+
+    ``memo`` (a dict the caller keeps, e.g. one per scene) holds each relation's closed form and
+    each proof tried, for the next call: a scene's regions share most of their relations.
+    The answer is the same with or without it.
 
     Examples
     --------
@@ -63,9 +68,11 @@ def closed_form(
     (v_1 > 0) & (v_2 > 0)
     """
     limits = (raw_ops, factor_terms)
+    positive = tuple(positive)
+    memo = {} if memo is None else memo
     # a disjunct is dropped on a slack known > 0 only: a slack known >= 0 would drop more, as
     # correctly, but change the closed forms the scenes have printed so far
-    facts = Facts(positive, nonnegative_slack=False)
+    facts = memo.setdefault(("facts", positive), Facts(positive, nonnegative_slack=False))
     reduced = _reduce(condition, facts, solve_for_symbol, limits)
     if len(reduced.free_symbols) == 1 and isinstance(reduced, BooleanFunction):
         return univariate(reduced)
@@ -76,7 +83,7 @@ def _reduce(condition, facts: Facts, symbol, limits) -> sp.Basic:
     if condition in (sp.true, sp.false):
         return condition
     if isinstance(condition, Relational):
-        return _reduce_relation(condition, facts.positive, symbol, limits)
+        return facts.cached(("relation", condition, symbol, limits), _reduce_relation, condition, facts, symbol, limits)
     if isinstance(condition, BooleanFunction):
         args = [_reduce(arg, facts, symbol, limits) for arg in condition.args]
         if isinstance(condition, sp.And):
@@ -88,11 +95,19 @@ def _reduce(condition, facts: Facts, symbol, limits) -> sp.Basic:
     return condition
 
 
-def _reduce_relation(relation: Relational, positive, symbol, limits) -> sp.Basic:
+def _reduce_relation(relation: Relational, facts: Facts, symbol, limits) -> sp.Basic:
     raw_ops, factor_terms = limits
     expr, op = as_positive_relation(relation)
     if sp.count_ops(expr) > raw_ops:  # too large to expand: kept as given (module docstring)
         return relation
+    # P < 0 and -P > 0 are one relation: reduced once
+    return facts.cached(
+        ("positive relation", expr, op, symbol, limits), _reduce_positive, expr, op, facts, symbol, limits
+    )
+
+
+def _reduce_positive(expr: sp.Expr, op: type, facts: Facts, symbol, limits) -> sp.Basic:
+    positive, factor_terms = facts.positive, limits[1]
     rest, op, nonzero = drop_known_factors(normalize(expr), op, positive, factor_terms)
     arranged = arrange(rest, op, positive, factor_terms)
     if symbol is not None:

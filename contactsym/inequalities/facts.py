@@ -9,14 +9,16 @@ sign follows from the assumptions), False proves nothing.
 from __future__ import annotations
 
 import itertools
+import random
 from collections.abc import Callable, Iterator
+from functools import lru_cache
 
 import sympy as sp
 
 from ..algebra.basic import known_sign, normalize
 from .relations import Condition
 
-__all__ = ["Facts", "pythagorean", "half_angles"]
+__all__ = ["Facts", "POINTS", "pythagorean", "half_angles", "refuted"]
 
 
 def pythagorean(expr: sp.Expr) -> sp.Expr:
@@ -49,6 +51,49 @@ def half_angles(expr: sp.Expr) -> sp.Expr:
     return sp.expand(expr.xreplace({c: 1 - 2 * sp.sin(c.args[0] / 2) ** 2 for c in cosines}))
 
 
+#: Numbers tried for a symbol, in turn; each is used only where it has every property the symbol has.
+_CANDIDATES = tuple(sp.Rational(c) for c in ("1", "-1", "2", "-2", "1/2", "-1/3", "3", "-5/2", "0", "7", "-7", "1/7"))
+#: Points tried before a sign is asked of SymPy's assumptions (see :func:`refuted`).
+POINTS = 6
+
+
+@lru_cache(maxsize=4096)
+def _values_for(symbol: sp.Symbol) -> tuple[sp.Rational, ...]:
+    """The candidate numbers with every assumption of ``symbol`` (positive, integer, nonzero, ...)."""
+    facts = {k: v for k, v in symbol.assumptions0.items() if v is not None}
+    return tuple(c for c in _CANDIDATES if all(getattr(c, f"is_{k}") == v for k, v in facts.items()))
+
+
+def refuted(value: sp.Expr, sign: int, strict: bool, points: int = POINTS) -> bool:
+    """True when ``sign * value`` is exactly < 0 (or = 0, when ``strict``) at some point tried.
+
+    Then no proof that ``sign * value > 0`` (``>= 0`` when not ``strict``) exists: SymPy's assumptions
+    (``is_positive``, ``is_nonnegative``, ...) decide from the symbols' assumptions alone, and the
+    points tried are exact rationals with every assumption of each symbol (a SignSymbol is an
+    integer != 0, so +-1, +-2, ...). Only polynomials in symbols are tried; False proves nothing.
+
+    Examples
+    --------
+    >>> x, m = sp.Symbol("x", real=True), sp.Symbol("m", positive=True)
+    >>> refuted(m**2 + x, 1, True), refuted(m**2 + 1, 1, True), refuted(-m, -1, True)
+    (True, False, False)
+    """
+    symbols = sorted(value.free_symbols, key=str)
+    if not symbols or not all(isinstance(s, sp.Symbol) for s in symbols) or not value.is_polynomial(*symbols):
+        return False
+    choices = [_values_for(s) for s in symbols]
+    if not all(choices):
+        return False
+    rng = random.Random(len(symbols))  # reproducible: the same points for the same symbols
+    for _ in range(points):
+        number = sign * value.xreplace({s: rng.choice(c) for s, c in zip(symbols, choices)})
+        if not number.is_Rational:
+            return False
+        if number < 0 or (strict and number == 0):
+            return True
+    return False
+
+
 class Facts:
     """What is known: positive expressions and an optional presentation; decisions are cached.
 
@@ -62,6 +107,10 @@ class Facts:
     nonnegative_slack : bool
         Whether an implication may rest on a slack known only to be >= 0 (sound when a
         premise is strict or the conclusion is not); otherwise the slack must be known > 0.
+    refute : bool
+        Whether a sign is first tried at a few exact points (:func:`refuted`): where the sum
+        has the wrong sign at one, SymPy's assumptions are not asked (they could not prove it).
+        The answers are the same either way; only their cost differs.
 
     Examples
     --------
@@ -75,10 +124,13 @@ class Facts:
     True
     """
 
-    def __init__(self, positive=(), present: Callable | None = None, nonnegative_slack: bool = True):
+    def __init__(
+        self, positive=(), present: Callable | None = None, nonnegative_slack: bool = True, refute: bool = True
+    ):
         self.positive = tuple(positive)
         self.present = present
         self.nonnegative_slack = nonnegative_slack
+        self.refute = refute
         self._cache: dict = {}
 
     def cached(self, key, compute: Callable, *args):
@@ -112,11 +164,18 @@ class Facts:
     def _proves(self, slack, strict_premise: bool, strict_conclusion: bool) -> bool:
         """slack > 0, or slack >= 0 with a strict premise or a non-strict conclusion."""
         weak_enough = self.nonnegative_slack and (strict_premise or not strict_conclusion)
-        return any(value.is_positive or (weak_enough and value.is_nonnegative) for value in self._views(slack))
+        for value in self._views(slack):
+            if self.refute and refuted(value, 1, not weak_enough):
+                continue  # a point where the slack is < 0 (<= 0): no assumption proves it (cheaper than asking)
+            if value.is_positive or (weak_enough and value.is_nonnegative):
+                return True
+        return False
 
     def _nonpositive(self, total, strict: bool) -> bool:
         """total < 0 is known (total <= 0 when some condition is strict)."""
         for value in itertools.chain(self._views(total), self._rewritten(total)):
+            if self.refute and refuted(value, -1, not strict):
+                continue
             if value.is_negative or (strict and value.is_nonpositive):
                 return True
         return False

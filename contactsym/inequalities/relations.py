@@ -12,6 +12,7 @@ import sympy as sp
 from sympy.core.relational import Relational
 
 from ..algebra.basic import known_sign
+from .factors import factor_list
 
 __all__ = [
     "FLIP",
@@ -124,7 +125,7 @@ def drop_known_factors(expr: sp.Expr, op: type, positive, factor_terms: float) -
     if len(sp.Add.make_args(numerator)) > factor_terms:
         coefficient, factors = sp.S.One, [(numerator, 1)]
     else:
-        coefficient, factors = sp.factor_list(numerator)
+        coefficient, factors = factor_list(numerator)  # sympy's factor_list, skipped where irreducible is plain
     sign *= 1 if coefficient > 0 else -1
     rest, nonzero = sp.S.One, []
     for base, power in factors:

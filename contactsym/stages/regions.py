@@ -86,7 +86,11 @@ def closed_form(condition, scene=None, solve_for: sp.Symbol | None = None, signs
     condition, kept = _set_aside(condition)
     if condition in (sp.true, sp.false) or all(s in kept for s in condition.free_symbols):
         return condition.xreplace(kept)
-    reduced = inequalities.closed_form(condition, positive, solve_for, raw_ops=RAW_OPS, factor_terms=FACTOR_TERMS)
+    # one memo per scene: its regions share most relations and proofs (the answer is the same without it)
+    memo = scene.cached("closed forms", dict) if scene is not None else None
+    reduced = inequalities.closed_form(
+        condition, positive, solve_for, raw_ops=RAW_OPS, factor_terms=FACTOR_TERMS, memo=memo
+    )
     return reduced.xreplace(kept)
 
 
@@ -137,13 +141,23 @@ def scene_regions(scene, signs=None) -> dict[str, Region]:
         if raw is None:
             continue
         condition = closed_form(raw, scene, solve_for=getattr(scene, "solve_for", None), signs=signs)
-        regions[name] = Region(condition, name=name, description=f"{scene.name}: {attribute}")
+        regions[name] = Region(condition, name=name, description=f"{scene.name}: {_meaning(attribute, stability.k)}")
     if stability.k >= 3 and stability.undecided != sp.false:  # k <= 2: only det A = 0, where the propositions end
         statements = ("stable for every law", "unstable for every law", "law-dependent")
         named = [regions[n].condition for n in statements if n in regions]
         undecided = sp.Not(sp.Or(*named)) if len(named) == 3 else sp.true  # a numeric A: a statement is undecided
-        regions["undecided"] = Region(undecided, name="undecided", description=f"{scene.name}: no statement proved")
+        description = f"{scene.name}: undecided: no statement proved here (each may still hold)"
+        regions["undecided"] = Region(undecided, name="undecided", description=description)
     return regions
+
+
+def _meaning(attribute: str, k: int) -> str:
+    """What a region claims: for k >= 3 the statements are proved on sufficient regions only."""
+    if attribute == "hopf":
+        return "hopf: Delta_(n-1) = 0 with the other Hurwitz conditions > 0"
+    if k >= 3:
+        return f"{attribute}: where it is proved (a sufficient region; outside it the statement may still hold)"
+    return f"{attribute}: where it is proved"
 
 
 @dataclass(frozen=True, eq=False)

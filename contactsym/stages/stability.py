@@ -30,6 +30,7 @@ from ..algebra.basic import normalize
 from ..algebra.hurwitz import EXPAND_TERMS, Hurwitz, expansion_bound, hurwitz_minors
 from ..deprecation import deprecated_property
 from ..errors import SingularJacobianError
+from ..inequalities import factor_list
 from ..lyapunov.coefficient import first_lyapunov_symbolic
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, tex
 from .linear import lam, linearization_of
@@ -39,7 +40,7 @@ from .verdicts import Verdict, classification_verdicts, with_point_decision
 if TYPE_CHECKING:
     from ..robustness.classify import Robustness
 
-__all__ = ["Stability", "generic_minors", "hurwitz_names", "robustness_formulas", "stability_of"]
+__all__ = ["Stability", "generic_minors", "hurwitz_names", "robustness_formulas", "shortest_form", "stability_of"]
 
 #: The general theory's numbers and propositions, for k = 1, k = 2 and k >= 3 contacts.
 NUMBERS = Numbering(
@@ -233,6 +234,37 @@ class Stability(LatexReprMixin):
         return sp.sqrt(omega_squared)
 
     @cached_property
+    def _short_coefficients(self) -> dict:
+        """{p_s: its shortest exact form, -p_s: minus it} for the polynomial coefficients of (4.6)."""
+        fast = self.linearization.fast
+        law_symbols = set().union(*[sp.sympify(e).free_symbols for e in (*fast.Phi, *fast.Psi)])
+        shorter = {}
+        for coefficient in self.linearization.charpoly.all_coeffs():
+            short = shortest_form(sp.sympify(coefficient), law_symbols)
+            if short is not coefficient:
+                shorter.update({coefficient: short, -coefficient: -short})
+        return shorter
+
+    @cached_property
+    def hopf_printed(self) -> sp.Basic:
+        """:attr:`hopf` with each coefficient p_s of (4.6) in its shortest form (:func:`shortest_form`): the same set."""
+        return self.hopf.xreplace(self._short_coefficients) if self.hopf not in (sp.true, sp.false) else self.hopf
+
+    @cached_property
+    def hopf_frequency_printed(self) -> sp.Expr | None:
+        """:attr:`hopf_frequency` with each coefficient p_s of (4.6) in its shortest form: the same number.
+
+        Examples
+        --------
+        >>> import contactsym as cs
+        >>> st = cs.scene("brake").stability()
+        >>> sp.expand(st.hopf_frequency_printed**2 - st.hopf_frequency**2)
+        0
+        """
+        omega = self.hopf_frequency
+        return None if omega is None else omega.xreplace(self._short_coefficients)
+
+    @cached_property
     def first_lyapunov(self) -> sp.Expr | None:
         """The first Lyapunov coefficient l1 of (2.1) at the equilibrium, valid on the Hopf set.
 
@@ -306,13 +338,57 @@ class Stability(LatexReprMixin):
                 rows.append(row("coefficient", name, show(condition)))
         rows.append(row("hurwitz", ", ".join(names), sp.S.Zero, ">"))
         for key, attribute in _STATEMENTS:
-            value = getattr(self, attribute)
+            value = self.hopf_printed if attribute == "hopf" else getattr(self, attribute)
             rows.append(row(key, r"\text{" + key + "}", UNDECIDED_TEX if value is None else show(value), ":"))
         if self.k >= 3 and self.A.free_symbols and self.undecided != sp.false:
             rows.append(row("undecided", r"\text{undecided}", show(self.undecided), ":"))
         if self.hopf_frequency is not None:
-            rows.append(row("hopf frequency", r"\omega", show(self.hopf_frequency)))
+            rows.append(row("hopf frequency", r"\omega", show(self.hopf_frequency_printed)))
         return tuple(rows) + robustness_formulas(self.robustness)
+
+
+def shortest_form(polynomial: sp.Expr, outer=()) -> sp.Expr:
+    """The shortest of: ``polynomial`` as it is, factored, and grouped by the monomials in ``outer``
+    (e.g. the law's Phi_j, Psi_j) with each group's coefficient factored. Exact: the same polynomial.
+
+    Only a polynomial in symbols (of at most 400 terms; factored whole up to 100) is rewritten; the factoring is
+    :func:`contactsym.inequalities.factor_list` (cheap where variables of degree 1 split it).
+
+    Examples
+    --------
+    >>> a, b, c, d, P, Q = sp.symbols("a b c d Phi Psi")
+    >>> shortest_form(P * Q * a * d - P * Q * b * c + P * a + Q * d, (P, Q))
+    Phi*Psi*(a*d - b*c) + Phi*a + Psi*d
+    >>> shortest_form(a * c + a * d + b * c + b * d)
+    (a + b)*(c + d)
+    """
+    if not isinstance(polynomial, sp.Add) or len(polynomial.args) > 400:
+        return polynomial
+    symbols = polynomial.free_symbols
+    if not polynomial.is_polynomial(*symbols):
+        return polynomial
+    # factoring a long irreducible sum costs a second and finds nothing: the whole is factored up to 100 terms
+    candidates = [polynomial, _factored(polynomial) if len(polynomial.args) <= 100 else polynomial]
+    inner = sorted(symbols - set(outer), key=str)
+    if inner and symbols & set(outer):
+        groups = sp.Poly(polynomial, *sorted(symbols & set(outer), key=str)).as_dict()
+        gens = sorted(symbols & set(outer), key=str)
+        candidates.append(
+            sp.Add(
+                *[
+                    sp.Mul(*[g**e for g, e in zip(gens, powers)]) * _factored(sp.expand(c))
+                    for powers, c in groups.items()
+                ]
+            )
+        )
+    return min(candidates, key=sp.count_ops)
+
+
+def _factored(polynomial: sp.Expr) -> sp.Expr:
+    if not isinstance(polynomial, sp.Add):
+        return polynomial
+    coefficient, factors = factor_list(polynomial)
+    return sp.Mul(coefficient, *[base**power for base, power in factors])
 
 
 def stability_of(fast, signs=None) -> Stability:
