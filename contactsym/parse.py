@@ -43,7 +43,7 @@ from __future__ import annotations
 import difflib
 import re
 from collections.abc import Iterator, Mapping
-from contextlib import contextmanager
+from contextlib import AbstractContextManager, contextmanager
 from dataclasses import dataclass
 
 import sympy as sp
@@ -111,8 +111,7 @@ def _how_to_raise(name: str) -> str:
     return f"raise the cap with --limit {name.lower()}=N on the command line or contactsym.parse.formula_caps({name.lower()}=N)"
 
 
-@contextmanager
-def formula_caps(**caps: int) -> Iterator[None]:
+def formula_caps(**caps: int) -> AbstractContextManager[None]:
     """The caps of this module set to ``caps`` (by their lower-case names, :data:`CAPS`) inside
     the block and restored after it: how a larger formula is read on purpose.
 
@@ -135,6 +134,11 @@ def formula_caps(**caps: int) -> Iterator[None]:
             raise ParseError(f"{cut(name)} is not a cap of a formula{hint}; the caps are {', '.join(CAPS)}.")
         if isinstance(value, bool) or not isinstance(value, int) or value < 1:
             raise ParseError(f"{name} = {cut(repr(value))}: a cap is a whole number >= 1.")
+    return _caps_in_force(caps)  # checked now, in force when the block is entered
+
+
+@contextmanager
+def _caps_in_force(caps: dict) -> Iterator[None]:
     saved = {name: globals()[name.upper()] for name in caps}
     globals().update({name.upper(): value for name, value in caps.items()})
     try:

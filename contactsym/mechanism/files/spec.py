@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from contextlib import contextmanager
+from contextlib import AbstractContextManager, contextmanager
 from contextvars import ContextVar
 from dataclasses import dataclass, field, fields
 from types import MappingProxyType
@@ -192,8 +192,7 @@ class Limits:
 _IN_FORCE: ContextVar = ContextVar("contactsym_file_limits", default=None)
 
 
-@contextmanager
-def file_limits(limits: Limits) -> Iterator[None]:
+def file_limits(limits: Limits) -> AbstractContextManager[None]:
     """``limits`` in force for every scene file read inside the block that is not given its own
     (``load_scene(path)`` without ``limits=``): what ``contactsym --limit max_contacts=8`` does.
 
@@ -211,6 +210,11 @@ def file_limits(limits: Limits) -> Iterator[None]:
     """
     if not isinstance(limits, Limits):
         raise SceneError(f"file_limits takes a contactsym.mechanism.files.Limits, not {shorten(limits)}.")
+    return _in_force(limits)  # checked now, in force when the block is entered
+
+
+@contextmanager
+def _in_force(limits: Limits) -> Iterator[None]:
     token = _IN_FORCE.set(limits)
     try:
         yield
