@@ -108,7 +108,7 @@ CAPS = ("max_length", "max_depth", "max_exponent", "max_digits", "max_degree", "
 
 def _how_to_raise(name: str) -> str:
     """How to raise the cap ``name`` (``MAX_DEGREE``): the command line's option and Python's."""
-    return f"raise the cap with --limit {name.lower()}=N on the command line or contactsym.parse.formula_caps({name.lower()}=N)"
+    return f"raise it with --limit {name.lower()}=N (in Python: parse.formula_caps)"
 
 
 def formula_caps(**caps: int) -> AbstractContextManager[None]:
