@@ -14,6 +14,12 @@ The commands::
     contactsym atlas SCENE QUANTITY --grid NAME=START:STOP:COUNT [--scheduler ADDRESS] [--out FILE.nc]
                                              a parameter sweep (contactsym[atlas]; see contactsym.atlas)
 
+Caps on what a scene file may cost (its size, its number of contacts, ...: the fields of
+:class:`contactsym.mechanism.files.Limits`; the powers, numbers and nesting of its formulas:
+:data:`contactsym.parse.CAPS`) refuse a file beyond them, naming the cap. ``--limit CAP=N``,
+before or after the command and as often as needed, raises one for this run, e.g.
+``contactsym --limit max_degree=64 --limit max_contacts=8 report big.toml``.
+
 Output directories are written all or nothing (:mod:`contactsym.atomic`): a report or
 benchmark directory appears whole or not at all, and one that contactsym did not write
 is replaced only with ``--force``. SIGTERM and SIGINT remove the temporary files.
@@ -26,10 +32,13 @@ directory, a pdflatex error).
 from __future__ import annotations
 
 import argparse
+import difflib
 import json
 import os
 import sys
 import time
+from contextlib import ExitStack
+from dataclasses import fields
 from pathlib import Path
 
 import sympy as sp
@@ -37,8 +46,9 @@ import sympy as sp
 from .atomic import last_signal, replaced_directory, scratch_directory, signals_as_exceptions
 from .errors import ContactsymError, SceneError, SignPatternError
 from .mechanism.files.reader import scene_or_file
+from .mechanism.files.spec import Limits, file_limits
 from .mechanism.scene import Scene
-from .parse import ParseError
+from .parse import CAPS, ParseError, formula_caps
 from .scenes import DEFAULT_SCENE, scene, scene_names
 from .validate import cut, shorten
 
@@ -185,18 +195,62 @@ class _Parser(argparse.ArgumentParser):
         self.exit(USAGE, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 
+#: The caps ``--limit`` raises: a scene file's sizes, then its formulas'.
+LIMIT_NAMES = tuple(f.name for f in fields(Limits)) + CAPS
+
+
+def _limit(text: str) -> tuple[str, int]:
+    """One ``--limit CAP=N``: a cap's name (:data:`LIMIT_NAMES`) and a whole number >= 1."""
+    name, equals, value = text.partition("=")
+    name = name.strip()
+    if not equals or name not in LIMIT_NAMES:
+        close = difflib.get_close_matches(name, LIMIT_NAMES, n=1)
+        hint = f"did you mean {close[0]}? " if close else ""
+        raise argparse.ArgumentTypeError(
+            f"{cut(text, 40)!r} is not CAP=N; {hint}give e.g. --limit max_degree=64 (--help lists the caps)"
+        )
+    return name, _positive_int(value.strip())
+
+
+def _add_limit(parser: argparse.ArgumentParser, dest: str) -> None:
+    parser.add_argument(
+        "--limit",
+        dest=dest,
+        action="append",
+        type=_limit,
+        default=[],
+        metavar="CAP=N",
+        help=f"raise a cap on scene files for this run (repeatable); CAP is one of {', '.join(LIMIT_NAMES)}",
+    )
+
+
+def _raised_limits(pairs) -> ExitStack:
+    """The caps of ``--limit`` in force: file sizes through ``file_limits``, formulas through ``formula_caps``."""
+    values = dict(pairs)
+    stack = ExitStack()
+    sizes = {name: value for name, value in values.items() if name not in CAPS}
+    if sizes:
+        stack.enter_context(file_limits(Limits(**sizes)))
+    stack.enter_context(formula_caps(**{name: value for name, value in values.items() if name in CAPS}))
+    return stack
+
+
 def _parser() -> argparse.ArgumentParser:
     names = ", ".join(scene_names()) + ", or a scene file (.toml)"
     parser = _Parser(prog="contactsym", description="Exact stability of frictional compliant contacts.")
+    _add_limit(parser, "limits")
     sub = parser.add_subparsers(dest="command", parser_class=_Parser)
     show = sub.add_parser("show", help="print the derivation chain of a scene")
+    _add_limit(show, "command_limits")
     show.add_argument("scene", nargs="?", default=DEFAULT_SCENE, help=f"one of {names}")
     sub.add_parser("list", help="list the built-in scenes")
     cond = sub.add_parser("conditions", help="print a scene's stability conditions and regions")
+    _add_limit(cond, "command_limits")
     cond.add_argument("scene", help=f"one of {names}")
     cond.add_argument("--format", choices=("text", "latex", "json"), default="text", help="output format")
     cond.add_argument("--signs", help="one sign pattern of the switching functions, e.g. +1,-1")
     report = sub.add_parser("report", help="write a LaTeX/PDF report per scene, with figures and conditions.json")
+    _add_limit(report, "command_limits")
     report.add_argument("scenes", nargs="*", metavar="SCENE", help=f"scenes to report (default: all of {names})")
     report.add_argument(
         "--out", default="contactsym-report", type=_path, help="output directory (default: contactsym-report)"
@@ -361,7 +415,7 @@ def _main(argv: list[str] | None) -> int:
         print("contactsym: interrupted", file=sys.stderr)
         return getattr(stop, "exit_code", 130)
     try:
-        with sp.evaluate(True):
+        with sp.evaluate(True), _raised_limits(args.limits + getattr(args, "command_limits", [])):
             code = _run(args)
         sys.stdout.flush()
         if last_signal() is not None:  # it landed where Python swallows exceptions (a finalizer): still a stop

@@ -19,8 +19,10 @@ numbers become exact rationals (0.1 is 1/10).
 
 A formula is text a user writes, so its size is capped before it can cost minutes or
 memory later in the pipeline; each refusal is a :class:`ParseError` that names the cap.
-The caps are module constants, read at each call: raise one (e.g.
-``contactsym.parse.MAX_DEGREE = 100``) to read a formula beyond it.
+The caps are module constants, read at each call. To read a formula beyond one, raise it:
+on the command line ``contactsym --limit max_degree=100 ...`` (the lower-case name of the
+cap), in Python ``with contactsym.parse.formula_caps(max_degree=100): ...`` or, for the
+whole process, ``contactsym.parse.MAX_DEGREE = 100``.
 
 - :data:`MAX_LENGTH` characters, nested at most :data:`MAX_DEPTH` deep (refused before
   any work), with at most :data:`MAX_CALL_DEPTH` function calls inside one another;
@@ -40,7 +42,8 @@ from __future__ import annotations
 
 import difflib
 import re
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
+from contextlib import AbstractContextManager, contextmanager
 from dataclasses import dataclass
 
 import sympy as sp
@@ -49,6 +52,7 @@ from .errors import ParseError
 from .validate import cut
 
 __all__ = [
+    "CAPS",
     "FUNCTIONS",
     "MAX_CALL_DEPTH",
     "MAX_DEGREE",
@@ -57,6 +61,7 @@ __all__ = [
     "MAX_EXPONENT",
     "MAX_LENGTH",
     "ParseError",
+    "formula_caps",
     "parse_expression",
     "sympy_only",
 ]
@@ -96,6 +101,51 @@ MAX_DIGITS = 301
 MAX_DEGREE = 32
 #: Most function calls nested inside one another.
 MAX_CALL_DEPTH = 8
+
+#: The caps by the names ``--limit`` and :func:`formula_caps` take (``max_degree`` is MAX_DEGREE).
+CAPS = ("max_length", "max_depth", "max_exponent", "max_digits", "max_degree", "max_call_depth")
+
+
+def _how_to_raise(name: str) -> str:
+    """How to raise the cap ``name`` (``MAX_DEGREE``): the command line's option and Python's."""
+    return f"raise it with --limit {name.lower()}=N (in Python: parse.formula_caps)"
+
+
+def formula_caps(**caps: int) -> AbstractContextManager[None]:
+    """The caps of this module set to ``caps`` (by their lower-case names, :data:`CAPS`) inside
+    the block and restored after it: how a larger formula is read on purpose.
+
+    Examples
+    --------
+    >>> N = sp.Symbol("N")
+    >>> with formula_caps(max_degree=40):
+    ...     parse_expression("N^40", {"N": N})
+    N**40
+    >>> try:
+    ...     parse_expression("N^40", {"N": N})
+    ... except ParseError as error:
+    ...     print(str(error).split(": ", 2)[2].split(";")[0])
+    more than contactsym.parse.MAX_DEGREE = 32 allows
+    """
+    for name, value in caps.items():
+        if name not in CAPS:
+            close = difflib.get_close_matches(name, CAPS, n=1)
+            hint = f" (did you mean {close[0]}?)" if close else ""
+            raise ParseError(f"{cut(name)} is not a cap of a formula{hint}; the caps are {', '.join(CAPS)}.")
+        if isinstance(value, bool) or not isinstance(value, int) or value < 1:
+            raise ParseError(f"{name} = {cut(repr(value))}: a cap is a whole number >= 1.")
+    return _caps_in_force(caps)  # checked now, in force when the block is entered
+
+
+@contextmanager
+def _caps_in_force(caps: dict) -> Iterator[None]:
+    saved = {name: globals()[name.upper()] for name in caps}
+    globals().update({name.upper(): value for name, value in caps.items()})
+    try:
+        yield
+    finally:
+        globals().update({name.upper(): value for name, value in saved.items()})
+
 
 _TOKEN = re.compile(
     r"(?P<space>\s+)|(?P<number>(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)|(?P<name>[A-Za-z][A-Za-z0-9_]*'*)"
@@ -178,13 +228,19 @@ class _Parser:
     def nest(self):
         self.depth += 1
         if self.depth > MAX_DEPTH:
-            self.fail(self.token.column, f"nested more than {MAX_DEPTH} deep; write the formula in simpler parts")
+            self.fail(
+                self.token.column,
+                f"nested more than contactsym.parse.MAX_DEPTH = {MAX_DEPTH} deep; write the formula in simpler "
+                f"parts, or {_how_to_raise('MAX_DEPTH')}",
+            )
 
     # --- caps on what a formula may cost (see the module's documentation) ------------
 
     def cap(self, column: int, what: str, name: str, fix: str):
         value = globals()[name]
-        self.fail(column, f"{what}: more than contactsym.parse.{name} = {value} allows; {fix}, or raise that cap")
+        self.fail(
+            column, f"{what}: more than contactsym.parse.{name} = {value} allows; {fix}, or {_how_to_raise(name)}"
+        )
 
     def bounded(self, expr: sp.Expr, column: int) -> sp.Expr:
         """``expr``, checked where numbers are made: digits of a rational, size of any other number."""
@@ -410,8 +466,8 @@ def parse_expression(
         raise ParseError(f"{_where(source, line, column)}: a formula must be text, not {type(text).__name__}.")
     if len(text) > MAX_LENGTH:
         raise ParseError(
-            f"{_where(source, line, column)}: the formula has {len(text)} characters, more than {MAX_LENGTH}; "
-            "split it into named parts."
+            f"{_where(source, line, column)}: the formula has {len(text)} characters, more than "
+            f"contactsym.parse.MAX_LENGTH = {MAX_LENGTH}; split it into named parts, or {_how_to_raise('MAX_LENGTH')}."
         )
     with sp.evaluate(True):
         return _Parser(text, names, source, line, column).parse()

@@ -187,3 +187,33 @@ def test_report_resolution_and_dpi_reach_the_figures(capfd, tmp_path):
         widths[dpi] = int.from_bytes(png.read_bytes()[16:20], "big")  # the IHDR width of a PNG
     capfd.readouterr()
     assert widths[80] == pytest.approx(2 * widths[40], abs=2)
+
+
+# --- --limit CAP=N raises a cap for one run ------------------------------------------------
+
+BIG_POWER = '[scene]\ncoordinates = ["y"]\n[parameters]\nY = "positive"\n[accelerations]\ny = "N*(1+Y)^40 - 1"\n'
+BIG_POWER += '[[contacts]]\ngap = "y"\nreaction = "N"\n'
+
+
+def test_limit_raises_a_formula_cap_and_a_file_cap_for_one_run(capsys, tmp_path):
+    path = tmp_path / "big.toml"
+    path.write_text(BIG_POWER)
+    assert main(["show", str(path)]) == 2
+    error = capsys.readouterr().err
+    assert "MAX_DEGREE = 32" in error and "--limit max_degree=N" in error  # the refusal says how to raise it
+    assert main(["--limit", "max_degree=40", "show", str(path)]) == 0
+    assert "(Y + 1)**40" in capsys.readouterr().out
+    assert main(["conditions", str(path), "--limit", "max_degree=40", "--limit", "max_bytes=50"]) == 2
+    error = capsys.readouterr().err
+    assert "Limits.max_bytes" in error and "--limit max_bytes=" in error
+    assert main(["conditions", str(path), "--limit", "max_degree=40", "--limit", "max_bytes=5000"]) == 0
+    capsys.readouterr()
+    assert main(["show", str(path)]) == 2  # the caps are back after the run
+    assert "MAX_DEGREE = 32" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("option", ["max_degre=40", "max_degree", "max_degree=0", "max_degree=x"])
+def test_a_bad_limit_is_a_usage_error(capsys, option):
+    assert main(["--limit", option, "list"]) == 2
+    error = capsys.readouterr().err
+    assert "--limit" in error and "\n" not in error.strip()

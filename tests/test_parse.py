@@ -229,7 +229,8 @@ def test_formulas_beyond_a_cap_are_refused_naming_the_cap(text, cap):
     with pytest.raises(ParseError) as raised:
         parse_expression(text, {"N": N, "Y": Y}, source="f.toml", line=3)
     message = str(raised.value)
-    assert message.startswith("f.toml:3:") and f"contactsym.parse.{cap} = " in message and "raise that cap" in message
+    assert message.startswith("f.toml:3:") and f"contactsym.parse.{cap} = " in message
+    assert f"raise it with --limit {cap.lower()}=N (in Python: parse.formula_caps)" in message  # how to raise it
     assert "\n" not in message and len(message) < 300
 
 

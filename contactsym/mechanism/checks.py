@@ -20,7 +20,16 @@ from ..validate import finite_expression, positive_parameter, reactions_act, sho
 from .contact import plain_symbol
 from .contact_space import t
 
-__all__ = ["check_eps", "check_equations", "check_inertia", "check_scene", "user_names", "with_friction"]
+__all__ = [
+    "check_delassus",
+    "check_eps",
+    "check_equations",
+    "check_inertia",
+    "check_scene",
+    "frictionless_part",
+    "user_names",
+    "with_friction",
+]
 
 
 def check_eps(eps, taken=()) -> sp.Expr:
@@ -290,8 +299,9 @@ def check_inertia(scene) -> str:
 
     Proved from the declared assumptions where Sylvester's criterion decides it (positive masses
     and inertias), otherwise checked exactly at sample points (sin and cos of each angle on a
-    rational point of the circle). Returns 'proved', 'sampled' or 'unchecked' (a scene given by
-    its accelerations has no mass matrix); raises SceneError naming the coordinates.
+    rational point of the circle). A scene given by its accelerations has no mass matrix: there
+    :func:`check_delassus` checks what its accelerations show of it. Returns 'proved', 'sampled'
+    or 'unchecked'; raises SceneError naming the coordinates (the contacts).
     """
     positive = scene._declared_positive
     if scene.contact_space is not None:
@@ -314,6 +324,98 @@ def check_inertia(scene) -> str:
             "energy can be zero or negative for a motion of them; check the signs of the masses and inertias "
             "(they must be positive) and of the lengths that couple these coordinates."
         )
-    # accelerations may hold friction on a piece (mu |N| = mu N for N > 0), so dg''/dN of either sign is
-    # admissible there (the Painleve paradox is A < 0): without a mass matrix there is nothing to check
-    return "unchecked"
+    return check_delassus(scene)
+
+
+def frictionless_part(scene) -> tuple[sp.Matrix, tuple[int, ...]] | None:
+    """(G, shown) for a scene given by its accelerations: ``G[i, j]`` is the coefficient of reaction
+    j in the acceleration of contact i's gap once every term with an ``Abs`` or ``sign`` is removed,
+    over the contacts ``shown`` whose reaction appears inside an ``Abs`` or ``sign`` (their friction
+    is written out, as :meth:`Scene.from_accelerations` documents). None when no reaction is shown or
+    the remaining terms are not linear in the reactions.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> frictionless_part(cs.scene("painleve-klein-rod"))
+    (Matrix([[2]]), (0,))
+    """
+    reactions = [c.reaction for c in scene.contacts]
+    nonsmooth = set().union(*(g.atoms(sp.Abs, sp.sign) for g in scene.accelerations.values()))
+    shown = {j for j, n in enumerate(reactions) for f in nonsmooth if f.args[0].has(n)}
+    rows = []
+    for contact in scene.contacts:
+        terms = sp.Add.make_args(sp.expand(scene.accelerations[contact.coordinate]))
+        rest = sp.Add(*[term for term in terms if not term.has(sp.Abs, sp.sign)])
+        row = [sp.diff(rest, n) for n in reactions]
+        if any(entry.has(*reactions) for entry in row):
+            return None  # not linear in the reactions: no Delassus matrix to read
+        rows.append(row)
+    if not shown:
+        return None
+    index = tuple(sorted(shown))
+    G = sp.Matrix(rows).extract(list(index), list(index)).applyfunc(scene.plain)
+    return G, index
+
+
+def check_delassus(scene) -> str:
+    """The reactions of a scene given by its accelerations push their gaps open without friction.
+
+    What can be checked, and why it is sound. A mechanical system with masses and inertias has
+    accelerations q'' = M^-1 (F + sum_j e_j N_j + sum_j f_j) with M positive definite, the gap of
+    contact j a coordinate (its unit vector e_j) and f_j the friction force of contact j, mu_j times
+    the absolute value of a normal force times a direction of sliding: a term with ``Abs`` (or the
+    ``sign`` of a slip), as :meth:`Scene.from_accelerations` asks friction to be written. Rigid
+    constraints eliminated first (the guides of §3) replace M^-1 by P = M^-1 - M^-1 C^T (C M^-1 C^T)^-1 C M^-1,
+    positive semidefinite. So the terms of contact i's acceleration without ``Abs``/``sign`` are
+    e_i^T P (F + sum_j e_j N_j), and their coefficients G = (e_i^T P e_j), the Delassus matrix of
+    the frictionless system, form a positive semidefinite matrix: every principal minor of G is
+    >= 0, a diagonal entry > 0 unless its gap cannot move at all. A friction term folded in
+    without ``Abs`` (mu N on a piece with N > 0) changes only its reaction's column, so the check
+    reads the rows and columns of the reactions that appear inside an ``Abs`` or ``sign`` (their
+    friction is written out); a scene with none is not checked (``y'' = a N - 1`` with a < 0 may
+    be Painleve's friction on a piece). A negative principal minor, proved from the assumptions or
+    exact at a sample point of the declared domain, contradicts a positive definite M: a mass or
+    inertia of the wrong sign, or a reaction written with the wrong sign.
+
+    Returns 'proved' (every principal minor positive by the assumptions), 'sampled' (no negative
+    minor at the sample points) or 'unchecked'; raises SceneError naming the contacts.
+    """
+    found = frictionless_part(scene)
+    if found is None:
+        return "unchecked"
+    G, index = found
+    positive = scene._declared_positive
+    k = G.rows
+    subsets = (
+        [c for size in range(1, k + 1) for c in itertools.combinations(range(k), size)]
+        if k <= 4
+        else [c for size in (1, 2) for c in itertools.combinations(range(k), size)]
+    )
+    minors = {c: G.extract(list(c), list(c)).det(method="berkowitz") for c in subsets}
+    signs = {c: known_sign(m, positive) if m != 0 else 0 for c, m in minors.items()}
+    for c, sign in signs.items():
+        if sign == -1 or (len(c) == 1 and sign == 0):
+            _refuse_delassus(scene, index, c, minors[c], None)
+    if all(sign == 1 for sign in signs.values()):
+        return "proved"
+    points = _sample_points(list(G), positive)
+    for point in points:
+        for c, minor in minors.items():
+            sign = _sign_at(minor, point)
+            if sign == -1 or (len(c) == 1 and sign == 0):
+                _refuse_delassus(scene, index, c, minor, point)
+    return "sampled" if points else "unchecked"
+
+
+def _refuse_delassus(scene, index, chosen, minor, point):
+    contacts = [scene.contacts[index[i]] for i in chosen]
+    names = ", ".join(f"{_name(c.reaction)} on {_name(c.coordinate)}" for c in contacts)
+    where = f" at {_shown_point(point)}" if point else ""
+    what = "coefficient" if len(chosen) == 1 else "principal minor of the coefficients"
+    raise SceneError(
+        f"the reactions do not push their gaps open: without friction (the terms with Abs or sign removed) the "
+        f"{what} of the reactions ({names}) in their gaps' accelerations is {shorten(minor)}{where}, not positive; "
+        "for positive masses and inertias it is (the Delassus matrix W M^-1 W^T): check the signs of the masses and "
+        "inertias in the accelerations (they must be positive) and the sign of each reaction (N > 0 pushes its gap open)."
+    )

@@ -67,7 +67,9 @@ def test_accelerations_may_have_a_negative_reaction_coefficient():
 def test_builtin_scenes_are_admissible():
     for name in cs.scene_names():
         s = cs.scene(name)
-        assert s.inertia in (("unchecked",) if s.contact_space is None else ("proved", "sampled")), name
+        # a scene given by its accelerations is checked where its friction is written out (Abs or sign)
+        assert s.inertia in ("proved", "sampled") or (s.contact_space is None and s.inertia == "unchecked"), name
+    assert cs.scene("painleve-klein-rod").inertia == "proved"  # G = 2: two unit masses joined by the rod
 
 
 # --- random mechanisms: M = J^T diag(m) J ----------------------------------------------
@@ -114,3 +116,95 @@ def test_random_mechanism_with_one_negative_mass_is_refused(J, weights, which):
         SceneError, match=r"mass matrix is (not positive definite|singular).*q_"
     ):  # singular: m_i cancel
         chain(J, masses)
+
+
+# --- scenes given by their accelerations: the frictionless coefficients (Delassus matrix) ------
+
+SLIDING_POINT = """
+[scene]
+coordinates = ["x", "y"]
+[parameters]
+m = "positive"
+mu = "positive"
+X = "real"
+Y = "real"
+[accelerations]
+x = "(X - mu*Abs(N))/m"
+y = "(N + Y)/m"
+[[contacts]]
+gap = "y"
+reaction = "N"
+"""
+
+
+def test_an_accelerations_file_with_a_positive_mass_is_proved_admissible():
+    assert cs.read_scene(SLIDING_POINT).inertia == "proved"
+
+
+@pytest.mark.parametrize(
+    ("old", "new"),
+    [('m = "positive"', 'm = "negative"'), ('y = "(N + Y)/m"', 'y = "(-N + Y)/m"'), ('y = "(N + Y)/m"', 'y = "Y/m"')],
+)
+def test_an_accelerations_file_whose_reaction_pulls_its_gap_shut_is_refused(old, new):
+    with pytest.raises(SceneError, match=r"do not push their gaps open: .*N on y.*signs of the masses"):
+        cs.read_scene(SLIDING_POINT.replace(old, new))
+
+
+def test_the_python_api_refuses_a_negative_mass_in_the_accelerations():
+    x, y = dynamicsymbols("x y")
+    N, mu = sp.Symbol("N", real=True), sp.Symbol("mu", positive=True)
+    m = sp.Symbol("m", negative=True)
+    contact = cs.Contact(coordinate=y, reaction=N)
+    with pytest.raises(SceneError, match=r"coefficient of the reactions \(N on y\) .* is 1/m"):
+        cs.Scene.from_accelerations([x, y], [-mu * sp.Abs(N) / m, N / m - 1], [contact])
+    friction = cs.Contact(coordinate=y, reaction=N, friction=cs.Coulomb(mu, {x: 1}))  # attached: shown too
+    with pytest.raises(SceneError, match=r"do not push their gaps open"):
+        cs.Scene.from_accelerations([x, y], [0, N / m - 1], [friction])
+
+
+def accelerations_mechanism(J: sp.Matrix, masses, k: int, directions):
+    """q'' = M^-1 (F + sum_j e_j N_j - mu |N_j| tau_j), M = J^T diag(m) J, contacts on q_1..q_k."""
+    n = J.cols
+    q = dynamicsymbols(f"q_1:{n + 1}")
+    N = sp.symbols(f"N_1:{k + 1}", real=True)
+    mu = sp.Symbol("mu", positive=True)
+    Minv = (J.T * sp.diag(*masses) * J).inv()
+    force = sp.Matrix([-1] * n)  # a load
+    for j in range(k):
+        force[j] += N[j]
+        force -= mu * sp.Abs(N[j]) * sp.Matrix(directions[j * n : (j + 1) * n])
+    accelerations = list(Minv * force)
+    return Minv, cs.Scene.from_accelerations(
+        q, accelerations, [cs.Contact(coordinate=q[j], reaction=N[j]) for j in range(k)]
+    )
+
+
+@settings(max_examples=30, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    J=matrices,
+    weights=st.lists(st.integers(1, 9), min_size=3, max_size=3),
+    negative=st.integers(-1, 2),
+    k=st.integers(1, 2),
+    directions=st.lists(st.integers(-2, 2), min_size=6, max_size=6),
+)
+def test_random_accelerations_are_refused_exactly_when_their_delassus_matrix_is_not_semidefinite(
+    J, weights, negative, k, directions
+):
+    """Positive masses: accepted (G = principal part of M^-1 is positive definite). One mass negated
+    (``negative``; -1 for none): refused exactly when the frictionless G has a negative eigenvalue or a zero
+    diagonal entry (checked independently, by the eigenvalues of the exact G)."""
+    assume(J.det() != 0)
+    n = J.rows
+    k = min(k, n)
+    assume(all(any(directions[j * n : (j + 1) * n]) for j in range(k)))  # each contact's friction written out
+    masses = [(-w if i == negative else w) for i, w in enumerate(weights[:n])]
+    assume(sp.Matrix(J.T * sp.diag(*masses) * J).det() != 0)
+    G = (J.T * sp.diag(*masses) * J).inv()[:k, :k]
+    eigenvalues = [complex(ev).real for ev in G.evalf(30).eigenvals(multiple=True)]
+    bad = min(eigenvalues) < -1e-12 or any(G[i, i] == 0 for i in range(k))
+    assert not (negative < 0 and bad)  # positive masses: G is positive definite
+    if bad:
+        with pytest.raises(SceneError, match=r"do not push their gaps open"):
+            accelerations_mechanism(J, masses, k, directions)
+    else:
+        assert accelerations_mechanism(J, masses, k, directions)[1].inertia in ("proved", "sampled")

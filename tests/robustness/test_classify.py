@@ -120,6 +120,31 @@ def test_stool_without_friction_is_stable_for_every_law():
     assert result.verdict == "stable"
 
 
+def test_stool_regions_claim_no_more_than_is_proved():
+    """The symbolic stool's regions (field notes, k = 3): every point lies in exactly one of the named
+    regions, "undecided" included; where a statement's region holds, the point decision at the numeric A
+    (checked against 10^4 laws, its witnesses by eigenvalues) says the same. At mu = 0.05, h = 1, where
+    3,000 sampled laws were all stable, the region says undecided and the point decision finds two exact
+    witness laws: law-dependent (the unstable law has Phi_1/Phi_2 ~ 10^-10, which sampling misses)."""
+    regions = _stool.regions((1, 1, 1))
+    names = ("stable for every law", "unstable for every law", "law-dependent", "undecided")
+    assert set(names) <= set(regions)
+    verdicts = {
+        "stable for every law": "stable",
+        "unstable for every law": "unstable",
+        "law-dependent": "law-dependent",
+    }
+    A = _stool.linearization(signs=(1, 1, 1)).A
+    for mu_value, h_value in ((sp.Rational(1, 20), 1), (1, 2), (sp.Rational(3, 2), sp.Rational(1, 2))):
+        point = {mu: mu_value, h: h_value}
+        inside = [name for name in names if regions[name].condition.xreplace(point) == sp.true]
+        assert len(inside) == 1, (point, inside)
+        result = check_claims(A.xreplace(point))
+        assert verdicts.get(inside[0], result.verdict) == result.verdict
+        if mu_value == sp.Rational(1, 20):
+            assert inside == ["undecided"] and result.verdict == "law-dependent"
+
+
 # --- k = 2: Proposition 6 exactly ----------------------------------------------------------
 
 

@@ -8,7 +8,7 @@ and :func:`read_scene` do both.
 
 from .contacts import COMPLIANCE_LAWS, LawKind
 from .reader import LIMITS, build_scene, load_scene, read_scene, read_spec, scene_or_file
-from .spec import SCHEMA, FigurePlan, Limits, SceneSpec
+from .spec import SCHEMA, FigurePlan, Limits, SceneSpec, file_limits
 from .toml_source import SceneFileError, TomlSource, shown
 
 __all__ = [
@@ -22,6 +22,7 @@ __all__ = [
     "SceneSpec",
     "TomlSource",
     "build_scene",
+    "file_limits",
     "load_scene",
     "read_scene",
     "read_spec",

@@ -72,7 +72,7 @@ from .declarations import FormulaReader, read_declarations
 from .figures import pipeline_names, read_figures
 from .space import Space, check_orientations
 from .spatial import read_space
-from .spec import FigurePlan, Limits, SceneSpec
+from .spec import FigurePlan, Limits, SceneSpec, limits_in_force
 from .toml_source import SceneFileError, TomlSource, shown
 
 __all__ = [
@@ -102,7 +102,8 @@ _LAGRANGIAN_TABLES = ("energy", "points", "masses", "bodies", "loads")
 def _beyond(source: str, line: int, count: int, what: str, cap: str, limits: Limits):
     raise SceneFileError(
         f"{source}:{line}: {count} {what}, more than the cap of {getattr(limits, cap)} (Limits.{cap}); "
-        f"to read it anyway, pass limits=Limits({cap}={count}) (contactsym.mechanism.files.Limits) to load_scene."
+        f"to read it anyway, pass limits=Limits({cap}={count}) (contactsym.mechanism.files.Limits) to load_scene, "
+        f"or on the command line: contactsym --limit {cap}={count} ..."
     )
 
 
@@ -176,6 +177,7 @@ def read_spec(
         raise SceneFileError(f"{source}: a scene file's text must be a str, not {type(text).__name__}.")
     if not isinstance(limits, Limits):
         raise SceneFileError(f"{source}: limits must be a contactsym.mechanism.files.Limits, not {shown(limits)}.")
+    limits = limits_in_force(limits)
     if len(text) > limits.max_bytes:  # the characters of a text; load_scene counts bytes before it decodes
         _beyond(source, 1, len(text), "characters", "max_bytes", limits)
     doc = TomlSource(text, source)
@@ -363,6 +365,7 @@ def load_scene(path, *, limits: Limits = LIMITS) -> Scene:
         raise SceneFileError(f"load_scene takes a path (str or pathlib.Path), not {shown(path)}.")
     if not isinstance(limits, Limits):
         raise SceneFileError(f"limits must be a contactsym.mechanism.files.Limits, not {shown(limits)}.")
+    limits = limits_in_force(limits)
     path = Path(path)
     text = _read_regular_file(path, limits)
     default = re.sub(r"[^A-Za-z0-9_.\-]", "-", path.stem)[:64] or "user"

@@ -10,6 +10,9 @@ the spec alone. Every spec item keeps the line it was read from, for messages.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
+from contextlib import AbstractContextManager, contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass, field, fields
 from types import MappingProxyType
 
@@ -33,6 +36,8 @@ __all__ = [
     "PointSpec",
     "SceneSpec",
     "TableSchema",
+    "file_limits",
+    "limits_in_force",
 ]
 
 
@@ -168,8 +173,11 @@ class Limits:
     """Caps on the size of a scene file, so that a file beyond them is refused in a moment.
 
     Pass ``limits=Limits(max_contacts=8)`` to :func:`~contactsym.mechanism.files.reader.load_scene`
-    or :func:`~contactsym.mechanism.files.reader.read_scene` to read a larger scene. The
-    formulas have their own caps, in :mod:`contactsym.parse`.
+    or :func:`~contactsym.mechanism.files.reader.read_scene` to read a larger scene, or raise caps
+    for every read inside a block with :func:`file_limits`; on the command line,
+    ``contactsym --limit max_contacts=8 ...`` (each field by its name). The formulas have their own
+    caps, in :mod:`contactsym.parse` (``--limit max_degree=64`` raises one of those). A file cannot
+    raise its own caps: they guard against the file.
 
     Examples
     --------
@@ -203,6 +211,46 @@ class Limits:
             value = getattr(self, cap.name)
             if isinstance(value, bool) or not isinstance(value, int) or value < 1:
                 raise SceneError(f"Limits({cap.name}={value!r}): a cap is a whole number >= 1.")
+
+
+#: The caps :func:`file_limits` put in force, or None for the defaults (or what the caller passes).
+_IN_FORCE: ContextVar = ContextVar("contactsym_file_limits", default=None)
+
+
+def file_limits(limits: Limits) -> AbstractContextManager[None]:
+    """``limits`` in force for every scene file read inside the block that is not given its own
+    (``load_scene(path)`` without ``limits=``): what ``contactsym --limit max_contacts=8`` does.
+
+    Examples
+    --------
+    >>> from contactsym.mechanism.files import read_scene
+    >>> text = ('[scene]\\ncoordinates = ["x", "y"]\\n[accelerations]\\nx = "N_1"\\ny = "N_2"\\n'
+    ...         '[[contacts]]\\ngap = "x"\\nreaction = "N_1"\\n[[contacts]]\\ngap = "y"\\nreaction = "N_2"\\n')
+    >>> with file_limits(Limits(max_contacts=1)):
+    ...     try:
+    ...         read_scene(text, "two.toml")
+    ...     except SceneError as error:
+    ...         print(str(error).split(";")[0])
+    two.toml:1: 2 contacts, more than the cap of 1 (Limits.max_contacts)
+    """
+    if not isinstance(limits, Limits):
+        raise SceneError(f"file_limits takes a contactsym.mechanism.files.Limits, not {shorten(limits)}.")
+    return _in_force(limits)  # checked now, in force when the block is entered
+
+
+@contextmanager
+def _in_force(limits: Limits) -> Iterator[None]:
+    token = _IN_FORCE.set(limits)
+    try:
+        yield
+    finally:
+        _IN_FORCE.reset(token)
+
+
+def limits_in_force(limits: Limits) -> Limits:
+    """``limits``, or those of an enclosing :func:`file_limits` where ``limits`` are the defaults."""
+    raised = _IN_FORCE.get()
+    return raised if raised is not None and limits == Limits() else limits
 
 
 @dataclass(frozen=True)
