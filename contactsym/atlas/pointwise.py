@@ -14,6 +14,8 @@ import numpy as np
 
 from .. import numerics
 from ..errors import ComplianceError, HopfError
+from ..numerics.branches import squeal_lines
+from ..numerics.continuation import fast_field
 from ..numerics.normal_form import NormalForm, normal_form
 from .grid import AtlasError, Grid
 from .kernel import Kernel, setup_for
@@ -97,17 +99,21 @@ SQUEAL_METHODS = {
     0: "no cycle: the equilibrium is stable here (omega: the linear frequency of the decay)",
     1: "Hopf normal form (l1 and the crossing speed at the line)",
     2: "simulation to a Poincaré section (numerics.fast_cycle)",
+    3: "continuation of the cycle by shooting (numerics.continuation), from the neighbouring point's cycle",
 }
 
 
 class _Squeal(Kernel):
-    """The squeal's amplitude and frequency: the normal form near the Hopf line, a simulation farther out.
+    """The squeal's amplitude and frequency: the normal form near the Hopf line, continued cycles farther out.
 
-    Points are grouped by their values other than ``parameter``: one Hopf point per group
-    (cached), then the normal form at every value of the parameter in one array operation.
+    Points are grouped into lines by their values other than ``parameter``: one Hopf point per line
+    (cached), then :func:`contactsym.numerics.branches.squeal_lines` for all supercritical lines of the
+    chunk together; a simulation only where neither applies (no Hopf point, subcritical, contact loss).
     """
 
-    outputs = ("amplitude", "omega", "method", "error", "contact_loss")
+    outputs = ("amplitude", "omega", "method", "error", "contact_loss", "multiplier")
+    vectorised = True  # a chunk is solved together (its lines in one batch): big chunks, in this process
+    nan_reasons = {"multiplier": "multiplier: not computed where the simulation (method 2) gave the cycle"}
 
     def __init__(self, scene, grid: Grid, values, parameter: str, laws, tol: float, simulate: bool, options: dict):
         self.scene, self.names, self.values = scene, grid.names, dict(values or {})
@@ -139,47 +145,71 @@ class _Squeal(Kernel):
         for i, row in enumerate(rows):
             key = tuple(sorted((str(k), v) for k, v in row.items() if str(k) != self.parameter))
             groups.setdefault(key, []).append(i)
+        supercritical = []
         for key, index in groups.items():
             form = self._form(key, rows[index[0]])
             if isinstance(form, Exception):
                 for i in index:
                     self._simulated(rows[i], out, reasons, i, f"no Hopf point nearby ({_first_line(form)})")
-                continue
-            with np.errstate(all="ignore"):
-                self._from_form(form, index, rows, out, reasons)
+            elif not form.stable():
+                with np.errstate(all="ignore"):
+                    self._subcritical(form, index, rows, out, reasons)
+            else:
+                supercritical.append((form, index))
+        if supercritical:
+            self._lines(supercritical, rows, out, reasons)
         return out, reasons
 
-    def _from_form(self, form, index, rows, out, reasons) -> None:
+    def _lines(self, lines: list, rows: list, out, reasons) -> None:
+        vals = numerics.numeric_values(self.scene, rows[lines[0][1][0]])
+        field = fast_field(self.scene, laws=self.laws, functions=vals.functions)
+        where = [str(s) for s in field.params].index(self.parameter)
+        bases = [field.parameter_values(numerics.numeric_values(self.scene, rows[index[0]])) for _, index in lines]
+        values = [np.array([rows[i][self.parameter] for i in index], dtype=float) for _, index in lines]
+        with np.errstate(all="ignore"):
+            results = squeal_lines(field, [f for f, _ in lines], bases, where, values, tol=self.tol)
+        for (_, index), result in zip(lines, results):
+            for position, i in enumerate(index):
+                if np.isnan(result.method[position]):
+                    self._simulated(rows[i], out, reasons, i, result.reasons[position])
+                    continue
+                out[i] = [
+                    result.amplitude[position],
+                    result.omega[position],
+                    result.method[position],
+                    result.error[position],
+                    result.contact_loss[position],
+                    result.multiplier[position],
+                ]
+
+    def _subcritical(self, form, index, rows, out, reasons) -> None:
         p = np.array([float(rows[i][self.parameter]) for i in index])
-        r2, amplitude = form.radius_squared(p), form.amplitude(p)
-        lost = np.any(amplitude >= form.hopf.u_star, axis=-1)  # a reaction would reach 0: the pads lose contact
-        error, omega = form.error(p), form.omega(p)
-        unstable = form.hopf.dalpha * (p - form.hopf.value) > 0
+        omega = form.omega(p)
+        alpha = form.hopf.dalpha * (p - form.hopf.value)
         for position, i in enumerate(index):
-            if not unstable[position]:  # the equilibrium is stable (for l1 > 0 a large cycle may coexist)
-                out[i] = [0.0, omega[position], 0, 0.0, 0]
-            elif form.stable() and r2[position] > 0 and error[position] <= self.tol and not lost[position]:
-                out[i] = [np.max(amplitude[position]), omega[position], 1, error[position], 0]
+            if alpha[position] <= 0:  # the equilibrium is stable (for l1 > 0 a large cycle may coexist)
+                out[i] = [0.0, omega[position], 0, 0.0, 0, np.exp(2 * np.pi * alpha[position] / omega[position])]
             else:
-                why = (
-                    "contact loss" if lost[position] else ("subcritical" if not form.stable() else "far from the line")
-                )
-                self._simulated(rows[i], out, reasons, i, why)
+                self._simulated(rows[i], out, reasons, i, "subcritical (l1 > 0): the stable cycle is a large one")
 
     def _simulated(self, values, out, reasons, i, why: str) -> None:
         if not self.simulate:
-            reasons[i] = f"{why}; the normal form does not apply and simulate=False"
+            reasons[i] = f"{why}; the normal form and the continuation do not apply and simulate=False"[:300]
+            if why.startswith("contact loss"):
+                out[i, 4] = 1.0
             return
         try:
             found = numerics.fast_cycle(self.scene, values, laws=self.laws, **self.options)
         except Exception as error:  # noqa: BLE001 - a failing point is NaN with its reason, never a crash
-            reasons[i] = f"{why}; simulation failed: {type(error).__name__}: {_first_line(error)}"
+            reasons[i] = f"{why}; simulation failed: {type(error).__name__}: {_first_line(error)}"[:300]
             return
         if not found.converged or found.reactions.size == 0:
             reasons[i] = f"{why}; simulation: {found.message}"[:300]
             return
         amplitude = float(np.max(np.ptp(found.reactions, axis=1)) / 2)
-        out[i] = [amplitude, found.omega, 2, self.options.get("tol", 1e-7), float(found.contact_loss)]
+        # fast_cycle stops when successive returns agree to tol: the cycle is attracting, its multiplier < 1
+        out[i] = [amplitude, found.omega, 2, self.options.get("tol", 1e-7), float(found.contact_loss), np.nan]
+        reasons[i] = ""
 
 
 def _first_line(error: BaseException) -> str:

@@ -337,16 +337,24 @@ def squeal(
 ) -> Quantity:
     """The squeal's amplitude (half peak-to-peak of the reactions, largest over the contacts) and
     frequency (tau) near a Hopf line crossed along ``parameter``, with per point the ``method``
-    (codes in ``SQUEAL_METHODS``: 0 stable equilibrium, 1 normal form, 2 simulation), its
-    estimated relative ``error`` and ``contact_loss`` (1 where a reaction reaches 0).
+    (codes in ``SQUEAL_METHODS``: 0 stable equilibrium, 1 normal form, 2 simulation, 3 continuation),
+    its estimated relative ``error``, ``contact_loss`` (1 where a pad opens on the cycle) and the
+    Floquet ``multiplier`` that decides stability (the largest nontrivial one, < 1: stable).
 
-    The Hopf normal form (one Hopf point per line of the grid along ``parameter``) gives the
-    value where its estimated error ``|c1| r^2 / omega`` (the size of the neglected terms) is
-    below ``tol``, the small cycle is stable (l1 < 0) and the pads keep contact; elsewhere
-    :func:`contactsym.numerics.fast_cycle` (``options``) simulates, unless ``simulate=False``
-    (then NaN with the reason). The estimate gives the order, not the constant: against long
-    simulations of the brake with Hertz pads the amplitude's error was several times it
-    (``benchmarks/squeal.py`` reports the ratio), hence the small default ``tol``.
+    Per line of the grid along ``parameter``: one Hopf point (:func:`contactsym.numerics.normal_form.normal_form`);
+    one cycle by shooting calibrates the normal form's error estimate ``|c1| r^2 / omega`` on the line
+    (it gives the order, the constant is measured: about 7 for the brake with Hertz pads); the normal
+    form gives the value where the calibrated estimate is within ``tol`` and the pads keep contact;
+    the other points are cycles continued by shooting from the neighbouring point's cycle
+    (:mod:`contactsym.numerics.branches`, all lines of a chunk in one batch). Where neither applies
+    (no Hopf point, l1 > 0, a pad opens) :func:`contactsym.numerics.fast_cycle` (``options``) simulates,
+    unless ``simulate=False`` (then NaN with the reason, e.g. "contact loss: ...").
+
+    Examples
+    --------
+    >>> quantity = squeal("mu", tol=0.01, simulate=False)
+    >>> quantity.name, quantity.options["tol"]
+    ('squeal', 0.01)
     """
     return Quantity(
         "squeal", build_squeal, {"parameter": parameter, "laws": laws, "tol": tol, "simulate": simulate, **options}

@@ -538,24 +538,27 @@ def test_the_classifier_is_built_once_per_scene_and_quantity(monkeypatch):
     assert len(built) > 1
 
 
-def test_squeal_from_the_normal_form_near_the_line_against_a_long_simulation():
-    """Hertz pads: the normal form gives a value at 0.1-0.5% past the line (where a simulation to a
-    Poincare section does not converge), within 2% of a long simulation of the fast subsystem at
-    0.5% (runs from inside and outside the predicted cycle bracket it); before the line the
-    equilibrium is stable (amplitude 0); far out, with simulate=False, NaN with its reason."""
+def test_squeal_from_the_normal_form_near_the_line_and_by_continuation_farther_out():
+    """Hertz pads: before the line the equilibrium is stable (amplitude 0); at 0.1-0.3% past it the
+    normal form gives the value (where a simulation to a Poincare section does not converge), with
+    its error calibrated by one shot cycle of the line; farther out, cycles continued by shooting
+    (stable: multiplier < 1), the one at 0.5% within 2% of a long simulation of the fast subsystem
+    (runs from inside and outside the cycle bracket it); at 5% a pad opens: NaN, labelled."""
     from contactsym.atlas.quantities import SQUEAL_METHODS, squeal
     from contactsym.laws.library import Hertz
 
     laws = {0: Hertz(), 1: Hertz()}
     disc = {"m": 1, "alpha": np.pi / 2, "F_x": 0, "F_y": -4}
     h = numerics.hopf_point(cs.scene("brake"), {**disc, "mu": 1.0}, "mu", laws=laws)
-    distances = np.array([-0.01, 0.001, 0.003, 0.005, 0.05])
+    distances = np.array([-0.01, 0.001, 0.003, 0.005, 0.015, 0.05])
     grid = {"mu": h.value * (1 + distances)}
     ds = atlas.sweep("brake", squeal("mu", laws=laws, tol=0.01, simulate=False), grid, values=disc, scheduler="sync")
-    assert ds.method.values.tolist()[:4] == [0.0, 1.0, 1.0, 1.0] and set(SQUEAL_METHODS) >= {0, 1, 2}
-    assert ds.amplitude.values[0] == 0 and np.all(ds.amplitude.values[1:4] > 0)
-    assert np.all(np.diff(ds.amplitude.values[1:4]) > 0) and np.all(ds.error.values[1:4] < 0.01)
-    assert np.isnan(ds.amplitude.values[4]) and "contact loss" in str(atlas.reason_text(ds).values[4])
+    assert ds.method.values.tolist()[:5] == [0.0, 1.0, 1.0, 3.0, 3.0] and set(SQUEAL_METHODS) == {0, 1, 2, 3}
+    assert ds.amplitude.values[0] == 0 and np.all(np.diff(ds.amplitude.values[:5]) > 0)
+    assert np.all(ds.error.values[1:3] < 0.01) and np.all(ds.error.values[3:5] < 1e-3)
+    assert np.all(ds.multiplier.values[:5] < 1) and np.all(ds.contact_loss.values[:5] == 0)
+    assert np.isnan(ds.amplitude.values[5]) and "contact loss" in str(atlas.reason_text(ds).values[5])
+    assert ds.contact_loss.values[5] == 1
     mu = grid["mu"][3]
     duration, period = 1.5 / (h.dalpha * (mu - h.value)), 2 * np.pi / h.omega
     simulated = []
