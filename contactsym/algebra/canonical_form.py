@@ -63,6 +63,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.polys.fields import FracField
 
+from ..arguments import checked
 from ..deprecation import deprecated_names
 from ..parse import sympy_only
 from .fourier import best_form
@@ -132,6 +133,7 @@ def _generators(expr: sp.Expr) -> list[sp.Expr]:
     return trig + sorted(plain, key=sp.default_sort_key) + sorted(opaque, key=sp.default_sort_key)
 
 
+@checked
 class TrigFraction:
     """P/Q in normal form: two polynomials of one ring, reduced, cancelled.
 
@@ -274,6 +276,7 @@ def _split_monomial(poly):
     return ring({(0,) * ring.ngens: content}) * monomial, rest
 
 
+@checked(exprs="Sequence[sp.Expr]")
 class TrigField:
     """One fraction field for several expressions, with the reduction of the module docstring.
 
@@ -341,6 +344,7 @@ class TrigField:
         return self.fraction(value).as_expr()
 
 
+@checked
 def to_fraction(expr: sp.Expr) -> TrigFraction:
     """The normal form P/Q of ``expr`` (see the module docstring).
 
@@ -372,6 +376,7 @@ def _integral(numer, denom):
 _PASSES = 4
 
 
+@checked
 def canonical(expr: sp.Expr) -> sp.Expr:
     """``expr`` in the canonical rational form (see the module docstring).
 
