@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ..algebra.basic import PaperSymbol
+from ..arguments import checked
 from ..errors import SceneError
 from ..laws import Compliance, Coulomb, Generic, Viscous
 from ..parse import sympy_only
@@ -69,6 +70,7 @@ class Contact:
         return f"Contact({self.coordinate}, {self.reaction}, {self.compliance!r}{side})"
 
 
+@checked
 def plain_symbol(symbol: sp.Expr, suffix: str = "") -> sp.Symbol:
     """A plain real symbol for a frozen coordinate q(t) or its rate ('qdot', 'xdot_1': printed with a dot).
 
@@ -108,6 +110,7 @@ def frozen_symbol(symbol: sp.Expr, suffix: str = "", taken=()) -> sp.Symbol:
     raise SceneError(f"rename the parameters {sorted(taken)}: they take every name of the frozen {plain}.")
 
 
+@checked
 def solve_linear(equations: list[sp.Expr], candidates: list[sp.Symbol]) -> dict:
     """Solve equations, linear in some of the candidates, uniquely for the fewest of them.
 
@@ -141,6 +144,7 @@ def solve_linear(equations: list[sp.Expr], candidates: list[sp.Symbol]) -> dict:
     return {}
 
 
+@checked(plain="Callable", coordinates="Sequence", gaps="Sequence")
 def contact_manifold(plain, frozen_symbols: dict, coordinates, gaps, at: dict) -> dict:
     """Substitution that puts the frozen state on the contact manifold g = 0, g' = 0.
 

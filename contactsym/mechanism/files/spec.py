@@ -15,6 +15,7 @@ from types import MappingProxyType
 
 import sympy as sp
 
+from ...arguments import checked
 from ...errors import SceneError
 from ...validate import checked_fields, shorten
 
@@ -138,6 +139,7 @@ SCHEMA = MappingProxyType(
 )
 
 
+@checked
 @dataclass(frozen=True)
 class Limits:
     """Caps on the size of a scene file, so that a file beyond them is refused in a moment.
@@ -306,6 +308,7 @@ class ContactSpec:
     line: int  # of the law, where the law's own checks are reported
 
 
+@checked
 @dataclass(frozen=True)
 class SceneSpec:
     """Everything a scene file says, read and checked; :func:`build_scene` makes the Scene of it.
