@@ -14,11 +14,13 @@ from collections.abc import Callable, Iterator
 import sympy as sp
 
 from ..algebra.basic import known_sign, normalize
+from ..arguments import checked
 from .relations import Condition
 
 __all__ = ["Facts", "pythagorean", "half_angles"]
 
 
+@checked
 def pythagorean(expr: sp.Expr) -> sp.Expr:
     """sin(x)**(2n) written as (1 - cos(x)**2)**n: 4 - 3 sin^2 + ... shows its sign as 1 + 3 cos^2 + ...
 
@@ -34,6 +36,7 @@ def pythagorean(expr: sp.Expr) -> sp.Expr:
     return sp.expand(expr.xreplace({p: (1 - sp.cos(p.base.args[0]) ** 2) ** (p.exp // 2) for p in even_sines}))
 
 
+@checked
 def half_angles(expr: sp.Expr) -> sp.Expr:
     """cos(x) written as 1 - 2 sin(x/2)**2: m (cos 2q - 1) shows its sign as -2 m sin(q)**2.
 
@@ -49,6 +52,7 @@ def half_angles(expr: sp.Expr) -> sp.Expr:
     return sp.expand(expr.xreplace({c: 1 - 2 * sp.sin(c.args[0] / 2) ** 2 for c in cosines}))
 
 
+@checked(positive="Sequence[sp.Expr]")
 class Facts:
     """What is known: positive expressions and an optional presentation; decisions are cached.
 
