@@ -16,6 +16,7 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
+from ..arguments import checked
 from ..errors import NumericsError
 from ..laws import ImplicitDeformation
 from .codegen import _cached, lambdify_cse
@@ -47,6 +48,7 @@ def _fast_form(scene, unilateral, form) -> str:
     return "deformation" if implicit or any(_clamps(scene, unilateral)) else "uv"
 
 
+@checked(scene="Scene", unilateral="bool | None")
 def fast_system(
     scene, values: Mapping | None, *, laws: Mapping | None = None, unilateral=None, form: str | None = None
 ) -> OdeSystem:
@@ -140,6 +142,7 @@ def _build_fast_deformation(scene, vals: NumericValues, laws, unilateral, f: lis
     return replace(system, reaction_names=reaction_names)
 
 
+@checked
 @dataclass(frozen=True, eq=False)
 class FastProblem:
     """A point's numeric fast subsystem (2.1): the values, the form, the generated system, the
@@ -245,6 +248,14 @@ class FastProblem:
         return scale
 
 
+@checked(
+    scene="Scene",
+    span="Sequence[float]",
+    initial="RealArray | None",
+    unilateral="bool | None",
+    atol="float | None",
+    t_eval="RealArray | None",
+)
 def simulate_fast(
     scene,
     values: Mapping | None,
