@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from pathlib import Path
 
+from ..arguments import between, checked
 from ..scenes import paper_knowledge
 from ..scenes import scene as built_in
 
@@ -20,6 +21,7 @@ __all__ = ["FIGURE_SCENES", "paper_figures", "save_figure", "scene_figures"]
 FIGURE_SCENES = ("painleve-klein-guides", "painleve-klein-rod", "brake", "sliding-point")
 
 
+@checked(size="Sequence[float]", dpi=between(10, 2400))
 def save_figure(path: Path, draw: Callable, *, size=(7.0, 5.0), dpi: int = 150) -> Path:
     r"""Call ``draw(figure)`` on a new matplotlib Figure of ``size`` inches and write it to ``path``.
 
@@ -45,6 +47,7 @@ def save_figure(path: Path, draw: Callable, *, size=(7.0, 5.0), dpi: int = 150) 
     return path
 
 
+@checked(scene="Scene", directory="Path | str", resolution=between(2, 4096), dpi=between(10, 2400))
 def scene_figures(scene, directory, *, resolution=400, dpi=150) -> dict[str, Path]:
     """Write one scene's figures as PNGs into ``directory``; returns {LaTeX caption: path}.
 
@@ -80,6 +83,7 @@ def scene_figures(scene, directory, *, resolution=400, dpi=150) -> dict[str, Pat
     return {caption: path for path, caption in figures(scene, directory, resolution=resolution, dpi=dpi)}
 
 
+@checked(directory="Path | str", resolution=between(2, 4096), dpi=between(10, 2400))
 def paper_figures(directory, *, resolution=400, dpi=150) -> list[Path]:
     """Write the figures of the paper's scenes (:data:`FIGURE_SCENES`) as PNGs into ``directory``.
 
