@@ -105,6 +105,7 @@ import sympy as sp
 from sympy.polys.domains import QQ
 
 from ..algebra.basic import normalize
+from ..arguments import checked, require
 from ..deprecation import deprecated_alias, deprecated_names
 from ..errors import ContactsymError
 from .certificates import (
@@ -123,6 +124,7 @@ from .law_polynomials import LawPolynomials, fast_spectral_abscissa
 __all__ = ["WitnessLaw", "Certificate", "Robustness", "decide_robustness", "regions", "nested_sequences"]
 
 
+@checked
 @dataclass(frozen=True)
 class WitnessLaw:
     """One admissible law at the equilibrium: Phi_j, Psi_j < 0, with its verdict.
@@ -153,6 +155,7 @@ class WitnessLaw:
         return all(v > 0 for v in self.conditions)
 
 
+@checked
 @dataclass(frozen=True)
 class Certificate:
     """Why the equilibrium is stable (unstable) for every law.
@@ -172,6 +175,7 @@ class Certificate:
     statement: str
 
 
+@checked
 @dataclass(frozen=True)
 class Robustness:
     """The three-valued answer with its evidence (or ``undecided``).
@@ -206,6 +210,7 @@ class Robustness:
 # --- nested sequences (P6) ----------------------------------------------------------------
 
 
+@checked
 def nested_sequences(minors: dict) -> list[tuple[int, ...]]:
     """Orderings i1..ik along which every leading principal minor is positive.
 
@@ -218,6 +223,7 @@ def nested_sequences(minors: dict) -> list[tuple[int, ...]]:
     >>> nested_sequences({(0,): -1, (1,): -1, (0, 1): 2})
     []
     """
+    require(bool(minors), "nested_sequences", "minors", minors, "the principal minors {(0,): det A_0, ...}")
     k = max(len(S) for S in minors)
     found = []
     for order in itertools.permutations(range(k)):
@@ -335,6 +341,7 @@ def _numeric_matrix(A) -> sp.Matrix:
     return M
 
 
+@checked(A="sp.Matrix")
 def decide_robustness(A, laws: int = 300, seed: int = 0) -> Robustness:
     """Stable for every law, unstable for every law, law-dependent or undecided, with evidence.
 
@@ -398,6 +405,7 @@ def _principal_minors(A: sp.Matrix) -> dict:
     return {S: normalize(A.extract(list(S), list(S)).det(method="berkowitz")) for S in subsets}
 
 
+@checked
 def regions(A: sp.Matrix, vertices: bool = False) -> dict[str, sp.Basic]:
     """Closed-form regions, any k, in the entries of A (all sufficient for what they name).
 
