@@ -84,6 +84,10 @@ class RealArray:
     """The hint of finite real numbers in an array's shape: a numpy array, or (nested) lists of numbers."""
 
 
+class NotANumber:
+    """nan, where a record (``@checked(nan=True)``) uses it for "no value" (a cycle that did not converge)."""
+
+
 def _real_array(value) -> bool:
     if isinstance(value, (str, bytes, dict)) or value is None:
         return False
@@ -130,12 +134,15 @@ def _class_fits(value, kind: type) -> bool:
         return isinstance(value, (bool, np.bool_))
     if kind is RealArray:
         return _real_array(value)
+    if kind is NotANumber:
+        return isinstance(value, (float, np.floating)) and math.isnan(value)
     if kind is int:
         plain = isinstance(value, _INTEGERS) and not isinstance(value, (bool, np.bool_))
         return plain and abs(int(value)) <= LARGEST
-    if kind is float:
+    if kind is float:  # a whole number beyond int64 would turn numpy arrays into arrays of objects
         number = isinstance(value, _REALS) and not isinstance(value, (bool, np.bool_))
-        return number and _finite_number(value)
+        small = not isinstance(value, _INTEGERS) or abs(int(value)) <= LARGEST
+        return number and small and _finite_number(value)
     if kind is complex:
         return isinstance(value, (*_REALS, complex, np.complexfloating)) and not isinstance(value, (bool, np.bool_))
     if isinstance(kind, type) and issubclass(kind, sp.MatrixBase):
@@ -307,7 +314,13 @@ def _resolve(hint, namespace: dict):
         return inspect.Parameter.empty
 
 
-def _plan(function, extra: dict, skip_first: bool) -> tuple[dict, dict]:
+def _with_nan(hint):
+    """The hint, with nan allowed where it takes a float."""
+    options = typing.get_args(hint) if typing.get_origin(hint) in (typing.Union, types.UnionType) else (hint,)
+    return typing.Union[hint, NotANumber] if float in options else hint  # noqa: UP007 - built at run time
+
+
+def _plan(function, extra: dict, skip_first: bool, nan: bool = False) -> tuple[dict, dict]:
     """Position -> (name, hint) and name -> hint, for the parameters that have a hint worth checking."""
     signature = inspect.signature(function)
     namespace = _namespace(function.__module__)
@@ -318,6 +331,7 @@ def _plan(function, extra: dict, skip_first: bool) -> tuple[dict, dict]:
         if parameter.kind in (parameter.VAR_POSITIONAL, parameter.VAR_KEYWORD):
             continue
         hint = _resolve(extra.get(parameter.name, parameter.annotation), namespace)
+        hint = _with_nan(hint) if nan else hint
         if hint in (inspect.Parameter.empty, typing.Any, object):
             continue
         by_name[parameter.name] = (hint, _to_sympy(hint))
@@ -355,13 +369,13 @@ def _refuse(label: str, name: str, value, hint):
     )
 
 
-def _wrap(function, extra: dict, label: str, skip_first: bool):
+def _wrap(function, extra: dict, label: str, skip_first: bool, nan: bool = False):
     plan: list = []
 
     @functools.wraps(function)
     def wrapper(*args, **kwargs):
         if not plan:
-            plan.append(_plan(function, extra, skip_first))
+            plan.append(_plan(function, extra, skip_first, nan))
         by_position, by_name = plan[0]
         for position, value in enumerate(args):
             if position in by_position:
@@ -382,12 +396,12 @@ def _wrap(function, extra: dict, label: str, skip_first: bool):
     return wrapper
 
 
-def checked(target=None, /, **hints):
+def checked(target=None, /, *, nan: bool = False, **hints):
     """Check the arguments of a function, a method or a class's constructor against their type hints.
 
     ``hints`` give (or replace) the hint of a parameter by name, as a type or as text; they are
     also written into the annotations. A class is checked at construction, by the hints of its
-    ``__init__`` (a dataclass: of its fields).
+    ``__init__`` (a dataclass: of its fields); ``nan=True`` lets its float fields hold nan for "no value".
 
     Examples
     --------
@@ -405,13 +419,13 @@ def checked(target=None, /, **hints):
     contactsym.errors.ArgumentError: Pair: right = 2 (int) is not accepted; pass text.
     """
     if target is None:
-        return lambda decorated: checked(decorated, **hints)
+        return lambda decorated: checked(decorated, nan=nan, **hints)
     if isinstance(target, type):
         init = target.__init__
         annotations = dict(getattr(init, "__annotations__", {}))
         annotations.update(hints)
         init.__annotations__ = annotations
-        target.__init__ = _wrap(init, {}, target.__name__, skip_first=True)
+        target.__init__ = _wrap(init, {}, target.__name__, skip_first=True, nan=nan)
         return target
     function = target.__func__ if isinstance(target, (classmethod, staticmethod)) else target
     function.__annotations__ = {**getattr(function, "__annotations__", {}), **hints}

@@ -43,7 +43,7 @@ def normalize(expr: sp.Expr) -> sp.Expr:
     return canonical(expr)
 
 
-@checked(signs="Sequence[int] | None")
+@checked(expr="sp.Basic | sp.MatrixBase", signs="Sequence[int] | None")
 def present(expr: sp.Expr, presentation: dict, signs=None) -> sp.Expr:
     """``expr`` rewritten with the substitutions ``presentation`` (e.g. kappa, v_j, mu_pm).
 

@@ -15,7 +15,7 @@ import numpy as np
 import sympy as sp
 from sympy.core.relational import Relational
 
-from ..arguments import checked
+from ..arguments import checked, require
 from ..errors import ContactsymError
 from ..stages.regions import Region
 from .conditions import count_presentation
@@ -161,6 +161,8 @@ def threshold_angle(scene, unique: str = "unique", stable: str = "stable for eve
 
 
 def _square_threshold(scene, unique: str, stable: str) -> Threshold:
+    require(unique in scene.equilibrium_counts(), "square_threshold", "unique", unique, "a key of equilibrium_counts()")
+    require(stable in scene.regions(), "square_threshold", "stable", stable, "a key of scene.regions()")
     inner = scene.equilibrium_counts()[unique]
     outer = scene.regions()[stable]
     plane = sorted({s for a in inner.condition.atoms(sp.Abs) for s in a.free_symbols}, key=str)

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ..algebra.basic import PaperSymbol
-from ..arguments import checked
+from ..arguments import checked, require
 from ..errors import SceneError
 from ..laws import Compliance, Coulomb, Generic, Viscous
 from ..parse import sympy_only
@@ -144,7 +144,7 @@ def solve_linear(equations: list[sp.Expr], candidates: list[sp.Symbol]) -> dict:
     return {}
 
 
-@checked(plain="Callable", coordinates="Sequence", gaps="Sequence")
+@checked(plain="Callable", coordinates="Sequence", gaps="Sequence[sp.Expr]")
 def contact_manifold(plain, frozen_symbols: dict, coordinates, gaps, at: dict) -> dict:
     """Substitution that puts the frozen state on the contact manifold g = 0, g' = 0.
 
@@ -164,6 +164,8 @@ def contact_manifold(plain, frozen_symbols: dict, coordinates, gaps, at: dict) -
     >>> [sp.expand(rod.plain(g).subs(at)) for g in rod.gaps]
     [0]
     """
+    known = all(q in frozen_symbols for q in coordinates)
+    require(known, "contact_manifold", "coordinates", coordinates, "coordinates that frozen_symbols names")
     at = {plain(key): plain(value) for key, value in at.items()}
     frozen_gaps = [plain(g).subs(at) for g in gaps]
     positions = [frozen_symbols[q] for q in reversed(coordinates)]

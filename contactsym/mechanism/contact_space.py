@@ -34,6 +34,7 @@ from ..algebra.canonical_form import TrigField
 from ..algebra.fraction_free import adjugate_and_det, adjugate_and_det_in_field, solve_fraction_free, t
 from ..arguments import checked
 from ..errors import SceneError
+from ..validate import lagrangian_parts, scene_parts
 
 __all__ = [
     "ContactSpace",
@@ -280,4 +281,6 @@ def lagrangian_accelerations(lagrangian, coordinates, contacts, loads=(), frame=
     >>> lagrangian_accelerations(L, [y], [cs.Contact(coordinate=y, reaction=N)])
     [N/m - g]
     """
+    scene_parts(coordinates, None, contacts, derived=True)  # dynamicsymbols and Contacts, one each at least
+    lagrangian_parts(lagrangian, loads, frame)
     return contact_space(lagrangian, coordinates, contacts, loads, frame).accelerations

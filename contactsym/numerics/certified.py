@@ -257,7 +257,7 @@ def decide(boolean, values: Mapping | None = None, *, band: float = 0.0) -> bool
     raise NumericsError(f"cannot decide {boolean!r}: expected relationals joined by And, Or, Not.")
 
 
-@checked
+@checked(nan=True)
 @dataclass(frozen=True)
 class Classification:
     """The stability of one parameter point.

@@ -18,7 +18,7 @@ from .systems import OdeSystem, _coordinates, _free_coordinates, _manifold_param
 from .values import NumericValues, _check_free, _check_span, _evaluate, _state_values, _with, numeric_values, substitute
 
 
-@checked
+@checked(nan=True)
 @dataclass(frozen=True, eq=False)
 class Cycle:
     """A stable periodic solution of the fast subsystem (Proposition 2).
@@ -210,7 +210,11 @@ def _sampled_cycle(system: OdeSystem, found: tuple, samples: int, N_scale: float
 
 
 @checked(
-    scene="Scene", span="Sequence[float]", unilateral="bool | None", atol="float | None", t_eval="RealArray | None"
+    scene="Scene",
+    span="Sequence[float]",
+    unilateral="bool | None",
+    atol="float | RealArray | None",
+    t_eval="RealArray | None",
 )
 def simulate_averaged(
     scene,

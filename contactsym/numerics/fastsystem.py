@@ -253,7 +253,7 @@ class FastProblem:
     span="Sequence[float]",
     initial="RealArray | None",
     unilateral="bool | None",
-    atol="float | None",
+    atol="float | RealArray | None",
     t_eval="RealArray | None",
 )
 def simulate_fast(

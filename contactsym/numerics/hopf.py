@@ -35,7 +35,7 @@ from .values import NumericValues, numeric_values, substitute
 __all__ = ["HopfCoefficient", "first_lyapunov_at", "full_cycle_start", "hopf_point"]
 
 
-@checked
+@checked(nan=True)
 @dataclass(frozen=True, eq=False)
 class HopfCoefficient:
     """l1 of the fast subsystem at a Hopf point, and the cycle it predicts.

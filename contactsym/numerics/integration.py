@@ -37,7 +37,7 @@ class _NotFinite(Exception):
     pass
 
 
-@checked
+@checked(nan=True)
 @dataclass(frozen=True, eq=False)
 class Simulation:
     """The result of a simulation.
@@ -141,7 +141,7 @@ def _budget_message(method: str, analytic: bool, counter: dict, max_rhs: int, bu
     return f"{method} used up its budget of {spent}; {reached}. {advice}."
 
 
-@checked(span="Sequence[float]", z0="RealArray", atol="float | None", t_eval="RealArray | None")
+@checked(span="Sequence[float]", z0="RealArray", atol="float | RealArray | None", t_eval="RealArray | None")
 def integrate(
     system: OdeSystem,
     span,

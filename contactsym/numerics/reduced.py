@@ -136,7 +136,7 @@ def _try_branch(scene, frozen: NumericValues, signs):
         return None
 
 
-@checked(scene="Scene", span="Sequence[float]", atol="float | None", t_eval="RealArray | None")
+@checked(scene="Scene", span="Sequence[float]", atol="float | RealArray | None", t_eval="RealArray | None")
 def simulate_reduced(
     scene,
     values: Mapping | None,

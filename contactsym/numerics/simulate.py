@@ -34,7 +34,7 @@ from .values import (
     eps="float",
     span="Sequence[float]",
     unilateral="bool | None",
-    atol="float | None",
+    atol="float | RealArray | None",
     t_eval="RealArray | None",
 )
 def simulate_full(

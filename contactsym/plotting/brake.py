@@ -24,7 +24,7 @@ from .regionplot import RegionData, boundary_contours, region_mask, region_plot,
 __all__ = ["BrakeHopfData", "BrakeMapData", "brake_hopf_data", "brake_hopf_plot", "brake_map_data", "brake_map_plot"]
 
 
-@checked
+@checked(nan=True)
 @dataclass(frozen=True)
 class BrakeMapData:
     """The brake's (alpha, mu) plane: stable for every law, law-dependent, mu = |cot alpha|.
@@ -122,7 +122,7 @@ def brake_map_plot(data: BrakeMapData, ax=None, *, legend=True) -> ContactPlot:
     return ContactPlot.of(ax, artists)
 
 
-@checked
+@checked(nan=True)
 @dataclass(frozen=True)
 class BrakeHopfData:
     """The brake at alpha = 90 deg, Phi_j = Phi, Psi_j = Psi: (mu, Phi) plane at fixed Psi, m.

@@ -21,7 +21,7 @@ __all__ = ["FIGURE_SCENES", "paper_figures", "save_figure", "scene_figures"]
 FIGURE_SCENES = ("painleve-klein-guides", "painleve-klein-rod", "brake", "sliding-point")
 
 
-@checked(size="Sequence[float]", dpi=between(10, 2400))
+@checked(size="tuple[float, float]", dpi=between(10, 2400))
 def save_figure(path: Path, draw: Callable, *, size=(7.0, 5.0), dpi: int = 150) -> Path:
     r"""Call ``draw(figure)`` on a new matplotlib Figure of ``size`` inches and write it to ``path``.
 

@@ -14,6 +14,7 @@ import sympy as sp
 
 from ..arguments import between, checked
 from ..counts.regions import square_threshold
+from ..errors import ArgumentError
 from .common import STABLE_HATCH, UNSTABLE_HATCH, ContactPlot, _degrees, _float, _scene, axes_or_current
 from .regionplot import RegionData, boundary_contours, region_mask, region_plot, relational_fields
 
@@ -29,10 +30,10 @@ def _angle_parameter(scene, angle):
             (parameter,) = tangent.free_symbols
             solutions = [s for s in sp.solve(sp.Eq(tangent, sp.tan(angle)), parameter) if s.is_positive]
             return theta, parameter, solutions[0]
-    raise ValueError(f"scene '{scene.name}' presents no angle.")
+    raise ArgumentError(f"scene '{scene.name}' presents no angle; fig1_data draws a scene with an angle phi.")
 
 
-@checked
+@checked(nan=True)
 @dataclass(frozen=True)
 class Fig1Data:
     """The (v1, v2) plane of the guides at one angle phi (Fig. 1).

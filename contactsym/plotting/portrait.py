@@ -21,7 +21,7 @@ from .common import CASE_TITLES, ContactPlot, _float, _scene, axes_or_current
 __all__ = ["PhasePortraitData", "phase_portrait_caption", "phase_portrait_data", "phase_portrait_plot"]
 
 
-@checked
+@checked(nan=True)
 @dataclass(frozen=True)
 class PhasePortraitData:
     """The fast subsystem (2.1) of a k = 1 scene on a (u, v) grid, with its equilibria.

@@ -64,7 +64,7 @@ def relational_fields(condition, values: dict, shape) -> list[np.ndarray]:
     return fields
 
 
-@checked
+@checked(nan=True)
 @dataclass(frozen=True)
 class RegionData:
     """A region on a grid: ``mask[i, j]`` is membership at ``(X[i, j], Y[i, j])``.

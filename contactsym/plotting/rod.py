@@ -71,7 +71,7 @@ def rod_portrait_values(case: str) -> dict:
     return {**{k: v for k, v in ROD_CASES[case].items() if k != "loads"}, "X^*": ROD_CASES[case]["loads"][0]}
 
 
-@checked
+@checked(nan=True)
 @dataclass(frozen=True)
 class RodFData:
     """f(u) of the Painlevé–Klein rod for one parameter choice and several loads X*.

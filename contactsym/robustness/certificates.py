@@ -30,7 +30,7 @@ from sympy.polys.matrices import DomainMatrix
 from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
 from sympy.polys.rings import ring
 
-from ..arguments import between, checked, require
+from ..arguments import LARGEST, between, checked, require
 from .law_polynomials import _evaluate_terms, _generic_conditions, fast_spectral_abscissa
 
 __all__ = [
@@ -145,7 +145,7 @@ def fisher_fuller_laws(order, k) -> list[tuple[list, list]]:
     return laws
 
 
-@checked
+@checked(count=between(0, 10**6), seed=between(0, LARGEST))
 def sampled_laws(Af: np.ndarray, count: int, seed: int) -> tuple[list, list]:
     """(stable-looking, unstable-looking) rational laws from log-uniform samples, best first.
 
@@ -161,6 +161,7 @@ def sampled_laws(Af: np.ndarray, count: int, seed: int) -> tuple[list, list]:
     >>> abscissa(stable[0]) < 0 < abscissa(unstable[0])
     True
     """
+    require(Af.ndim == 2 and Af.shape[0] == Af.shape[1], "sampled_laws", "Af", Af, "a square k x k array")
     k = Af.shape[0]
     rng = np.random.default_rng(seed)
     c = 10.0 ** rng.uniform(-3, 3, (count, k))
@@ -179,7 +180,7 @@ def _normalized(c: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return c / t**2, d / t
 
 
-@checked
+@checked(seed=between(0, LARGEST), count=between(0, 10**6))
 def weak_damping_laws(Af: np.ndarray, seed: int, count: int = 400) -> list:
     """Unstable laws with small damping. Left-multiplying lam^2 x + (lam D + C) A x = 0 by the left
     eigenvector y of CA (CA x = mu x) gives lam^2 + mu s lam + mu = 0 to first order in D, with
@@ -215,7 +216,7 @@ def weak_damping_laws(Af: np.ndarray, seed: int, count: int = 400) -> list:
     return laws
 
 
-@checked
+@checked(seed=between(0, LARGEST), starts=between(1, 1000))
 def climbed_laws(Af: np.ndarray, sign: float, seed: int, starts: int = 3) -> list:
     """Rational laws found by Nelder-Mead on log(c, d) maximising sign * (normalized abscissa), from
     the best of wide log-uniform samples (1e-6..1e6): the rare unstable (stable) laws sampling misses.
@@ -267,7 +268,7 @@ def _vertex_direction(b, others) -> np.ndarray | None:
     return w if (differences @ w >= 1).all() else None
 
 
-@checked
+@checked(k=between(1, 8))
 @cache
 def generic_vertex_coefficients(k: int) -> tuple[tuple[tuple[int, ...], sp.Expr], ...]:
     """(subset S, coefficient) pairs: the coefficients, as polynomials in symbols m_S for the
@@ -315,7 +316,7 @@ def _vertices(points: list) -> list:
     ]
 
 
-@checked(lp="LawPolynomials", conditions="Sequence")
+@checked(lp="LawPolynomials", conditions="Sequence", per_condition=between(1, 1000), tries=between(1, 10**4))
 def vertex_laws(lp, conditions, per_condition: int = 2, tries: int = 12) -> list[tuple[list, list]]:
     """Laws t^w on which a negative vertex coefficient of a condition dominates (P3); at most
     ``tries`` negative terms per condition, largest first.
@@ -465,7 +466,7 @@ def _solve_and_check(lp, matrix, scale, products, monomials, margin, degree) -> 
     return f"a combination of {used} Liénard–Chipart conditions times monomials of degree <= {degree} has every coefficient <= 0"
 
 
-@checked(lp="LawPolynomials", conditions="Sequence")
+@checked(lp="LawPolynomials", conditions="Sequence", degree=between(0, 12))
 def damped_positivstellensatz_certificate(lp, conditions, degree: int = 4) -> str | None:
     """(P8): P5 on the other conditions after d_i = u + sum_(j != i) (-a_jj / a_ii) d_j, when a_ii > 0 is the
     only positive diagonal entry: u > 0 exactly when p_(2k-1) = sum a_jj d_j > 0 (u reuses the generator d_i).

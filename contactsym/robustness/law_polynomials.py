@@ -32,7 +32,7 @@ from sympy.polys.domains import QQ
 from sympy.polys.rings import PolyElement, ring
 
 from ..algebra.hurwitz import Hurwitz
-from ..arguments import checked
+from ..arguments import between, checked
 
 __all__ = ["LawPolynomials", "law_ring", "fast_spectral_abscissa"]
 
@@ -40,7 +40,7 @@ __all__ = ["LawPolynomials", "law_ring", "fast_spectral_abscissa"]
 EXPAND_UP_TO_K = 3
 
 
-@checked
+@checked(k=between(1, 8))
 @cache
 def law_ring(k: int):
     """QQ[c1..ck, d1..dk] and its generators."""

@@ -145,6 +145,7 @@ def scene_regions(scene, signs=None) -> dict[str, Region]:
     return regions
 
 
+@checked
 @dataclass(frozen=True, eq=False)
 class Region:
     """A closed-form Boolean region in a scene's symbols.
