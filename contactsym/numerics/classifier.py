@@ -20,7 +20,7 @@ from .certified import _exact_float, _gamma, certified_sign
 from .codegen import lambdify_cse
 
 
-@checked
+@checked(conditions="list | tuple | sp.MatrixBase")
 class PointClassifier:
     """Certified, vectorised classification of many parameter points.
 

@@ -37,7 +37,7 @@ def _has_text(exprs) -> bool:
     return isinstance(exprs, (list, tuple)) and any(_has_text(e) for e in exprs)
 
 
-@checked(exprs="Sequence | sp.Basic | sp.MatrixBase")
+@checked(exprs="list | tuple | sp.Basic | sp.MatrixBase")
 def lambdify_cse(args: Sequence, exprs) -> Callable:
     """``sympy.lambdify`` to NumPy with common-subexpression elimination.
 

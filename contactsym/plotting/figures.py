@@ -8,12 +8,15 @@ through :func:`contactsym.scenes.paper_knowledge`. A user's scene has none here;
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Callable
 from pathlib import Path
 
 from ..arguments import between, checked
+from ..errors import ReportError
 from ..scenes import paper_knowledge
 from ..scenes import scene as built_in
+from ..validate import shorten
 
 __all__ = ["FIGURE_SCENES", "paper_figures", "save_figure", "scene_figures"]
 
@@ -42,8 +45,15 @@ def save_figure(path: Path, draw: Callable, *, size=(7.0, 5.0), dpi: int = 150) 
     draw(figure)
     path = Path(path)
     partial = path.with_name(path.stem + ".partial.png")
-    figure.savefig(partial, dpi=dpi, bbox_inches="tight")
-    partial.replace(path)  # all or nothing: a reader never sees half a PNG
+    try:
+        figure.savefig(partial, dpi=dpi, bbox_inches="tight")
+        partial.replace(path)  # all or nothing: a reader never sees half a PNG
+    except OSError as error:
+        with contextlib.suppress(OSError):  # our own partial file, if it was made
+            partial.unlink()
+        raise ReportError(
+            f"cannot write the figure {shorten(str(path))}: {error.strerror}; choose another path."
+        ) from error
     return path
 
 
