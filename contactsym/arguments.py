@@ -173,7 +173,7 @@ def _items_fit(value, arguments: tuple, origin) -> bool:
         return len(value) == len(arguments) and all(fits(v, a) for v, a in zip(value, arguments))
     if isinstance(value, np.ndarray) and value.ndim == 1 and value.dtype.kind in "iuf":  # numbers: by the dtype
         kinds = {int: "iu", float: "iuf", complex: "iuf", sp.Expr: "iuf", sp.Basic: "iuf"}.get(arguments[0])
-        return kinds is not None and value.dtype.kind in kinds
+        return kinds is not None and value.dtype.kind in kinds and bool(np.all(np.isfinite(value)))
     return all(fits(v, arguments[0]) for v in value)
 
 
@@ -425,7 +425,7 @@ def checked(target=None, /, *, nan: bool = False, **hints):
         annotations = dict(getattr(init, "__annotations__", {}))
         annotations.update(hints)
         init.__annotations__ = annotations
-        target.__init__ = _wrap(init, {}, target.__name__, skip_first=True, nan=nan)
+        target.__init__ = _wrap(init, hints, target.__name__, skip_first=True, nan=nan)
         return target
     function = target.__func__ if isinstance(target, (classmethod, staticmethod)) else target
     function.__annotations__ = {**getattr(function, "__annotations__", {}), **hints}
@@ -433,7 +433,9 @@ def checked(target=None, /, *, nan: bool = False, **hints):
     is_method = "." in qualname and "<locals>" not in qualname.rsplit(".", 1)[0]
     first = next(iter(inspect.signature(function).parameters), "")
     skip_first = is_method and not isinstance(target, staticmethod) and first in ("self", "cls")
-    wrapper = _wrap(function, {}, qualname, skip_first)
+    wrapper = _wrap(
+        function, hints, qualname, skip_first
+    )  # hints also here: a cache wrapper's signature is its inner function's
     if isinstance(target, classmethod):
         return classmethod(wrapper)
     if isinstance(target, staticmethod):

@@ -139,6 +139,14 @@ class OrthantMap:
     def __init__(self, plus, minus):
         self.plus = np.asarray(plus, dtype=float)
         self.minus = np.asarray(minus, dtype=float)
+        square = self.plus.ndim >= 2 and self.plus.shape[-1] == self.plus.shape[-2]
+        require(
+            square and self.plus.shape == self.minus.shape,
+            "OrthantMap",
+            "plus, minus",
+            (plus, minus),
+            "two k x k arrays",
+        )
         self.k = self.plus.shape[-1]
         self.patterns = orthant_patterns(self.k)
 

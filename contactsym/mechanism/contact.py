@@ -144,7 +144,7 @@ def solve_linear(equations: list[sp.Expr], candidates: list[sp.Symbol]) -> dict:
     return {}
 
 
-@checked(plain="Callable", coordinates="Sequence", gaps="Sequence[sp.Expr]")
+@checked(plain="Callable", coordinates="list | tuple", gaps="Sequence[sp.Expr]")
 def contact_manifold(plain, frozen_symbols: dict, coordinates, gaps, at: dict) -> dict:
     """Substitution that puts the frozen state on the contact manifold g = 0, g' = 0.
 
@@ -167,7 +167,11 @@ def contact_manifold(plain, frozen_symbols: dict, coordinates, gaps, at: dict) -
     known = all(q in frozen_symbols for q in coordinates)
     require(known, "contact_manifold", "coordinates", coordinates, "coordinates that frozen_symbols names")
     at = {plain(key): plain(value) for key, value in at.items()}
-    frozen_gaps = [plain(g).subs(at) for g in gaps]
+    frozen_gaps = [plain(g) for g in gaps]
+    require(
+        all(isinstance(g, sp.Basic) for g in frozen_gaps), "contact_manifold", "plain", plain, "a freezing function"
+    )
+    frozen_gaps = [g.subs(at) for g in frozen_gaps]
     positions = [frozen_symbols[q] for q in reversed(coordinates)]
     at.update(solve_linear(frozen_gaps, [p for p in positions if p not in at]))
     residual = [g for g in (sp.expand(g.subs(at)) for g in frozen_gaps) if g != 0]

@@ -19,6 +19,7 @@ import sympy as sp
 from ..arguments import checked
 from ..errors import NumericsError
 from ..laws import ImplicitDeformation
+from ..validate import shorten
 from .codegen import _cached, lambdify_cse
 from .integration import Simulation, integrate_with_impact_bound
 from .reduced import _branch_at, _reaction_scale, _try_branch
@@ -42,7 +43,7 @@ _TAU = sp.Symbol("tau", real=True)  # the stretched time t/eps
 def _fast_form(scene, unilateral, form) -> str:
     if form is not None:
         if form not in ("uv", "deformation"):
-            raise NumericsError(f"form = {form!r}; use 'uv' (the paper's (2.1)) or 'deformation' (Q, V).")
+            raise NumericsError(f"form = {shorten(form)}; use 'uv' (the paper's (2.1)) or 'deformation' (Q, V).")
         return form
     implicit = any(x.atoms(ImplicitDeformation) for x in scene.fast_subsystem().Phi + scene.fast_subsystem().Psi)
     return "deformation" if implicit or any(_clamps(scene, unilateral)) else "uv"

@@ -57,6 +57,16 @@ def save_figure(path: Path, draw: Callable, *, size=(7.0, 5.0), dpi: int = 150) 
     return path
 
 
+def _directory(directory) -> Path:
+    """The folder for figures, made if missing; a name the system refuses is a ReportError."""
+    directory = Path(directory)
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+    except (OSError, ValueError) as error:
+        raise ReportError(f"cannot make the folder {shorten(str(directory))}: {error}"[:300]) from error
+    return directory
+
+
 @checked(scene="Scene", directory="Path | str", resolution=between(2, 4096), dpi=between(10, 2400))
 def scene_figures(scene, directory, *, resolution=400, dpi=150) -> dict[str, Path]:
     """Write one scene's figures as PNGs into ``directory``; returns {LaTeX caption: path}.
@@ -88,8 +98,7 @@ def scene_figures(scene, directory, *, resolution=400, dpi=150) -> dict[str, Pat
     figures = paper_knowledge(scene, "figures")
     if figures is None:
         return {}
-    directory = Path(directory)
-    directory.mkdir(parents=True, exist_ok=True)
+    directory = _directory(directory)
     return {caption: path for path, caption in figures(scene, directory, resolution=resolution, dpi=dpi)}
 
 

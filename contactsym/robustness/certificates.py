@@ -196,6 +196,7 @@ def weak_damping_laws(Af: np.ndarray, seed: int, count: int = 400) -> list:
     >>> float(fast_spectral_abscissa(A, np.array([[float(x) for x in c]]), np.array([[float(x) for x in d]]))[0]) > 0
     True
     """
+    require(Af.ndim == 2 and Af.shape[0] == Af.shape[1], "weak_damping_laws", "Af", Af, "a square k x k array")
     k = Af.shape[0]
     rng = np.random.default_rng(seed + 2)
     stiffness = np.vstack([np.ones(k), 10.0 ** rng.uniform(-3, 3, (count, k))])
@@ -230,6 +231,7 @@ def climbed_laws(Af: np.ndarray, sign: float, seed: int, starts: int = 3) -> lis
     >>> float(fast_spectral_abscissa(A, np.array([[float(x) for x in c]]), np.array([[float(x) for x in d]]))[0]) > 0
     True
     """
+    require(Af.ndim == 2 and Af.shape[0] == Af.shape[1], "climbed_laws", "Af", Af, "a square k x k array")
     k = Af.shape[0]
     rng = np.random.default_rng(seed + 1)
     x = rng.uniform(-6, 6, (4000, 2 * k))
