@@ -16,7 +16,7 @@ import sympy as sp
 
 from ..algebra.basic import known_sign, present
 from ..algebra.canonical_form import present_factor
-from ..arguments import checked
+from ..arguments import checked, require
 from ..counts.regions import count_regions
 from ..errors import SceneError, SignPatternError
 from ..parse import sympy_only
@@ -48,7 +48,7 @@ GENERAL_NUMBERS = (
 )
 
 
-@checked(scene="Scene")
+@checked
 def paper_equations(scene, key: str, detail: str | None = None) -> tuple[tuple, str]:
     """The paper's equation numbers and a note for a formula of ``scene`` (any object with ``k``).
 
@@ -63,7 +63,10 @@ def paper_equations(scene, key: str, detail: str | None = None) -> tuple[tuple, 
     >>> paper_equations(cs.scene("brake"), "stable for every law")
     (('4.4', '6.3'), 'Proposition 6; with equality allowed: erratum 12')
     """
-    return GENERAL_NUMBERS(key, getattr(scene, "k", 2), getattr(scene, "equations", None), detail)
+    k, equations = getattr(scene, "k", 2), getattr(scene, "equations", None)
+    usable = isinstance(k, int) and not isinstance(k, bool) and k >= 1 and isinstance(equations, (dict, type(None)))
+    require(usable, "paper_equations", "scene", scene, "a scene (an object with k contacts)")
+    return GENERAL_NUMBERS(key, k, equations, detail)
 
 
 class Scene(LatexReprMixin):

@@ -17,7 +17,7 @@ import sympy as sp
 
 from ..algebra.basic import PaperSymbol, normalize, present
 from ..algebra.fraction_free import solve_fraction_free, t
-from ..arguments import checked
+from ..arguments import checked, require
 from ..errors import ContactsymError, SceneError, SingularJacobianError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, prime, tex
 
@@ -282,7 +282,7 @@ class FastSubsystem(LatexReprMixin):
     def presentation(self) -> dict:
         return self.scene.presentation
 
-    @checked(signs="Sequence[sp.Expr] | None")
+    @checked(expr="sp.Basic | sp.MatrixBase", signs="Sequence[sp.Expr] | None")
     def present(self, expr: sp.Expr, signs=None) -> sp.Expr:
         """``expr`` in the scene's presentation variables (see :func:`contactsym.algebra.basic.present`)."""
         return present(expr, self.presentation, signs)
@@ -403,17 +403,38 @@ class FastSubsystem(LatexReprMixin):
     @checked(signs="Sequence[sp.Expr]")
     def piece(self, signs) -> sp.Matrix:
         """f on the piece of a sign pattern (numbers or symbols)."""
+        require(
+            len(signs) == len(self.switching),
+            "FastSubsystem.piece",
+            "signs",
+            signs,
+            f"{len(self.switching)} signs, one per switching function",
+        )
         return self.f.applyfunc(lambda e: on_piece(e, self.switching, signs, self.u))
 
     @checked(signs="Sequence[sp.Expr]")
     def jacobian(self, signs) -> sp.Matrix:
         """df/du on the piece of a sign pattern, from the terms of f that depend on u."""
+        require(
+            len(signs) == len(self.switching),
+            "FastSubsystem.jacobian",
+            "signs",
+            signs,
+            f"{len(self.switching)} signs, one per switching function",
+        )
         piece = self._depends_on_u.applyfunc(lambda e: on_piece(e, self.switching, signs, self.u))
         return piece.jacobian(self.u)
 
     @checked(signs="Sequence[sp.Expr]")
     def roots(self, signs) -> list[tuple]:
         """The roots u* of f on the piece of a sign pattern (see :func:`solve_piece`)."""
+        require(
+            len(signs) == len(self.switching),
+            "FastSubsystem.roots",
+            "signs",
+            signs,
+            f"{len(self.switching)} signs, one per switching function",
+        )
         return solve_piece(self.piece(signs), self.u, signs)
 
     @cached_property

@@ -139,7 +139,6 @@ SCHEMA = MappingProxyType(
 )
 
 
-@checked
 @dataclass(frozen=True)
 class Limits:
     """Caps on the size of a scene file, so that a file beyond them is refused in a moment.
