@@ -126,6 +126,11 @@ def wrong_values() -> list:
 # --- plausible values -----------------------------------------------------------------------------
 
 
+#: Parameters never left at their default: a figure at its full resolution takes longer than the time limit
+#: (``paper_figures`` draws four scenes), and that would be counted as a hang of a valid call.
+QUICK = {"resolution": 8, "dpi": 20}
+
+
 def plausible(name: str, hint) -> object:
     """A value that could be right for a parameter called ``name`` with this hint."""
     text = str(hint).lower() if hint is not inspect.Parameter.empty else ""
@@ -138,6 +143,8 @@ def plausible(name: str, hint) -> object:
         return (1, 1)
     if lowered in ("name", "scene_name"):
         return "brake"
+    if lowered in QUICK:
+        return QUICK[lowered]
     if lowered in ("compliance", "law"):
         return cs.Generic()
     if lowered == "friction":
@@ -331,7 +338,8 @@ def make_call(target: Target, rng: random.Random, wrong: list) -> Call:
         if p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
             continue
         hint = target.hints.get(p.name, p.annotation)
-        value = p.default if p.default is not p.empty and rng.random() < 0.7 else plausible(p.name, hint)
+        default = p.default is not p.empty and p.name.lower() not in QUICK
+        value = p.default if default and rng.random() < 0.7 else plausible(p.name, hint)
         slots.append([p, hint, value])
     mutated, bad = [], []
     if slots:

@@ -50,7 +50,7 @@ from .mechanism.files.spec import Limits, file_limits
 from .mechanism.scene import Scene
 from .parse import CAPS, ParseError, formula_caps
 from .scenes import DEFAULT_SCENE, scene, scene_names
-from .validate import cut, shorten
+from .validate import cut, path_text, shorten
 
 __all__ = ["derivation_chain", "main"]
 
@@ -314,7 +314,7 @@ def _report(
             raise SceneError(
                 f"'{seen[s.name]}' and '{name}' are both named '{s.name}'; give one a different name in its [scene] table."
             )
-    root = Path(out)
+    root = Path(path_text(out, "--out", ReportError))  # no empty name, no NUL character
     try:
         root.mkdir(parents=True, exist_ok=True)
         probe = root / ".contactsym-write-test"

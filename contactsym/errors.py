@@ -206,3 +206,20 @@ class NumericsError(ContactsymError):
     # defined here, at the bottom of the import graph, so that the input checks (validate, progress) can raise it
     # without importing the numerics they serve; users meet it, and import it, as contactsym.numerics.NumericsError
     __module__ = "contactsym.numerics"
+
+
+class ArgumentError(ContactsymError, TypeError):
+    """An argument of the wrong type or of an impossible value, refused where it enters a public callable.
+
+    Raised by the checks of :mod:`contactsym.arguments`; it is a ``ContactsymError`` (so one
+    ``except`` still catches every package error) and a ``TypeError``.
+
+    Examples
+    --------
+    >>> from contactsym.algebra import hurwitz_matrix
+    >>> try:
+    ...     hurwitz_matrix("x**2 + 1")
+    ... except ArgumentError as error:
+    ...     print(error)
+    hurwitz_matrix: coefficients = 'x**2 + 1' (str) is not accepted; pass a list or tuple, each item a finite SymPy expression (or relation) or a number.
+    """

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from ..arguments import checked
 from ..parse import sympy_only
 from .canonical_form import canonical
 from .reductions import PaperSymbol, SignSymbol, known_sign, reduce_signs, reduce_trig, sign_symbols
@@ -29,6 +30,7 @@ __all__ = [
 ]
 
 
+@checked
 def normalize(expr: sp.Expr) -> sp.Expr:
     """The canonical form: s**2 = 1 and sin**2 + cos**2 = 1 used, one cancelled fraction.
 
@@ -41,6 +43,7 @@ def normalize(expr: sp.Expr) -> sp.Expr:
     return canonical(expr)
 
 
+@checked(expr="sp.Basic | sp.MatrixBase", signs="Sequence[int] | None")
 def present(expr: sp.Expr, presentation: dict, signs=None) -> sp.Expr:
     """``expr`` rewritten with the substitutions ``presentation`` (e.g. kappa, v_j, mu_pm).
 

@@ -54,6 +54,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from ..arguments import checked
 from ..deprecation import deprecated_names
 from ..parse import sympy_only
 from .half_angle import cancelled_on_the_circle
@@ -76,6 +77,7 @@ __all__ = ["canonical", "TrigField", "TrigFraction", "present_factor", "to_fract
 _PASSES = 4
 
 
+@checked
 def canonical(expr: sp.Expr) -> sp.Expr:
     """``expr`` in the canonical rational form (see the module docstring).
 

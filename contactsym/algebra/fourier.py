@@ -13,6 +13,8 @@ from functools import cache, reduce
 
 import sympy as sp
 
+from ..arguments import checked
+
 __all__ = ["best_form"]
 
 
@@ -101,6 +103,7 @@ def _negative_first(k: tuple) -> bool:
 _FOURIER_LIMIT = 3000
 
 
+@checked(poly="PolyElement", pairs="Sequence[tuple[int, int]]")
 def best_form(poly, pairs) -> sp.Expr:
     """The polynomial in sin q_i, cos q_i, or its Fourier sum when that has fewer terms.
 

@@ -13,6 +13,7 @@ from functools import lru_cache
 import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
+from ..arguments import checked, require
 from .canonical_form import TrigField
 
 __all__ = ["adjugate_and_det", "adjugate_and_det_in_field", "polynomial_adjugate", "solve_fraction_free", "t"]
@@ -26,6 +27,7 @@ __all__ = ["adjugate_and_det", "adjugate_and_det_in_field", "polynomial_adjugate
 t = dynamicsymbols._t
 
 
+@checked(reduce="Callable")
 def adjugate_and_det(M: list[list], reduce) -> tuple[list[list], object]:
     """adj(M) and det(M) of a square matrix over a commutative ring containing Q.
 
@@ -41,6 +43,8 @@ def adjugate_and_det(M: list[list], reduce) -> tuple[list[list], object]:
     >>> adj, det
     ([[d, -b], [-c, a]], a*d - b*c)
     """
+    square = bool(M) and all(isinstance(row, (list, tuple)) and len(row) == len(M) for row in M)
+    require(square, "adjugate_and_det", "M", M, "a square matrix as a list of rows")
     n = len(M)
     zero = M[0][0] * 0
     Mk = [[zero] * n for _ in range(n)]
@@ -59,6 +63,7 @@ def _matmul(A, B, reduce):
     return [[reduce(sum((A[i][r] * B[r][j] for r in range(m)), A[0][0] * 0)) for j in range(p)] for i in range(n)]
 
 
+@checked(substitution="Mapping | None", offsets="Sequence | None")
 def solve_fraction_free(
     M: sp.Matrix, loads: list[sp.Matrix], rows: sp.Matrix | None = None, *, substitution=None, offsets=None
 ) -> list[list[sp.Expr]]:
@@ -94,6 +99,7 @@ def solve_fraction_free(
     return results
 
 
+@checked(field="TrigField")
 def adjugate_and_det_in_field(field, M: sp.Matrix):
     """adj M and det M as elements of ``field``; in the polynomial ring of M's own entries (no
     gcds, computed once per matrix) when they are polynomials, as a mass matrix usually is.
@@ -118,6 +124,7 @@ def adjugate_and_det_in_field(field, M: sp.Matrix):
     return adjugate_and_det(entries, field.reduce)
 
 
+@checked
 @lru_cache(maxsize=16)
 def polynomial_adjugate(M: sp.ImmutableMatrix):
     """(adj M, det M) as reduced polynomials of M's own field's ring, or None when an entry is

@@ -24,6 +24,7 @@ from functools import cache, cached_property
 
 import sympy as sp
 
+from ..arguments import checked, require
 from ..printing.latex_output import Formula
 from .reductions import reduce_signs
 
@@ -82,6 +83,7 @@ def _generic(n: int) -> tuple[sp.Symbol, ...]:
     return sp.symbols(f"a_0:{n + 1}")
 
 
+@checked(coefficients="Sequence[sp.Expr]")
 def hurwitz_matrix(coefficients) -> sp.Matrix:
     """The n x n Hurwitz matrix H[i, j] = a_(2j - i) (1-based), for a_0 lam^n + ... + a_n.
 
@@ -93,6 +95,7 @@ def hurwitz_matrix(coefficients) -> sp.Matrix:
     [a0, a2,  0],
     [ 0, a1, a3]])
     """
+    require(len(coefficients) >= 2, "hurwitz_matrix", "coefficients", coefficients, "two or more coefficients")
     a = list(coefficients)
     n = len(a) - 1
 
@@ -113,6 +116,7 @@ def _coefficients(poly: sp.Poly) -> list[sp.Expr]:
     return [poly.coeff_monomial(poly.gen**i) for i in range(poly.degree(), -1, -1)]
 
 
+@checked
 def hurwitz_minors(poly: sp.Poly) -> list[sp.Expr]:
     """Delta_1 .. Delta_n of ``poly`` (unexpanded substitution into generic minors).
 
@@ -141,6 +145,7 @@ def _lienard_chipart_parts(poly: sp.Poly, minors: list[sp.Expr]) -> tuple[list, 
     return [coefficients[poly.degree() - s] for s in powers], [minors[m - 1] for m in orders]
 
 
+@checked
 def lienard_chipart(poly: sp.Poly, minors: list[sp.Expr] | None = None) -> list[sp.Expr]:
     """Expressions that are all > 0 exactly when ``poly`` is Hurwitz stable.
 
@@ -197,6 +202,7 @@ def _generic_omega_squared(n: int) -> sp.Expr | None:
     return sp.Mul(sp.expand(sign * numerator), sp.Pow(minor, -1))
 
 
+@checked
 def hopf_omega_squared(poly: sp.Poly) -> sp.Expr | None:
     """omega^2 at a Hopf point (Delta_(n-1) = 0): the common root of Re and Im of p(i omega).
 
@@ -235,6 +241,7 @@ def _relation(op, expr: sp.Expr) -> sp.Basic:
     return op(expr, 0)
 
 
+@checked
 @dataclass(frozen=True, eq=False)
 class Hurwitz:
     """Hurwitz data of a characteristic polynomial (4.6)-(4.7).
@@ -293,6 +300,7 @@ class Hurwitz:
     def omega_squared(self) -> sp.Expr | None:
         return hopf_omega_squared(self.poly)
 
+    @checked
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:
         """The conditions h_i > 0, cited with ``equations``: see :func:`contactsym.printing.latex_output.formulas`."""
         return tuple(Formula("hurwitz", f"h_{{{i}}}", c, "", self.equations) for i, c in enumerate(self.conditions, 1))

@@ -21,6 +21,8 @@ from __future__ import annotations
 import sympy as sp
 from mpmath import iv
 
+from ..arguments import between, checked
+
 __all__ = ["interval_sign"]
 
 _FUNCTIONS = {sp.sin: iv.sin, sp.cos: iv.cos, sp.tan: iv.tan, sp.exp: iv.exp, sp.log: iv.log}
@@ -81,6 +83,7 @@ def _enclose(expr: sp.Expr):
     raise _Unsupported  # floats, symbols and other functions: leave them to the caller
 
 
+@checked(max_bits=between(1, 2**20))
 def interval_sign(expr: sp.Expr, *, max_bits: int = 4096) -> int | None:
     """+1 or -1 when an enclosure of ``expr`` excludes 0 at some precision up to ``max_bits``; else None.
 

@@ -20,6 +20,7 @@ from functools import lru_cache
 import sympy as sp
 from sympy.polys.rings import ring
 
+from ..arguments import between, checked
 from ..errors import SignPatternError
 from ..parse import sympy_only
 from .fourier import _fourier_terms
@@ -64,6 +65,7 @@ class SignSymbol(sp.Symbol):
         return super().__new__(cls, name, integer=True, nonzero=True)
 
 
+@checked(count=between(0, 1000))
 def sign_symbols(count: int) -> tuple[SignSymbol, ...]:
     """s (one switching function) or s_1, ..., s_count.
 
@@ -79,6 +81,7 @@ def sign_symbols(count: int) -> tuple[SignSymbol, ...]:
     return tuple(SignSymbol(f"s_{i}") for i in range(1, count + 1))
 
 
+@checked
 def reduce_signs(expr: sp.Expr) -> sp.Expr:
     """Use s**2 = 1 for every SignSymbol s.
 
@@ -94,6 +97,7 @@ def reduce_signs(expr: sp.Expr) -> sp.Expr:
     )
 
 
+@checked
 def reduce_trig(expr: sp.Expr) -> sp.Expr:
     """Replace cos(x)**n, n >= 2, by cos(x)**(n % 2) (1 - sin(x)**2)**(n // 2), expanded.
 
@@ -114,6 +118,7 @@ def reduce_trig(expr: sp.Expr) -> sp.Expr:
     return sp.expand(sympy_only(expr, "the expression").replace(is_cos_power, rewrite))
 
 
+@checked(positive="Sequence[sp.Expr]")
 def known_sign(expr: sp.Expr, positive=()) -> int | None:
     """+1 or -1 when the sign of ``expr`` is proved, else None (never a guess: every answer is exact).
 

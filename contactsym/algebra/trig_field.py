@@ -35,6 +35,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.polys.fields import FracField
 
+from ..arguments import checked
 from ..parse import sympy_only
 from .fourier import best_form
 from .reductions import SignSymbol, known_sign
@@ -103,6 +104,7 @@ def _generators(expr: sp.Expr) -> list[sp.Expr]:
     return trig + sorted(plain, key=sp.default_sort_key) + sorted(opaque, key=sp.default_sort_key)
 
 
+@checked
 class TrigFraction:
     """P/Q in normal form: two polynomials of one ring, reduced, cancelled.
 
@@ -245,6 +247,7 @@ def _split_monomial(poly):
     return ring({(0,) * ring.ngens: content}) * monomial, rest
 
 
+@checked(exprs="Sequence[sp.Expr]")
 class TrigField:
     """One fraction field for several expressions, with the reduction of the module docstring.
 
@@ -312,6 +315,7 @@ class TrigField:
         return self.fraction(value).as_expr()
 
 
+@checked
 def to_fraction(expr: sp.Expr) -> TrigFraction:
     """The normal form P/Q of ``expr`` (see the module docstring).
 

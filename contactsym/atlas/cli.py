@@ -19,6 +19,7 @@ import numpy as np
 
 from ..atomic import process_tag, remove_leftovers, umask_bits
 from ..errors import AtlasError, UsageError
+from ..validate import shorten
 from .grid import check_size
 from .run import sweep
 
@@ -42,8 +43,8 @@ def _axis_spec(text: str) -> tuple[str, float, float, int] | tuple[str, list]:
     name, _, spec = text.partition("=")
     name = name.strip()
     if not name or not spec:
-        raise UsageError(f"--grid {text}: write NAME=START:STOP:COUNT or NAME=V1,V2,...")
-    what = f"--grid {text}"
+        raise UsageError(f"--grid {shorten(text)}: write NAME=START:STOP:COUNT or NAME=V1,V2,...")
+    what = f"--grid {shorten(text)}"
     if ":" in spec:
         parts = spec.split(":")
         if len(parts) != 3:

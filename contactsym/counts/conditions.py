@@ -11,11 +11,13 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator
 
+from ..arguments import checked
 from ..inequalities import Facts
 
 __all__ = ["count_facts", "count_presentation", "sign_choices"]
 
 
+@checked(scene="Scene")
 def count_presentation(scene) -> dict:
     """The presentation the counts use: the scene's ``count_presentation``, or its presentation.
 
@@ -32,6 +34,7 @@ def count_presentation(scene) -> dict:
     return dict(getattr(scene, "count_presentation", None) or scene.presentation)
 
 
+@checked(scene="Scene")
 def count_facts(scene) -> Facts:
     """What the counts know about a scene: its positive expressions and its count presentation.
 
@@ -47,6 +50,7 @@ def count_facts(scene) -> Facts:
     return Facts(scene.positive_expressions, lambda expr: scene.present(expr, None, presentation))
 
 
+@checked
 def sign_choices(known: list, open_: list) -> Iterator[list]:
     """Every completion of the known signs: each open position takes +1 and -1.
 

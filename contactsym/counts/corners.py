@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from ..algebra.basic import known_sign, normalize
+from ..arguments import checked
 from ..errors import ContactsymError
 from ..inequalities import Condition, Facts, boolean, closed_conjuncts, merge_or
 from .conditions import count_facts, sign_choices
@@ -35,6 +36,7 @@ def _count_name(counts: tuple[int, ...]) -> str:
     return ", ".join(words[:-1]) + " or " + words[-1]
 
 
+@checked(scene="Scene")
 def uses_corners(scene) -> bool:
     """k = 1 with bilateral contact: the corner cases (any number of corners).
 
@@ -67,6 +69,7 @@ def _ordered_partitions(items: list) -> list[list[tuple]]:
     return sorted(build(items), key=rank)
 
 
+@checked
 @dataclass(frozen=True)
 class CountCase:
     """One ordering of the corners of f (k = 1) and the counts within it.
@@ -120,6 +123,7 @@ def _corners(scene) -> list[sp.Expr]:
     return corners
 
 
+@checked
 def slope_count_name(signs: tuple[int, ...]) -> str:
     """Name of the count for slopes of these signs, left to right.
 
@@ -139,6 +143,7 @@ def slope_count_name(signs: tuple[int, ...]) -> str:
     return _count_name(tuple(range(start, changes + 2, 2)))
 
 
+@checked(scene="Scene")
 def corner_cases(scene) -> list[CountCase]:
     """The orderings of the corners of f (k = 1) with the counts in each.
 
@@ -227,6 +232,7 @@ def _corner_case(scene, facts: Facts, u, corners, blocks, ordering: list[Conditi
     )
 
 
+@checked(scene="Scene")
 def corner_regions(scene) -> dict[str, sp.Basic]:
     """The count regions of a k = 1 scene: each count's disjuncts over every ordering of the corners, merged.
 

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ..algebra.reductions import known_sign, quotient_sign
+from ..arguments import checked
 from ..errors import ContactsymError
 from ..stages.regions import Region, closed_form
 from .orthants import scene_map
@@ -40,6 +41,7 @@ _NAMES = {0: "inconsistent", 1: "consistent", 2: "indeterminate"}
 STABILITY_SPLITS = 3
 
 
+@checked
 @dataclass(frozen=True)
 class OneSidedCase:
     """One sign case of (a, b): its name, region and equilibria.
@@ -120,6 +122,7 @@ def _split(evaluate, known: tuple, splits: int = 0) -> list:
         return [case for sign in (1, -1) for case in _split(evaluate, known + ((gap.expr, sign),), splits + 1)]
 
 
+@checked(scene="Scene")
 def one_sided_cases(scene) -> list[OneSidedCase]:
     """The cases of the one-sided Painlevé problem, derived from the equilibria with lift-off.
 

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ..algebra.basic import known_sign, normalize
+from ..arguments import checked
 from ..errors import ContactsymError
 from ..inequalities import Condition, Facts, boolean, closed_conjuncts, merge_or
 from .conditions import count_facts, sign_choices
@@ -31,6 +32,7 @@ from .plmap import k2_label, k2_quadrants, orthant_patterns
 __all__ = ["SceneMap", "scene_map", "orthant_regions"]
 
 
+@checked(scene="Scene")
 @dataclass(frozen=True, eq=False)
 class SceneMap:
     """The orthant map of a scene: ``f = G(z) + b`` with z_j = u_j - corner_j.
@@ -135,6 +137,7 @@ def _build(scene) -> SceneMap:
     return SceneMap(scene, u, plus, minus, tuple(corner), load, unilateral)
 
 
+@checked(scene="Scene")
 def scene_map(scene) -> SceneMap:
     """The orthant map of a scene (cached on it).
 
@@ -157,6 +160,7 @@ def scene_map(scene) -> SceneMap:
 QUICK = 2
 
 
+@checked(scene="Scene")
 def orthant_regions(scene) -> dict[str, sp.Basic]:
     """Count regions from the orthant determinants (k = 1, 2 exact; k >= 3 unique or undecided).
 

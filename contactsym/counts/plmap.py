@@ -28,9 +28,12 @@ import itertools
 
 import numpy as np
 
+from ..arguments import between, checked, require
+
 __all__ = ["OrthantMap", "orthant_patterns", "k2_quadrants", "k2_label", "count_label"]
 
 
+@checked(k=between(1, 16))
 def orthant_patterns(k: int) -> list[tuple[int, ...]]:
     """The 2^k sign patterns, (+1, ..., +1) first.
 
@@ -52,6 +55,7 @@ k2_quadrants = ((1, 1), (-1, 1), (-1, -1), (1, -1))
 _WORDS = ["none", "one", "two", "three", "four", "five", "six", "seven", "eight"]
 
 
+@checked(counts="Collection[int]")
 def count_label(counts) -> str:
     """'unique', 'two or none', 'one or three', 'none, two or four', ...
 
@@ -60,6 +64,7 @@ def count_label(counts) -> str:
     >>> count_label({0, 2}), count_label({1}), count_label({0, 2, 4})
     ('two or none', 'unique', 'none, two or four')
     """
+    require(bool(counts) and min(counts) >= 0, "count_label", "counts", counts, "the possible counts, e.g. {0, 2}")
     counts = tuple(sorted(counts))
     if counts == (1,):
         return "unique"
@@ -69,6 +74,7 @@ def count_label(counts) -> str:
     return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " or " + words[-1]
 
 
+@checked(cross_sign="Callable | None")
 def k2_label(det_signs: dict, cross_sign) -> str:
     """The counts of a k = 2 orthant map over all loads, from exact signs.
 
@@ -102,6 +108,8 @@ def k2_label(det_signs: dict, cross_sign) -> str:
     >>> k2_label({(1, 1): 1, (-1, 1): -1, (-1, -1): 1, (1, -1): 1}, lambda i: 1)
     'two or none'
     """
+    known = all(det_signs.get(q) in (1, -1) for q in k2_quadrants)
+    require(known, "k2_label", "det_signs", det_signs, "a sign +1 or -1 for each quadrant (1, 1), (-1, 1), ...")
     turns = [det_signs[q] for q in k2_quadrants]
     negative = [i for i, s in enumerate(turns) if s < 0]
     if len(negative) in (0, 4):
@@ -114,6 +122,7 @@ def k2_label(det_signs: dict, cross_sign) -> str:
     return "two or none" if majority * cross_sign((odd + 1) % 4) > 0 else "one or three"
 
 
+@checked(plus="RealArray", minus="RealArray")
 class OrthantMap:
     """A numeric piecewise-linear map on orthants, possibly a batch of them.
 
@@ -134,6 +143,14 @@ class OrthantMap:
     def __init__(self, plus, minus):
         self.plus = np.asarray(plus, dtype=float)
         self.minus = np.asarray(minus, dtype=float)
+        square = self.plus.ndim >= 2 and self.plus.shape[-1] == self.plus.shape[-2]
+        require(
+            square and self.plus.shape == self.minus.shape,
+            "OrthantMap",
+            "plus, minus",
+            (plus, minus),
+            "two k x k arrays",
+        )
         self.k = self.plus.shape[-1]
         self.patterns = orthant_patterns(self.k)
 

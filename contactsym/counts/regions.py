@@ -51,6 +51,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from ..arguments import checked
 from ..inequalities import merge_or as _merge_or  # noqa: F401  (tests use the counts' name)
 from ..stages.regions import Region
 from .corners import CountCase, corner_cases, corner_regions, uses_corners
@@ -86,6 +87,7 @@ COUNT_DESCRIPTIONS = {
 }
 
 
+@checked(scene="Scene")
 def count_regions(scene) -> dict[str, Region]:
     """Named closed-form regions by the number of equilibria, for piecewise-linear f.
 

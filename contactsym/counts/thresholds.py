@@ -15,6 +15,7 @@ import numpy as np
 import sympy as sp
 from sympy.core.relational import Relational
 
+from ..arguments import checked, require
 from ..errors import ContactsymError
 from ..stages.regions import Region
 from .conditions import count_presentation
@@ -22,6 +23,7 @@ from .conditions import count_presentation
 __all__ = ["Threshold", "square_threshold", "threshold_angle"]
 
 
+@checked
 @dataclass(frozen=True)
 class Threshold:
     """Where the unique region stops lying inside the region stable for every law.
@@ -112,6 +114,7 @@ def _inside_on_grid(unique: Region, stable: Region, plane, parameter, value: flo
     return bool(np.all(np.broadcast_to(good, grid[0].shape)[chosen]))
 
 
+@checked(scene="Scene")
 def square_threshold(scene, unique: str = "unique", stable: str = "stable for every law") -> Threshold:
     """The parameter value at which the unique region leaves the region stable for every law.
 
@@ -141,6 +144,7 @@ def square_threshold(scene, unique: str = "unique", stable: str = "stable for ev
     return scene.cached(("square threshold", unique, stable), lambda: _square_threshold(scene, unique, stable))
 
 
+@checked(scene="Scene")
 def threshold_angle(scene, unique: str = "unique", stable: str = "stable for every law") -> sp.Expr:
     """The angle at which the unique region leaves the region stable for every law (5.9).
 
@@ -157,6 +161,8 @@ def threshold_angle(scene, unique: str = "unique", stable: str = "stable for eve
 
 
 def _square_threshold(scene, unique: str, stable: str) -> Threshold:
+    require(unique in scene.equilibrium_counts(), "square_threshold", "unique", unique, "a key of equilibrium_counts()")
+    require(stable in scene.regions(), "square_threshold", "stable", stable, "a key of scene.regions()")
     inner = scene.equilibrium_counts()[unique]
     outer = scene.regions()[stable]
     plane = sorted({s for a in inner.condition.atoms(sp.Abs) for s in a.free_symbols}, key=str)

@@ -18,6 +18,7 @@ from sympy.core.relational import Relational
 from sympy.logic.boolalg import BooleanFunction
 
 from ..algebra.basic import normalize
+from ..arguments import checked
 from .facts import Facts
 from .merges import merge_abs, merge_and
 from .relations import Condition, arrange, as_positive_relation, drop_known_factors, solve_for, tidy, univariate
@@ -38,6 +39,7 @@ RAW_OPS = 1500
 FACTOR_TERMS = 200
 
 
+@checked(positive="Sequence[sp.Expr]")
 def closed_form(
     condition: sp.Basic,
     positive=(),
@@ -145,6 +147,7 @@ def _drop_implied_disjuncts(disjuncts: list[sp.Basic], facts: Facts) -> list[sp.
     return kept
 
 
+@checked
 def closed_conjuncts(conditions: list[Condition], equalities: list[sp.Basic], facts: Facts) -> frozenset:
     """Closed forms of conditions and equations (presented by ``facts``), merged into ``|x| < c``.
 

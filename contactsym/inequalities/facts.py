@@ -16,11 +16,13 @@ from functools import lru_cache
 import sympy as sp
 
 from ..algebra.basic import known_sign, normalize
+from ..arguments import checked
 from .relations import Condition
 
 __all__ = ["Facts", "POINTS", "pythagorean", "half_angles", "refuted"]
 
 
+@checked
 def pythagorean(expr: sp.Expr) -> sp.Expr:
     """sin(x)**(2n) written as (1 - cos(x)**2)**n: 4 - 3 sin^2 + ... shows its sign as 1 + 3 cos^2 + ...
 
@@ -36,6 +38,7 @@ def pythagorean(expr: sp.Expr) -> sp.Expr:
     return sp.expand(expr.xreplace({p: (1 - sp.cos(p.base.args[0]) ** 2) ** (p.exp // 2) for p in even_sines}))
 
 
+@checked
 def half_angles(expr: sp.Expr) -> sp.Expr:
     """cos(x) written as 1 - 2 sin(x/2)**2: m (cos 2q - 1) shows its sign as -2 m sin(q)**2.
 
@@ -94,6 +97,7 @@ def refuted(value: sp.Expr, sign: int, strict: bool, points: int = POINTS) -> bo
     return False
 
 
+@checked(positive="Sequence[sp.Expr]")
 class Facts:
     """What is known: positive expressions and an optional presentation; decisions are cached.
 

@@ -12,11 +12,13 @@ import sympy as sp
 from sympy.core.relational import Relational
 
 from ..algebra.basic import known_sign
+from ..arguments import checked
 from .relations import positive_part
 
 __all__ = ["split", "merge_and", "merge_abs", "merge_pair", "merge_or", "boolean"]
 
 
+@checked(positive="Sequence[sp.Expr]")
 def split(p1: sp.Expr, p2: sp.Expr, positive=()) -> tuple[sp.Expr, sp.Expr] | None:
     """(x, c) with p1 = c - x and p2 = c + x, when c is known positive and shares no symbol with x.
 
@@ -34,6 +36,7 @@ def split(p1: sp.Expr, p2: sp.Expr, positive=()) -> tuple[sp.Expr, sp.Expr] | No
     return x, c
 
 
+@checked(positive="Sequence[sp.Expr]")
 def merge_and(conjuncts: list[sp.Basic], positive=()) -> list[sp.Basic]:
     """``c - x > 0`` and ``c + x > 0`` become ``|x| < c`` (c known positive, free of x's symbols).
 
@@ -63,6 +66,7 @@ def merge_and(conjuncts: list[sp.Basic], positive=()) -> list[sp.Basic]:
     return out
 
 
+@checked
 def merge_abs(conditions: list[sp.Basic]) -> list[sp.Basic]:
     """Replace the pair ``x < c``, ``-x < c`` written so (c free of x, any sign) by ``|x| < c``.
 
@@ -86,6 +90,7 @@ def merge_abs(conditions: list[sp.Basic]) -> list[sp.Basic]:
     return out
 
 
+@checked(positive="Sequence[sp.Expr]")
 def merge_pair(a: sp.Basic, b: sp.Basic, positive=()) -> sp.Basic | None:
     """One relational equivalent to ``a or b`` when a short one exists (True when they cover all).
 
@@ -116,6 +121,7 @@ def merge_pair(a: sp.Basic, b: sp.Basic, positive=()) -> sp.Basic | None:
     return None
 
 
+@checked(positive="Sequence[sp.Expr]")
 def merge_or(disjuncts: list[frozenset], positive=()) -> list[frozenset]:
     """Merge disjuncts (sets of conjuncts) that differ in one conjunct; drop absorbed ones.
 
@@ -148,6 +154,7 @@ def merge_or(disjuncts: list[frozenset], positive=()) -> list[frozenset]:
     return out
 
 
+@checked
 def boolean(disjuncts: list[frozenset]) -> sp.Basic:
     """The Boolean ``Or(And(*d) for d in disjuncts)``.
 

@@ -13,6 +13,7 @@ from sympy.core.relational import Relational
 
 from ..algebra.basic import known_sign
 from .factors import factor_list
+from ..arguments import checked, require
 
 __all__ = [
     "FLIP",
@@ -44,6 +45,7 @@ FLIP = {
 _ORDER = (sp.StrictGreaterThan, sp.GreaterThan, sp.StrictLessThan, sp.LessThan)
 
 
+@checked
 @dataclass(frozen=True)
 class Condition:
     """``raw > 0`` (strict) or ``raw >= 0``; ``presented`` is the same number in other variables.
@@ -68,6 +70,7 @@ class Condition:
         return None if part is None else cls(part[0], part[0], part[1])
 
 
+@checked
 def as_positive_relation(rel: Relational) -> tuple[sp.Expr, type]:
     """``P op 0`` with op in {>, >=, ==, !=}.
 
@@ -83,6 +86,7 @@ def as_positive_relation(rel: Relational) -> tuple[sp.Expr, type]:
     return expr, type(rel)
 
 
+@checked
 def positive_part(rel: sp.Basic) -> tuple[sp.Expr, bool] | None:
     """(P, strict) with rel equivalent to P > 0 (strict) or P >= 0, P expanded; None for == and !=.
 
@@ -101,6 +105,7 @@ def positive_part(rel: sp.Basic) -> tuple[sp.Expr, bool] | None:
     return sp.expand(expr), op is sp.StrictGreaterThan
 
 
+@checked(positive="Sequence[sp.Expr]")
 def drop_known_factors(expr: sp.Expr, op: type, positive, factor_terms: float) -> tuple[sp.Expr, type, list]:
     """Factor ``expr`` and drop factors of known sign; returns (rest, op, nonzero conditions).
 
@@ -144,6 +149,7 @@ def drop_known_factors(expr: sp.Expr, op: type, positive, factor_terms: float) -
     return rest, op, nonzero
 
 
+@checked(positive="Sequence[sp.Expr]")
 def arrange(expr: sp.Expr, op: type, positive, factor_terms: float) -> sp.Basic:
     """Write ``P > 0`` (or >=) as a reader would: terms of unknown sign on the left.
 
@@ -177,6 +183,7 @@ def arrange(expr: sp.Expr, op: type, positive, factor_terms: float) -> sp.Basic:
     return greater(group(rest), group(-positive_part_ - negative_part))
 
 
+@checked(positive="Sequence[sp.Expr]")
 def solve_for(rel: sp.Basic, symbol: sp.Symbol, positive=()) -> sp.Basic:
     """Solve ``small op big`` for a positive symbol when it is a x**2 + c or a x + c.
 
@@ -207,6 +214,7 @@ def solve_for(rel: sp.Basic, symbol: sp.Symbol, positive=()) -> sp.Basic:
     )
 
 
+@checked(positive="Sequence[sp.Expr]")
 def tidy(rel: sp.Basic, positive) -> sp.Basic:
     """``a - b < -c`` (c known positive) reads better as ``b - a > c``.
 
@@ -224,6 +232,7 @@ def tidy(rel: sp.Basic, positive) -> sp.Basic:
     return rel
 
 
+@checked
 def univariate(condition: sp.Basic) -> sp.Basic:
     """A Boolean in one real symbol, as the union of intervals it describes.
 
@@ -233,6 +242,7 @@ def univariate(condition: sp.Basic) -> sp.Basic:
     >>> univariate(sp.And(x > 0, x < 2, x < 1))
     (0 < x) & (x < 1)
     """
+    require(len(condition.free_symbols) == 1, "univariate", "condition", condition, "a condition in one symbol")
     (x,) = condition.free_symbols
     try:
         return condition.as_set().as_relational(x)

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ..algebra.reductions import PaperSymbol
+from ..arguments import checked
 from ..errors import ComplianceError
 from ..parse import sympy_only
 from ..validate import positive_parameter, shorten
@@ -65,14 +66,17 @@ class Compliance:
         """The reaction in the scaled deformation Q = q/eps**2 and rate V = q'/eps, as eps -> 0 (1.8)."""
         raise NotImplementedError
 
+    @checked
     def smooth_scaled(self, Q: sp.Expr, V: sp.Expr, index: int | None) -> sp.Expr:
         """:meth:`reaction_scaled` on the law's smooth branch, not cut to 0 outside its domain (for derivatives)."""
         return self.reaction_scaled(Q, V, index)
 
+    @checked
     def parameters(self) -> set:
         """The symbols the law brings into a scene (its stiffness, damping, ...)."""
         return set()
 
+    @checked
     def coefficients(self, index: int | None) -> tuple:
         """The symbols that need numbers before the law gives a numeric reaction (a generic law's Phi, Psi)."""
         return ()
@@ -91,14 +95,17 @@ class Generic(Compliance):
     (Phi_1, Psi_1)
     """
 
+    @checked(u="sp.Expr | None", v="sp.Expr | None", index="int | None")
     def phi_psi(self, u, v, index):
         suffix = "" if index is None else f"_{index}"
         return (PaperSymbol(f"Phi{suffix}", negative=True), PaperSymbol(f"Psi{suffix}", negative=True))
 
+    @checked(u="sp.Expr", v="sp.Expr", eps="sp.Expr", index="int | None")
     def deformation(self, u, v, eps, index):
         suffix = "" if index is None else f"_{index}"
         return eps**2 * sp.Function(f"Q{suffix}")(u, v)
 
+    @checked(q="sp.Expr", qdot="sp.Expr", eps="sp.Expr", index="int | None")
     def reaction(self, q, qdot, eps, index):
         """``N = Phi q/eps**2 + Psi q'/eps``: the linear law with the contact's Phi, Psi.
 
@@ -112,10 +119,12 @@ class Generic(Compliance):
         Phi, Psi = self.coefficients(index)
         return Phi * q / eps**2 + Psi * qdot / eps
 
+    @checked(Q="sp.Expr", V="sp.Expr", index="int | None")
     def reaction_scaled(self, Q, V, index):
         Phi, Psi = self.coefficients(index)
         return Phi * Q + Psi * V
 
+    @checked(index="int | None")
     def coefficients(self, index):
         return self.phi_psi(None, None, index)
 
@@ -161,12 +170,15 @@ class KelvinVoigt(Compliance):
         object.__setattr__(self, "stiffness", _require_positive(self.stiffness, "stiffness"))
         object.__setattr__(self, "damping", _require_positive(self.damping, "damping"))
 
+    @checked(u="sp.Expr | None", v="sp.Expr | None", index="int | None")
     def phi_psi(self, u, v, index):
         return -self.stiffness, -self.damping
 
+    @checked(u="sp.Expr", v="sp.Expr", eps="sp.Expr", index="int | None")
     def deformation(self, u, v, eps, index):
         return -(eps**2) * (u + self.damping * v) / self.stiffness
 
+    @checked(q="sp.Expr", qdot="sp.Expr", eps="sp.Expr", index="int | None")
     def reaction(self, q, qdot, eps, index):
         """``N = -stiffness q/eps**2 - damping q'/eps``.
 
@@ -178,8 +190,10 @@ class KelvinVoigt(Compliance):
         """
         return -self.stiffness * q / eps**2 - self.damping * qdot / eps
 
+    @checked(Q="sp.Expr", V="sp.Expr", index="int | None")
     def reaction_scaled(self, Q, V, index):
         return -self.stiffness * Q - self.damping * V
 
+    @checked
     def parameters(self):
         return self.stiffness.free_symbols | self.damping.free_symbols

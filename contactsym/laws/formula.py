@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from ..arguments import checked
 from ..errors import ComplianceError
 from ..parse import sympy_only
 from ..validate import shorten
@@ -38,6 +39,10 @@ class ImplicitDeformation(sp.Function):
     """
 
     law: Law | None = None
+
+    @checked(u="sp.Expr", v="sp.Expr")
+    def __new__(cls, u, v, **options):
+        return super().__new__(cls, u, v, **options)
 
     @classmethod
     def eval(cls, u, v):

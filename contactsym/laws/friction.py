@@ -6,6 +6,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from ..arguments import checked
 from ..parse import sympy_only
 from ..validate import friction_coefficient
 
@@ -42,6 +43,7 @@ class Coulomb:
     def __post_init__(self):
         object.__setattr__(self, "mu", friction_coefficient(self.mu))
 
+    @checked
     def magnitude(self, reaction: sp.Expr, slip_speed: sp.Expr | None) -> sp.Expr:
         return self.mu * sp.Abs(sympy_only(reaction, "the reaction"))  # text is refused, never evaluated
 

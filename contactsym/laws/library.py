@@ -26,6 +26,7 @@ from dataclasses import replace
 
 import sympy as sp
 
+from ..arguments import checked
 from ..errors import ComplianceError
 from .compliance import KelvinVoigt, _require_positive
 from .formula import Law
@@ -53,6 +54,7 @@ def _error(message: str) -> ComplianceError:
     return ComplianceError(message)
 
 
+@checked(stiffness="sp.Expr", damping="sp.Expr", exponent="sp.Expr")
 class Hertz(Law):
     """Hertz contact with linear damping: ``N = k (-q)**n / eps**(2 n) - d q' / eps``.
 
@@ -80,6 +82,7 @@ class Hertz(Law):
         return f"Hertz(stiffness={self.stiffness}, damping={self.damping}, exponent={self.exponent})"
 
 
+@checked(stiffness="sp.Expr", damping="sp.Expr", exponent="sp.Expr")
 class HuntCrossley(Law):
     """Hunt–Crossley contact: ``N = k (-q)**n (1 - c q'/eps) / eps**(2 n)``.
 

@@ -14,6 +14,7 @@ import itertools
 import sympy as sp
 
 from ..algebra.basic import PaperSymbol, known_sign
+from ..arguments import checked
 from ..errors import SceneError
 from ..parse import sympy_only
 from ..validate import finite_expression, positive_parameter, reactions_act, shorten
@@ -32,6 +33,7 @@ __all__ = [
 ]
 
 
+@checked(eps="sp.Basic | float | None", taken="Sequence | set | frozenset")
 def check_eps(eps, taken=()) -> sp.Expr:
     """eps is the small positive parameter of (1.6): a positive symbol or number.
 
@@ -67,6 +69,7 @@ def check_eps(eps, taken=()) -> sp.Expr:
     )
 
 
+@checked(equations="Mapping | None")
 def check_equations(equations) -> dict:
     """The paper's numbers of a scene: ``{formula key: (tuple of numbers, note)}``.
 
@@ -91,6 +94,7 @@ def check_equations(equations) -> dict:
     return equations
 
 
+@checked(coordinates="Sequence", accelerations="Sequence", contacts="Sequence[Contact]")
 def with_friction(coordinates, accelerations, contacts) -> list[sp.Expr]:
     """The accelerations (1.4) with the force of each contact's attached friction law added.
 
@@ -128,6 +132,7 @@ def with_friction(coordinates, accelerations, contacts) -> list[sp.Expr]:
     return accelerations
 
 
+@checked(scene="Scene", parameters="Sequence[sp.Symbol] | None")
 def check_scene(scene, parameters) -> None:
     """Contacts, reactions and (when declared) parameters of a scene are consistent.
 

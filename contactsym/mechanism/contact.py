@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ..algebra.basic import PaperSymbol
+from ..arguments import checked, require
 from ..errors import SceneError
 from ..laws import Compliance, Coulomb, Generic, Viscous
 from ..parse import sympy_only
@@ -69,6 +70,7 @@ class Contact:
         return f"Contact({self.coordinate}, {self.reaction}, {self.compliance!r}{side})"
 
 
+@checked
 def plain_symbol(symbol: sp.Expr, suffix: str = "") -> sp.Symbol:
     """A plain real symbol for a frozen coordinate q(t) or its rate ('qdot', 'xdot_1': printed with a dot).
 
@@ -108,6 +110,7 @@ def frozen_symbol(symbol: sp.Expr, suffix: str = "", taken=()) -> sp.Symbol:
     raise SceneError(f"rename the parameters {sorted(taken)}: they take every name of the frozen {plain}.")
 
 
+@checked
 def solve_linear(equations: list[sp.Expr], candidates: list[sp.Symbol]) -> dict:
     """Solve equations, linear in some of the candidates, uniquely for the fewest of them.
 
@@ -141,6 +144,7 @@ def solve_linear(equations: list[sp.Expr], candidates: list[sp.Symbol]) -> dict:
     return {}
 
 
+@checked(plain="Callable", coordinates="list | tuple", gaps="Sequence[sp.Expr]")
 def contact_manifold(plain, frozen_symbols: dict, coordinates, gaps, at: dict) -> dict:
     """Substitution that puts the frozen state on the contact manifold g = 0, g' = 0.
 
@@ -160,8 +164,14 @@ def contact_manifold(plain, frozen_symbols: dict, coordinates, gaps, at: dict) -
     >>> [sp.expand(rod.plain(g).subs(at)) for g in rod.gaps]
     [0]
     """
+    known = all(q in frozen_symbols for q in coordinates)
+    require(known, "contact_manifold", "coordinates", coordinates, "coordinates that frozen_symbols names")
     at = {plain(key): plain(value) for key, value in at.items()}
-    frozen_gaps = [plain(g).subs(at) for g in gaps]
+    frozen_gaps = [plain(g) for g in gaps]
+    require(
+        all(isinstance(g, sp.Basic) for g in frozen_gaps), "contact_manifold", "plain", plain, "a freezing function"
+    )
+    frozen_gaps = [g.subs(at) for g in frozen_gaps]
     positions = [frozen_symbols[q] for q in reversed(coordinates)]
     at.update(solve_linear(frozen_gaps, [p for p in positions if p not in at]))
     residual = [g for g in (sp.expand(g.subs(at)) for g in frozen_gaps) if g != 0]

@@ -32,7 +32,9 @@ from sympy.polys.matrices import DomainMatrix
 
 from ..algebra.canonical_form import TrigField
 from ..algebra.fraction_free import adjugate_and_det, adjugate_and_det_in_field, solve_fraction_free, t
+from ..arguments import checked
 from ..errors import SceneError
+from ..validate import lagrangian_parts, scene_parts
 
 __all__ = [
     "ContactSpace",
@@ -66,6 +68,7 @@ def _friction_terms(contacts, frame, coordinates) -> list[tuple[sp.Matrix, sp.Ex
     return terms
 
 
+@checked
 @dataclass(frozen=True, eq=False)
 class ContactSpace:
     """Lagrange's equations (1.4) split as M q'' = F + W N + D phi(N) (see the module docstring).
@@ -124,6 +127,7 @@ class ContactSpace:
         return [sp.Add(*[c[i] * w for c, w in zip(columns, multipliers)]) for i in range(self.M.rows)]
 
 
+@checked
 def mass_determinant(M: sp.Matrix):
     """1/det M as a :class:`~contactsym.algebra.canonical_form.TrigFraction`: det M is its denominator over
     its (constant) numerator.
@@ -159,6 +163,7 @@ def _check_mass_matrix(M: sp.Matrix, coordinates) -> None:
         )
 
 
+@checked
 def mass_determinant_is_zero(M: sp.Matrix) -> bool:
     """det M = 0 identically.
 
@@ -252,6 +257,13 @@ def contact_space(lagrangian, coordinates, contacts, loads=(), frame=None) -> Co
     return ContactSpace(tuple(coordinates), M, method.forcing, W, tuple(friction), reactions)
 
 
+@checked(
+    lagrangian="sp.Expr",
+    coordinates="Sequence",
+    contacts="Sequence[Contact]",
+    loads="Sequence",
+    frame="ReferenceFrame | None",
+)
 def lagrangian_accelerations(lagrangian, coordinates, contacts, loads=(), frame=None) -> list[sp.Expr]:
     """Solve Lagrange's equations for the accelerations, with the reactions as unknown loads.
 
@@ -269,4 +281,6 @@ def lagrangian_accelerations(lagrangian, coordinates, contacts, loads=(), frame=
     >>> lagrangian_accelerations(L, [y], [cs.Contact(coordinate=y, reaction=N)])
     [N/m - g]
     """
+    scene_parts(coordinates, None, contacts, derived=True)  # dynamicsymbols and Contacts, one each at least
+    lagrangian_parts(lagrangian, loads, frame)
     return contact_space(lagrangian, coordinates, contacts, loads, frame).accelerations

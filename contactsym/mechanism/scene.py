@@ -16,6 +16,7 @@ import sympy as sp
 
 from ..algebra.basic import known_sign, present
 from ..algebra.canonical_form import present_factor
+from ..arguments import checked, require
 from ..counts.regions import count_regions
 from ..errors import SceneError, SignPatternError
 from ..parse import sympy_only
@@ -47,6 +48,7 @@ GENERAL_NUMBERS = (
 )
 
 
+@checked
 def paper_equations(scene, key: str, detail: str | None = None) -> tuple[tuple, str]:
     """The paper's equation numbers and a note for a formula of ``scene`` (any object with ``k``).
 
@@ -61,7 +63,10 @@ def paper_equations(scene, key: str, detail: str | None = None) -> tuple[tuple, 
     >>> paper_equations(cs.scene("brake"), "stable for every law")
     (('4.4', '6.3'), 'Proposition 6; with equality allowed: erratum 12')
     """
-    return GENERAL_NUMBERS(key, getattr(scene, "k", 2), getattr(scene, "equations", None), detail)
+    k, equations = getattr(scene, "k", 2), getattr(scene, "equations", None)
+    usable = isinstance(k, int) and not isinstance(k, bool) and k >= 1 and isinstance(equations, (dict, type(None)))
+    require(usable, "paper_equations", "scene", scene, "a scene (an object with k contacts)")
+    return GENERAL_NUMBERS(key, k, equations, detail)
 
 
 class Scene(LatexReprMixin):
@@ -293,6 +298,7 @@ class Scene(LatexReprMixin):
         """
         return self._user_names | {str(s) for s in self.frozen_symbols.values()}
 
+    @checked
     def plain(self, expr: sp.Expr) -> sp.Expr:
         """``expr`` with the slow state in plain symbols: q(t) -> q, q'(t) -> qdot (see ``frozen_symbols``)."""
         rates = {d: s for d, s in self.frozen_symbols.items() if isinstance(d, sp.Derivative)}
@@ -315,6 +321,7 @@ class Scene(LatexReprMixin):
             q for q in self.coordinates if self.plain(q) not in fixed and self.plain(sp.diff(q, t)) not in fixed
         )
 
+    @checked
     def freeze(self, expr: sp.Expr) -> sp.Expr:
         """Evaluate on the contact manifold with the slow state frozen (plain symbols)."""
         return self.plain(expr).subs(self.manifold)
@@ -326,10 +333,12 @@ class Scene(LatexReprMixin):
         """Switching functions whose sign the scene fixes (unilateral contacts: u_j > 0)."""
         return self.fast_subsystem().fixed_signs
 
+    @checked
     def sign_patterns(self) -> list[tuple[int, ...]]:
         """All admissible sign patterns of the switching functions (fixed ones kept)."""
         return self.fast_subsystem().sign_patterns()
 
+    @checked
     def check_signs(self, signs) -> tuple:
         """Validate a sign pattern against the switching functions of the fast subsystem."""
         switching = self.fast_subsystem().switching
@@ -348,6 +357,7 @@ class Scene(LatexReprMixin):
 
     # --- stages -------------------------------------------------------------------
 
+    @checked(key="tuple | str", build="Callable")
     def cached(self, key, build):
         """``build()``, computed once per ``key`` and kept with the scene: the stages and what is derived
         from them (counts, thresholds) share the scene's cache through this method."""
@@ -355,38 +365,46 @@ class Scene(LatexReprMixin):
             self._stage_cache[key] = build()
         return self._stage_cache[key]
 
+    @checked
     def regularized(self) -> Regularized:
         """The system (1.7)/(1.9) in slow and fast variables (see :mod:`contactsym.stages.regularize`)."""
         return self.cached("regularized", lambda: Regularized(self))
 
+    @checked
     def fast_subsystem(self) -> FastSubsystem:
         """The associated system (2.1): ``u' = Phi v + Psi f(u)``, ``v' = f(u)``."""
         return self.cached("fast", lambda: FastSubsystem(self))
 
+    @checked
     def equilibria(self, signs=None) -> Equilibria:
         """Equilibria of the fast subsystem, one branch per sign pattern (4.2)."""
         key = None if signs is None else self.check_signs(signs)
         return self.cached(("equilibria", key), lambda: Equilibria(self.fast_subsystem(), key))
 
+    @checked
     def linearization(self, signs=None) -> Linearization:
         """Jacobian A (4.3), the matrix (4.5) and the characteristic polynomial (4.6)."""
         key = None if signs is None else self.check_signs(signs)
         return self.cached(("linear", key), lambda: linearization_of(self.fast_subsystem(), key))
 
+    @checked
     def stability(self, signs=None) -> Stability:
         """Hurwitz conditions (4.7) and the robustness classification (Props. 3-8)."""
         key = None if signs is None else self.check_signs(signs)
         return self.cached(("stability", key), lambda: stability_of(self.fast_subsystem(), key))
 
+    @checked
     def regions(self, signs=None) -> dict:
         """Named closed-form regions: stable / unstable for every law, law-dependent, Hopf line."""
         key = None if signs is None else self.check_signs(signs)
         return self.cached(("regions", key), lambda: scene_regions(self, key))
 
+    @checked
     def equilibrium_counts(self) -> dict:
         """Named closed-form regions by the number of equilibria (see :mod:`contactsym.counts.regions`)."""
         return self.cached("counts", lambda: count_regions(self))
 
+    @checked
     def reduced_system(self, signs=None) -> ReducedSystem:
         """The comparison system (2.2): slow motion with reactions from f(u*) = 0."""
         key = None if signs is None else self.check_signs(signs)
@@ -399,6 +417,7 @@ class Scene(LatexReprMixin):
         """The symbols of the fast subsystem other than u, v: loads, geometry, frozen state."""
         return self.fast_subsystem().parameters
 
+    @checked(expr="sp.Basic | sp.MatrixBase")
     def present(self, expr: sp.Expr, signs=None, presentation: dict | None = None) -> sp.Expr:
         """Rewrite in the scene's presentation variables (e.g. kappa, v_j, mu_pm).
 
@@ -408,6 +427,7 @@ class Scene(LatexReprMixin):
         """
         return present(expr, self.presentation if presentation is None else presentation, signs)
 
+    @checked
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:
         """The accelerations (1.4) and, for gap functions, the contact accelerations g_j''."""
 

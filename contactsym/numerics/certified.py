@@ -16,6 +16,7 @@ import sympy as sp
 from sympy.core.evalf import PrecisionExhausted
 
 from ..algebra.intervals import interval_sign
+from ..arguments import checked
 from ..errors import NumericsError
 from ..parse import sympy_only
 from ..stages.stability import Stability
@@ -181,6 +182,7 @@ def _exact_sign(expr: sp.Expr) -> int:
     raise NumericsError(f"cannot decide the sign of {expr} exactly (it agrees with 0 to 300 digits).")
 
 
+@checked(expr="sp.Expr")
 def certified_sign(expr, values: Mapping | None = None, *, band: float = 0.0) -> tuple[int, bool]:
     """The sign of ``expr`` at ``values``: (sign, whether the exact rational path was used).
 
@@ -216,6 +218,7 @@ def certified_sign(expr, values: Mapping | None = None, *, band: float = 0.0) ->
     return _exact_sign(expr.xreplace(floats).xreplace(exact)), True
 
 
+@checked(boolean="sp.Basic")
 def decide(boolean, values: Mapping | None = None, *, band: float = 0.0) -> bool:
     """Truth of a SymPy Boolean of relationals at numeric values, never by float luck.
 
@@ -254,6 +257,7 @@ def decide(boolean, values: Mapping | None = None, *, band: float = 0.0) -> bool
     raise NumericsError(f"cannot decide {boolean!r}: expected relationals joined by And, Or, Not.")
 
 
+@checked(nan=True)
 @dataclass(frozen=True)
 class Classification:
     """The stability of one parameter point.
@@ -289,6 +293,7 @@ class Classification:
     region: str | None = None
 
 
+@checked(scene_or_stability="Scene | Stability")
 def classify(scene_or_stability, values: Mapping, *, signs=None, band: float = 1e-12) -> Classification:
     """Classify one parameter point by a scene's stability conditions, certified.
 

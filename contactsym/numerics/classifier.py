@@ -13,6 +13,7 @@ import numpy as np
 import sympy as sp
 
 from .. import validate
+from ..arguments import checked
 from ..errors import NumericsError
 from ..parse import sympy_only
 from ..progress import Budget, Progress
@@ -21,6 +22,7 @@ from .certified import _exact_float, _gamma, certified_sign
 from .codegen import lambdify_cse
 
 
+@checked(conditions="list | tuple | sp.MatrixBase")
 class PointClassifier:
     """Certified, vectorised classification of many parameter points.
 

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from ..arguments import checked
 from ..errors import NumericsError
 from ..stages.fast import FastSubsystem
 from ..stages.linear import Linearization
@@ -36,6 +37,7 @@ def _has_text(exprs) -> bool:
     return isinstance(exprs, (list, tuple)) and any(_has_text(e) for e in exprs)
 
 
+@checked(exprs="list | tuple | sp.Basic | sp.MatrixBase")
 def lambdify_cse(args: Sequence, exprs) -> Callable:
     """``sympy.lambdify`` to NumPy with common-subexpression elimination.
 
@@ -52,6 +54,7 @@ def lambdify_cse(args: Sequence, exprs) -> Callable:
     return sp.lambdify(list(args), exprs, modules="numpy", cse=True)
 
 
+@checked
 @dataclass(frozen=True, eq=False)
 class NumericFunction:
     """A generated NumPy function of ``args`` returning ``exprs`` (shape kept).
@@ -109,6 +112,7 @@ def _stage_exprs(stage) -> tuple[object, sp.Matrix, tuple]:
     )
 
 
+@checked
 def lambdify_stage(stage, values: Mapping | None = None, args: Sequence | None = None) -> NumericFunction:
     """Generated NumPy code for a stage object, cached per scene and parameter set.
 

@@ -8,6 +8,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..arguments import checked
 from ..errors import NumericsError
 from ..mechanism.scene import t as _time
 from .codegen import lambdify_cse
@@ -17,6 +18,7 @@ from .systems import OdeSystem, _coordinates, _free_coordinates, _manifold_param
 from .values import NumericValues, _check_free, _check_span, _evaluate, _state_values, _with, numeric_values, substitute
 
 
+@checked(nan=True)
 @dataclass(frozen=True, eq=False)
 class Cycle:
     """A stable periodic solution of the fast subsystem (Proposition 2).
@@ -78,6 +80,7 @@ def _no_cycle(system: OdeSystem, message: str) -> Cycle:
     )
 
 
+@checked(scene="Scene", unilateral="bool | None", initial="RealArray | None")
 def fast_cycle(
     scene,
     values: Mapping | None,
@@ -206,6 +209,13 @@ def _sampled_cycle(system: OdeSystem, found: tuple, samples: int, N_scale: float
     )
 
 
+@checked(
+    scene="Scene",
+    span="Sequence[float]",
+    unilateral="bool | None",
+    atol="float | RealArray | None",
+    t_eval="RealArray | None",
+)
 def simulate_averaged(
     scene,
     values: Mapping | None,

@@ -16,8 +16,10 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
+from ..arguments import checked
 from ..errors import NumericsError
 from ..laws import ImplicitDeformation
+from ..validate import shorten
 from .codegen import _cached, lambdify_cse
 from .integration import Simulation, integrate_with_impact_bound
 from .reduced import _branch_at, _reaction_scale, _try_branch
@@ -41,12 +43,13 @@ _TAU = sp.Symbol("tau", real=True)  # the stretched time t/eps
 def _fast_form(scene, unilateral, form) -> str:
     if form is not None:
         if form not in ("uv", "deformation"):
-            raise NumericsError(f"form = {form!r}; use 'uv' (the paper's (2.1)) or 'deformation' (Q, V).")
+            raise NumericsError(f"form = {shorten(form)}; use 'uv' (the paper's (2.1)) or 'deformation' (Q, V).")
         return form
     implicit = any(x.atoms(ImplicitDeformation) for x in scene.fast_subsystem().Phi + scene.fast_subsystem().Psi)
     return "deformation" if implicit or any(_clamps(scene, unilateral)) else "uv"
 
 
+@checked(scene="Scene", unilateral="bool | None")
 def fast_system(
     scene, values: Mapping | None, *, laws: Mapping | None = None, unilateral=None, form: str | None = None
 ) -> OdeSystem:
@@ -140,6 +143,7 @@ def _build_fast_deformation(scene, vals: NumericValues, laws, unilateral, f: lis
     return replace(system, reaction_names=reaction_names)
 
 
+@checked
 @dataclass(frozen=True, eq=False)
 class FastProblem:
     """A point's numeric fast subsystem (2.1): the values, the form, the generated system, the
@@ -245,6 +249,14 @@ class FastProblem:
         return scale
 
 
+@checked(
+    scene="Scene",
+    span="Sequence[float]",
+    initial="RealArray | None",
+    unilateral="bool | None",
+    atol="float | RealArray | None",
+    t_eval="RealArray | None",
+)
 def simulate_fast(
     scene,
     values: Mapping | None,

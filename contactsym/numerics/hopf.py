@@ -22,9 +22,11 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from ..arguments import checked
 from ..deprecation import deprecated_alias
 from ..errors import ComplianceError, HopfError, NumericsError
 from ..lyapunov.coefficient import HopfVectors, first_lyapunov_from_derivatives
+from ..validate import shorten
 from .codegen import _cached, lambdify_cse
 from .fastsystem import FastProblem
 from .systems import _contact_law, _index, _laws_key
@@ -33,6 +35,7 @@ from .values import NumericValues, numeric_values, substitute
 __all__ = ["HopfCoefficient", "first_lyapunov_at", "full_cycle_start", "hopf_point"]
 
 
+@checked(nan=True)
 @dataclass(frozen=True, eq=False)
 class HopfCoefficient:
     """l1 of the fast subsystem at a Hopf point, and the cycle it predicts.
@@ -201,6 +204,7 @@ def _at_point(problem: FastProblem):
     return u_star, J, H, T, dN, np.array(z)
 
 
+@checked(scene="Scene")
 def first_lyapunov_at(
     scene, values: Mapping, *, laws: Mapping | None = None, signs=None, tol: float = 1e-6
 ) -> HopfCoefficient:
@@ -239,6 +243,7 @@ def _coefficient(vectors: HopfVectors, u_star, dN, state, **extra) -> HopfCoeffi
     return HopfCoefficient(vectors.l1, vectors.omega, direction, u_star, dN @ vectors.q, vectors, state, **extra)
 
 
+@checked(scene="Scene", parameter="sp.Symbol | str", signs="Sequence[int] | None")
 def hopf_point(
     scene,
     values: Mapping,
@@ -267,7 +272,7 @@ def hopf_point(
     vals = numeric_values(scene, values)
     key = next((p for p in vals.numbers if p == parameter or str(p) == str(parameter)), None)
     if key is None:
-        raise NumericsError(f"give a starting value for the parameter {parameter} in values.")
+        raise NumericsError(f"give a starting value for the parameter {shorten(parameter)} in values.")
     start = float(vals.numbers[key])
 
     def alpha(p):
@@ -305,6 +310,7 @@ def _widen(alpha, start: float) -> tuple[float, float]:
     )
 
 
+@checked(scene="Scene", base="Mapping | None")
 def full_cycle_start(
     scene, hopf: HopfCoefficient, values: Mapping, eps: float, value: float, *, factor: float = 1.0, base=None
 ) -> dict:

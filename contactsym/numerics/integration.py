@@ -17,6 +17,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from .. import validate
+from ..arguments import checked
 from ..errors import NumericsError
 from ..progress import Budget, Progress
 from .systems import OdeSystem
@@ -36,6 +37,7 @@ class _NotFinite(Exception):
     pass
 
 
+@checked(nan=True)
 @dataclass(frozen=True, eq=False)
 class Simulation:
     """The result of a simulation.
@@ -139,6 +141,7 @@ def _budget_message(method: str, analytic: bool, counter: dict, max_rhs: int, bu
     return f"{method} used up its budget of {spent}; {reached}. {advice}."
 
 
+@checked(span="Sequence[float]", z0="RealArray", atol="float | RealArray | None", t_eval="RealArray | None")
 def integrate(
     system: OdeSystem,
     span,

@@ -8,6 +8,7 @@ from collections.abc import Mapping
 import numpy as np
 import sympy as sp
 
+from ..arguments import checked
 from ..errors import NumericsError
 from ..mechanism.scene import t as _time
 from .certified import decide
@@ -45,6 +46,7 @@ def _branch_at(scene, vals: NumericValues, signs=None):
     )
 
 
+@checked(scene="Scene")
 def equilibrium_reactions(scene, values: Mapping | None, state: Mapping | None = None) -> list[tuple]:
     """Consistent equilibria (sign pattern, u*) of the fast subsystem at numeric values.
 
@@ -66,6 +68,7 @@ def equilibrium_reactions(scene, values: Mapping | None, state: Mapping | None =
     return found
 
 
+@checked(scene="Scene")
 def reduced_system(scene, values: Mapping | None, *, signs=None, state: Mapping | None = None) -> OdeSystem:
     """The comparison system (2.2) on one equilibrium branch, as generated code.
 
@@ -133,6 +136,7 @@ def _try_branch(scene, frozen: NumericValues, signs):
         return None
 
 
+@checked(scene="Scene", span="Sequence[float]", atol="float | RealArray | None", t_eval="RealArray | None")
 def simulate_reduced(
     scene,
     values: Mapping | None,

@@ -13,6 +13,7 @@ import numpy as np
 import sympy as sp
 from scipy.optimize import brentq  # already loaded by scipy.integrate
 
+from ..arguments import checked
 from ..errors import NumericsError
 from ..laws import Compliance
 from ..mechanism.scene import t as _time
@@ -20,6 +21,7 @@ from .codegen import _cached, lambdify_cse
 from .values import NumericValues, _check_free, _plain_expr, _positive, numeric_values, substitute
 
 
+@checked
 @dataclass(frozen=True, eq=False)
 class OdeSystem:
     """A generated first-order system ``z' = fun(t, z)`` with its Jacobian and reactions.
@@ -207,6 +209,7 @@ def _manifold_parameters(scene) -> dict:
     return {key: value for key, value in scene.manifold.items() if key not in state}
 
 
+@checked(scene="Scene", eps="float", unilateral="bool | None")
 def full_system(scene, values: Mapping | None, eps, *, laws: Mapping | None = None, unilateral=None) -> OdeSystem:
     """The full compliant system (1.9) at a numeric ``eps``, in the original time t.
 

@@ -6,10 +6,12 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from ..arguments import checked
 from .fastsystem import FastProblem, simulate_fast
 from .reduced import equilibrium_reactions
 
 
+@checked(scene="Scene", unilateral="bool | None", starts="RealArray | None", span="Sequence[float]")
 def fast_trajectories_data(
     scene,
     values: Mapping | None,

@@ -16,6 +16,7 @@ import numpy as np
 import sympy as sp
 
 from .. import validate
+from ..arguments import checked
 from ..errors import NumericsError
 from ..parse import sympy_only
 
@@ -70,6 +71,7 @@ def _plain_expr(scene, expr) -> sp.Expr:
     return scene.plain(expr)
 
 
+@checked
 @dataclass(frozen=True)
 class NumericValues:
     """Numeric parameter values (Symbol -> number) and function substitutions.
@@ -107,6 +109,7 @@ def _scene_symbols(scene) -> dict[str, sp.Basic]:
     return names
 
 
+@checked(scene="Scene")
 def numeric_values(scene, values: Mapping | None) -> NumericValues:
     """Validate parameter values for a scene: finite numbers, and functions for X(x, xdot).
 
@@ -188,6 +191,7 @@ def _check_assumptions(symbol: sp.Symbol, number: sp.Expr) -> None:
         raise NumericsError(f"{symbol} = {x} must be >= 0.")
 
 
+@checked(expr="sp.Basic | sp.MatrixBase")
 def substitute(expr, values: NumericValues) -> sp.Expr:
     """Plain numeric substitution: functions first, then numbers (``xreplace``).
 

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import sympy as sp
 
+from ..arguments import between, checked
 from ..printing.latex_output import tex
 from ..scenes import paper_knowledge
 from ..stages.regions import Region
@@ -23,6 +24,7 @@ from .regionplot import RegionData, boundary_contours, region_mask, region_plot,
 __all__ = ["BrakeHopfData", "BrakeMapData", "brake_hopf_data", "brake_hopf_plot", "brake_map_data", "brake_map_plot"]
 
 
+@checked(nan=True)
 @dataclass(frozen=True)
 class BrakeMapData:
     """The brake's (alpha, mu) plane: stable for every law, law-dependent, mu = |cot alpha|.
@@ -46,6 +48,7 @@ class BrakeMapData:
     regions: dict = field(repr=False)
 
 
+@checked(scene="Scene", mu_max="float", resolution=between(2, 4096))
 def brake_map_data(scene, *, mu_max=2.0, resolution=300) -> BrakeMapData:
     """Regions of the brake in the (alpha, mu) plane (6.3), from ``scene.regions()``.
 
@@ -68,6 +71,7 @@ def brake_map_data(scene, *, mu_max=2.0, resolution=300) -> BrakeMapData:
     return BrakeMapData(A, M, masks, boundary, {name: regions[name] for name in names})
 
 
+@checked(ax="Axes | None", legend="bool")
 def brake_map_plot(data: BrakeMapData, ax=None, *, legend=True) -> ContactPlot:
     """Draw the (alpha, mu) map; alpha in degrees.
 
@@ -118,6 +122,7 @@ def brake_map_plot(data: BrakeMapData, ax=None, *, legend=True) -> ContactPlot:
     return ContactPlot.of(ax, artists)
 
 
+@checked(nan=True)
 @dataclass(frozen=True)
 class BrakeHopfData:
     """The brake at alpha = 90 deg, Phi_j = Phi, Psi_j = Psi: (mu, Phi) plane at fixed Psi, m.
@@ -144,6 +149,7 @@ class BrakeHopfData:
     hopf_field: list
 
 
+@checked(scene="Scene", Psi="float", m="float", mu_max="float", Phi_min="float", resolution=between(2, 4096))
 def brake_hopf_data(scene, *, Psi=-1.0, m=1.0, mu_max=3.0, Phi_min=-10.0, resolution=300) -> BrakeHopfData:
     """Hurwitz stability (6.4) and the Hopf line of the brake at alpha = 90 deg, equal laws.
 
@@ -184,6 +190,7 @@ def brake_hopf_data(scene, *, Psi=-1.0, m=1.0, mu_max=3.0, Phi_min=-10.0, resolu
     return BrakeHopfData(MU, PHI, {"Psi": Psi, "m": m}, stable_region, hopf_region, frequency, masks, field_)
 
 
+@checked(ax="Axes | None", legend="bool")
 def brake_hopf_plot(data: BrakeHopfData, ax=None, *, legend=True) -> ContactPlot:
     """Draw the (mu, Phi) plane: stable single-hatched, unstable double-hatched, the Hopf line.
 

@@ -15,6 +15,7 @@ from typing import Any
 
 import sympy as sp
 
+from ..arguments import checked
 from ..errors import SceneError
 
 __all__ = ["ContactPlot", "STABLE_HATCH", "UNSTABLE_HATCH", "axes_or_current"]
@@ -40,6 +41,7 @@ CASE_TITLES = {
 }
 
 
+@checked
 @dataclass(frozen=True, eq=False)
 class ContactPlot(Sequence):
     """What a ``*_plot`` function drew: the figure, the Axes, the artists and the legend.
@@ -93,6 +95,7 @@ class ContactPlot(Sequence):
         return f"<ContactPlot: {len(self)} artists ({kinds}) on {type(self.axes).__name__}>"
 
 
+@checked(ax="Axes | None")
 def axes_or_current(ax):
     """``ax``, or the current pyplot Axes when none is given: the ``ax=`` of every ``*_plot``.
 

@@ -8,11 +8,15 @@ through :func:`contactsym.scenes.paper_knowledge`. A user's scene has none here;
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Callable
 from pathlib import Path
 
+from ..arguments import between, checked
+from ..errors import ReportError
 from ..scenes import paper_knowledge
 from ..scenes import scene as built_in
+from ..validate import shorten
 
 __all__ = ["FIGURE_SCENES", "paper_figures", "save_figure", "scene_figures"]
 
@@ -24,6 +28,7 @@ __all__ = ["FIGURE_SCENES", "paper_figures", "save_figure", "scene_figures"]
 FIGURE_SCENES = ("painleve-klein-guides", "painleve-klein-rod", "brake", "sliding-point")
 
 
+@checked(size="tuple[float, float]", dpi=between(10, 2400))
 def save_figure(path: Path, draw: Callable, *, size=(7.0, 5.0), dpi: int = 150) -> Path:
     r"""Call ``draw(figure)`` on a new matplotlib Figure of ``size`` inches and write it to ``path``.
 
@@ -44,11 +49,29 @@ def save_figure(path: Path, draw: Callable, *, size=(7.0, 5.0), dpi: int = 150) 
     draw(figure)
     path = Path(path)
     partial = path.with_name(path.stem + ".partial.png")
-    figure.savefig(partial, dpi=dpi, bbox_inches="tight")
-    partial.replace(path)  # all or nothing: a reader never sees half a PNG
+    try:
+        figure.savefig(partial, dpi=dpi, bbox_inches="tight")
+        partial.replace(path)  # all or nothing: a reader never sees half a PNG
+    except OSError as error:
+        with contextlib.suppress(OSError):  # our own partial file, if it was made
+            partial.unlink()
+        raise ReportError(
+            f"cannot write the figure {shorten(str(path))}: {error.strerror}; choose another path."
+        ) from error
     return path
 
 
+def _directory(directory) -> Path:
+    """The folder for figures, made if missing; a name the system refuses is a ReportError."""
+    directory = Path(directory)
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+    except (OSError, ValueError) as error:
+        raise ReportError(f"cannot make the folder {shorten(str(directory))}: {error}"[:300]) from error
+    return directory
+
+
+@checked(scene="Scene", directory="Path | str", resolution=between(2, 4096), dpi=between(10, 2400))
 def scene_figures(scene, directory, *, resolution=400, dpi=150) -> dict[str, Path]:
     """Write one scene's figures as PNGs into ``directory``; returns {LaTeX caption: path}.
 
@@ -79,11 +102,11 @@ def scene_figures(scene, directory, *, resolution=400, dpi=150) -> dict[str, Pat
     figures = paper_knowledge(scene, "figures")
     if figures is None:
         return {}
-    directory = Path(directory)
-    directory.mkdir(parents=True, exist_ok=True)
+    directory = _directory(directory)
     return {caption: path for path, caption in figures(scene, directory, resolution=resolution, dpi=dpi)}
 
 
+@checked(directory="Path | str", resolution=between(2, 4096), dpi=between(10, 2400))
 def paper_figures(directory, *, resolution=400, dpi=150) -> list[Path]:
     """Write the figures of the paper's scenes (:data:`FIGURE_SCENES`) as PNGs into ``directory``.
 

@@ -12,7 +12,9 @@ from dataclasses import dataclass, field
 import numpy as np
 import sympy as sp
 
+from ..arguments import between, checked
 from ..counts.regions import square_threshold
+from ..errors import ArgumentError
 from .common import STABLE_HATCH, UNSTABLE_HATCH, ContactPlot, _degrees, _float, _scene, axes_or_current
 from .regionplot import RegionData, boundary_contours, region_mask, region_plot, relational_fields
 
@@ -28,9 +30,10 @@ def _angle_parameter(scene, angle):
             (parameter,) = tangent.free_symbols
             solutions = [s for s in sp.solve(sp.Eq(tangent, sp.tan(angle)), parameter) if s.is_positive]
             return theta, parameter, solutions[0]
-    raise ValueError(f"scene '{scene.name}' presents no angle.")
+    raise ArgumentError(f"scene '{scene.name}' presents no angle; fig1_data draws a scene with an angle phi.")
 
 
+@checked(nan=True)
 @dataclass(frozen=True)
 class Fig1Data:
     """The (v1, v2) plane of the guides at one angle phi (Fig. 1).
@@ -61,6 +64,7 @@ class Fig1Data:
     count_regions: dict = field(repr=False)
 
 
+@checked(scene="Scene", phi="sp.Expr", extent="float", resolution=between(2, 4096))
 def fig1_data(scene, phi, *, extent=4.0, resolution=400) -> Fig1Data:
     """Fig. 1: stability and count regions of the guides in the (v1, v2) plane at angle phi.
 
@@ -130,6 +134,7 @@ def _label_points(mask) -> list[tuple[int, int]]:
     return points
 
 
+@checked(ax="Axes | None", legend="bool")
 def fig1_plot(data: Fig1Data, ax=None, *, legend=True) -> ContactPlot:
     """Draw Fig. 1 on an Axes: stability hatched, the four dashed lines, the counts written in.
 

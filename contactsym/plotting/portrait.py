@@ -12,6 +12,8 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from ..arguments import between, checked
+from ..errors import ArgumentError
 from ..printing.latex_output import tex
 from ..scenes import paper_knowledge
 from .common import CASE_TITLES, ContactPlot, _float, _scene, axes_or_current
@@ -19,6 +21,7 @@ from .common import CASE_TITLES, ContactPlot, _float, _scene, axes_or_current
 __all__ = ["PhasePortraitData", "phase_portrait_caption", "phase_portrait_data", "phase_portrait_plot"]
 
 
+@checked(nan=True)
 @dataclass(frozen=True)
 class PhasePortraitData:
     """The fast subsystem (2.1) of a k = 1 scene on a (u, v) grid, with its equilibria.
@@ -54,6 +57,14 @@ def _by_name(expr, values: dict):
     return expr.xreplace({k: sp.Float(_float(v)) for k, v in mapping.items()})
 
 
+@checked(
+    scene="Scene",
+    values="Mapping | None",
+    Phi="float",
+    Psi="float",
+    extent="Sequence[float]",
+    resolution=between(2, 4096),
+)
 def phase_portrait_data(
     scene, values=None, *, Phi=-1.0, Psi=-0.5, extent=(6.0, 6.0), resolution=60
 ) -> PhasePortraitData:
@@ -98,12 +109,12 @@ def phase_portrait_data(
     if values is None:
         values = paper_knowledge(scene, "PORTRAIT_VALUES")
         if values is None:
-            raise ValueError(
+            raise ArgumentError(
                 f"give values=... for the symbols of '{scene.name}'; only the paper's scenes have defaults."
             )
     values = dict(values)
     if scene.k != 1:
-        raise ValueError(f"phase portraits are for one contact; '{scene.name}' has k = {scene.k}.")
+        raise ArgumentError(f"phase portraits are for one contact; '{scene.name}' has k = {scene.k}.")
     fast = scene.fast_subsystem()
     (u,), (v,) = fast.u, fast.v
     laws = {law: value for law, value in ((fast.Phi[0], Phi), (fast.Psi[0], Psi)) if isinstance(law, sp.Symbol)}
@@ -144,6 +155,7 @@ def _count_at(scene, values: dict) -> str:
     return next((n for n, r in known if bool(r.evaluate(**{k: values[k] for k in r.symbol_names}))), "undecided")
 
 
+@checked(ax="Axes | None", legend="bool")
 def phase_portrait_plot(data: PhasePortraitData, ax=None, *, legend=True) -> ContactPlot:
     """Stream lines of (u', v'), equilibria (u*, 0) marked: filled stable, open unstable.
 
@@ -200,6 +212,7 @@ def phase_portrait_plot(data: PhasePortraitData, ax=None, *, legend=True) -> Con
     return ContactPlot.of(ax, artists)
 
 
+@checked
 def phase_portrait_caption(data: PhasePortraitData) -> str:
     """A LaTeX caption for a phase portrait, from its data.
 

@@ -13,11 +13,13 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from ..arguments import between, checked
 from .common import STABLE_HATCH, ContactPlot, _float, _name, axes_or_current
 
 __all__ = ["RegionData", "boundary_contours", "region_data", "region_mask", "region_plot", "relational_fields"]
 
 
+@checked(region="Region", shape="tuple[int, ...]")
 def region_mask(region, values: dict, shape) -> np.ndarray:
     """Membership of a region on a grid: evaluated with the values it depends on (others ignored),
     broadcast to ``shape``.
@@ -38,6 +40,7 @@ def region_mask(region, values: dict, shape) -> np.ndarray:
     return np.broadcast_to(mask, shape)
 
 
+@checked(condition="sp.Basic", shape="tuple[int, ...]")
 def relational_fields(condition, values: dict, shape) -> list[np.ndarray]:
     """lhs - rhs of every inequality/equation in a condition, on a grid: their zero sets are the boundaries.
 
@@ -61,6 +64,7 @@ def relational_fields(condition, values: dict, shape) -> list[np.ndarray]:
     return fields
 
 
+@checked(nan=True)
 @dataclass(frozen=True)
 class RegionData:
     """A region on a grid: ``mask[i, j]`` is membership at ``(X[i, j], Y[i, j])``.
@@ -85,6 +89,15 @@ class RegionData:
     region: Any  # a Region, or anything with condition, evaluate and symbol_names
 
 
+@checked(
+    region="Region",
+    x="sp.Symbol | str",
+    y="sp.Symbol | str",
+    fixed="Mapping | None",
+    xlim="Sequence[float]",
+    ylim="Sequence[float]",
+    resolution=between(2, 4096),
+)
 def region_data(region, *, x, y, fixed=None, xlim=(-1.0, 1.0), ylim=(-1.0, 1.0), resolution=300):
     """Evaluate a region on a grid of the (x, y) plane.
 
@@ -120,6 +133,19 @@ def region_data(region, *, x, y, fixed=None, xlim=(-1.0, 1.0), ylim=(-1.0, 1.0),
     return RegionData(_name(x), _name(y), X, Y, region_mask(region, values, X.shape).copy(), region)
 
 
+@checked(
+    region="Region",
+    ax="Axes | None",
+    x="sp.Symbol | str",
+    y="sp.Symbol | str",
+    fixed="Mapping | None",
+    xlim="Sequence[float]",
+    ylim="Sequence[float]",
+    resolution=between(2, 4096),
+    hatch="str | None",
+    color="str | None",
+    label="str | None",
+)
 def region_plot(
     region,
     ax=None,
@@ -188,6 +214,7 @@ def region_plot(
     return ContactPlot.of(ax, artists)
 
 
+@checked(ax="Axes | None", X="RealArray", Y="RealArray", fields="Sequence")
 def boundary_contours(ax, X, Y, fields, **style) -> list:
     """Draw the zero contour of each field (from :func:`relational_fields`) that changes sign on the grid;
     returns the contour sets drawn.

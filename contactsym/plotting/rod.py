@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from ..arguments import between, checked, require
 from ..counts.regions import corner_cases
 from ..printing.latex_output import tex
 from .common import CASE_TITLES, ContactPlot, _float, _scene, axes_or_current
@@ -61,6 +62,7 @@ def _corner_case_at(scene, numeric: dict):
     raise ValueError(f"no corner ordering of '{scene.name}' holds at {numeric}.")
 
 
+@checked
 def rod_portrait_values(case: str) -> dict:
     """Numbers for the rod's phase portrait in one of :data:`ROD_CASES`, at its first load X^*.
 
@@ -69,9 +71,11 @@ def rod_portrait_values(case: str) -> dict:
     >>> rod_portrait_values("fold")["X^*"]
     -4.0
     """
+    require(case in ROD_CASES, "rod_portrait_values", "case", case, f"one of {', '.join(ROD_CASES)}")
     return {**{k: v for k, v in ROD_CASES[case].items() if k != "loads"}, "X^*": ROD_CASES[case]["loads"][0]}
 
 
+@checked(nan=True)
 @dataclass(frozen=True)
 class RodFData:
     """f(u) of the Painlevé–Klein rod for one parameter choice and several loads X*.
@@ -99,6 +103,7 @@ class RodFData:
     curves: list  # (X*, f(u) array, [(u*, slope), ...])
 
 
+@checked(scene="Scene", case="str", values="Mapping | None", points=between(2, 100_000))
 def rod_f_data(scene, case="cusp", *, values=None, points=400) -> RodFData:
     """f(u) (3.6) of the rod with the classification of its count region.
 
@@ -129,6 +134,8 @@ def rod_f_data(scene, case="cusp", *, values=None, points=400) -> RodFData:
     [3, 1]
     """
     scene = _scene(scene)
+    require(values is not None or case in ROD_CASES, "rod_f_data", "case", case, f"one of {', '.join(ROD_CASES)}")
+    require(values is None or "loads" in values, "rod_f_data", "values", values, "values with 'loads' (values of X^*)")
     values = dict(values or ROD_CASES[case])
     loads = values.pop("loads")
     numeric = {k: _float(v) for k, v in values.items()}
@@ -165,6 +172,7 @@ def rod_f_data(scene, case="cusp", *, values=None, points=400) -> RodFData:
     )
 
 
+@checked(ax="Axes | None", legend="bool")
 def rod_f_plot(data: RodFData, ax=None, *, legend=True) -> ContactPlot:
     """Draw f(u) for each load, roots marked (filled: stable, f' > 0; open: unstable).
 

@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..arguments import checked, require
 from .common import ContactPlot, axes_or_current
 
 __all__ = ["cycle_plot", "fast_trajectories_plot", "reactions_plot"]
 
 
+@checked(ax="Axes | None")
 def fast_trajectories_plot(data: dict, ax=None) -> ContactPlot:
     """Draw :func:`contactsym.numerics.fast_trajectories_data`; returns the matplotlib artists.
 
@@ -25,6 +27,8 @@ def fast_trajectories_plot(data: dict, ax=None) -> ContactPlot:
     2
     >>> plt.close(fig)
     """
+    keys = ("labels", "trajectories", "impact", "equilibria")
+    require(all(k in data for k in keys), "fast_trajectories_plot", "data", data, "the dict of fast_trajectories_data")
     ax = axes_or_current(ax)
     artists = []
     if data.get("field") is not None:
@@ -45,6 +49,7 @@ def fast_trajectories_plot(data: dict, ax=None) -> ContactPlot:
     return ContactPlot.of(ax, artists)
 
 
+@checked(run="Simulation", ax="Axes | None", names="Sequence[str] | None")
 def reactions_plot(run, ax=None, *, names=None) -> ContactPlot:
     """Plot the reactions of a simulation against its time; returns the lines.
 
@@ -74,6 +79,7 @@ def reactions_plot(run, ax=None, *, names=None) -> ContactPlot:
     return ContactPlot.of(ax, lines)
 
 
+@checked(cycle="Cycle", ax="Axes | None")
 def cycle_plot(cycle, ax=None) -> ContactPlot:
     """The reactions over one period of a fast cycle, with their means; returns the artists.
 

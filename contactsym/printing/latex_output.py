@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
-from ..errors import ContactsymError
+from ..errors import ArgumentError, ContactsymError
 
 __all__ = ["Formula", "LatexReprMixin", "Numbering", "formulas", "latex", "prime", "signs_latex", "tex"]
 
@@ -88,6 +88,14 @@ class Formula:
     paper: tuple = ()
     note: str = ""
 
+    def __post_init__(self):
+        texts = (self.key, self.lhs, self.relation, self.note)
+        if not all(isinstance(text, str) for text in texts) or not isinstance(self.paper, tuple):
+            raise ArgumentError(
+                f"Formula {str(self.key)[:60]}: key, lhs, relation and note must be text and paper a tuple of "
+                "equation numbers."
+            )
+
     @property
     def rhs_latex(self) -> str:
         return self.rhs if isinstance(self.rhs, str) else tex(self.rhs)
@@ -135,6 +143,10 @@ class Numbering:
     numbers: dict
     notes: dict = field(default_factory=dict)
 
+    def __post_init__(self):
+        if not isinstance(self.numbers, dict) or not isinstance(self.notes, dict):
+            raise ArgumentError("Numbering: numbers and notes must be dicts {key: (k = 1, k = 2, k >= 3)}.")
+
     def __call__(self, key: str, k: int, own: dict | None = None, detail=None) -> tuple[tuple, str]:
         """(numbers, note) of ``key`` for k contacts, the scene's own numbers ``own`` appended."""
         column = min(k, 3) - 1
@@ -173,6 +185,8 @@ def signs_latex(signs) -> str:
     >>> print(signs_latex((1, -1)))
     \left(+, -\right)
     """
+    if isinstance(signs, (str, bytes)) or not isinstance(signs, (tuple, list)) or any(s not in (1, -1) for s in signs):
+        raise ArgumentError(f"signs_latex: signs = {str(signs)[:60]} must be a tuple of +1 and -1, e.g. (1, -1).")
     return r"\left(" + ", ".join("+" if s == 1 else "-" for s in signs) + r"\right)"
 
 
@@ -191,12 +205,14 @@ def formulas(obj, *, present: bool = False) -> tuple[Formula, ...]:
     >>> [(f.key, f.body, f.cite()) for f in formulas(fast)][:2]
     [('fast', "u' = - 2 b f{\\left(u \\right)} - v", '(3.1), (1.12)'), ('fast', "v' = f{\\left(u \\right)}", '(3.1), (1.12)')]
     """
+    if not isinstance(present, bool):  # this printer imports no checks (it is a leaf): its own line
+        raise ArgumentError(f"formulas: present = {str(present)[:60]} must be True or False.")
     own = getattr(obj, "formulas", None)
     if callable(own):
         return tuple(own(present=present))
     if _is_region(obj):
         return (Formula(obj.name or "region", "", obj.condition, ""),)
-    raise TypeError(f"no formulas for {type(obj).__name__}; give a stage object, a Branch or a Region.")
+    raise ArgumentError(f"no formulas for {type(obj).__name__}; give a stage object, a Branch or a Region.")
 
 
 def _is_region(obj) -> bool:

@@ -15,6 +15,8 @@ from __future__ import annotations
 import re
 import unicodedata
 
+from ..arguments import checked
+
 __all__ = ["text_to_latex"]
 
 _GREEK = {
@@ -186,6 +188,7 @@ def _render(run: list[tuple[str, str]]) -> str:
     return lead + _math(run[start:end]) + tail
 
 
+@checked
 def text_to_latex(text: str) -> str:
     r"""Plain text with Unicode mathematics (μ₊, Ψ1², ≤, q̇_j) as LaTeX for pdflatex.
 

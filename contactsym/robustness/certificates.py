@@ -30,6 +30,7 @@ from sympy.polys.matrices import DomainMatrix
 from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
 from sympy.polys.rings import ring
 
+from ..arguments import LARGEST, between, checked, require
 from .law_polynomials import _evaluate_terms, _generic_conditions, fast_spectral_abscissa
 
 __all__ = [
@@ -46,6 +47,7 @@ __all__ = [
 ]
 
 
+@checked(c="RealArray", d="RealArray", digits=between(1, 17))
 def rational_law(c, d, digits: int = 4) -> tuple[list, list]:
     """A float law rounded to ``digits`` significant decimal digits, as exact rationals.
 
@@ -72,6 +74,7 @@ def _sqrt_lower_bound(x) -> Fraction:
     return Fraction(isqrt(n * d * scale * scale), d * scale)
 
 
+@checked(g="PolyElement")
 def amgm_certificate(g) -> str | None:
     """``"coefficients"`` if g has nonnegative coefficients (one positive), ``"amgm"`` if each
     negative term is absorbed by midpoint AM-GM pairs of positive terms (shares split evenly
@@ -113,6 +116,7 @@ def amgm_certificate(g) -> str | None:
 # --- witness searches (P6, P7, sampling) ---------------------------------------------
 
 
+@checked(order="Sequence[int]", k=between(1, 16))
 def fisher_fuller_laws(order, k) -> list[tuple[list, list]]:
     """(P6) laws (c, d) = (diag C, diag C), C = diag(delta^r) along the nested sequence ``order``.
 
@@ -131,6 +135,7 @@ def fisher_fuller_laws(order, k) -> list[tuple[list, list]]:
     >>> all(v > 0 for c, d in laws for v in lp.values_at(c, d))
     True
     """
+    require(sorted(order) == list(range(k)), "fisher_fuller_laws", "order", order, f"an ordering of 0..{k - 1}")
     laws = []
     for delta in (sp.Rational(1, 2), sp.Rational(1, 10), sp.Rational(1, 100), sp.Rational(1, 10**4)):
         c = [None] * k
@@ -140,6 +145,7 @@ def fisher_fuller_laws(order, k) -> list[tuple[list, list]]:
     return laws
 
 
+@checked(count=between(0, 10**6), seed=between(0, LARGEST))
 def sampled_laws(Af: np.ndarray, count: int, seed: int) -> tuple[list, list]:
     """(stable-looking, unstable-looking) rational laws from log-uniform samples, best first.
 
@@ -155,6 +161,7 @@ def sampled_laws(Af: np.ndarray, count: int, seed: int) -> tuple[list, list]:
     >>> abscissa(stable[0]) < 0 < abscissa(unstable[0])
     True
     """
+    require(Af.ndim == 2 and Af.shape[0] == Af.shape[1], "sampled_laws", "Af", Af, "a square k x k array")
     k = Af.shape[0]
     rng = np.random.default_rng(seed)
     c = 10.0 ** rng.uniform(-3, 3, (count, k))
@@ -173,6 +180,7 @@ def _normalized(c: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return c / t**2, d / t
 
 
+@checked(seed=between(0, LARGEST), count=between(0, 10**6))
 def weak_damping_laws(Af: np.ndarray, seed: int, count: int = 400) -> list:
     """Unstable laws with small damping. Left-multiplying lam^2 x + (lam D + C) A x = 0 by the left
     eigenvector y of CA (CA x = mu x) gives lam^2 + mu s lam + mu = 0 to first order in D, with
@@ -188,6 +196,7 @@ def weak_damping_laws(Af: np.ndarray, seed: int, count: int = 400) -> list:
     >>> float(fast_spectral_abscissa(A, np.array([[float(x) for x in c]]), np.array([[float(x) for x in d]]))[0]) > 0
     True
     """
+    require(Af.ndim == 2 and Af.shape[0] == Af.shape[1], "weak_damping_laws", "Af", Af, "a square k x k array")
     k = Af.shape[0]
     rng = np.random.default_rng(seed + 2)
     stiffness = np.vstack([np.ones(k), 10.0 ** rng.uniform(-3, 3, (count, k))])
@@ -208,6 +217,7 @@ def weak_damping_laws(Af: np.ndarray, seed: int, count: int = 400) -> list:
     return laws
 
 
+@checked(seed=between(0, LARGEST), starts=between(1, 1000))
 def climbed_laws(Af: np.ndarray, sign: float, seed: int, starts: int = 3) -> list:
     """Rational laws found by Nelder-Mead on log(c, d) maximising sign * (normalized abscissa), from
     the best of wide log-uniform samples (1e-6..1e6): the rare unstable (stable) laws sampling misses.
@@ -221,6 +231,7 @@ def climbed_laws(Af: np.ndarray, sign: float, seed: int, starts: int = 3) -> lis
     >>> float(fast_spectral_abscissa(A, np.array([[float(x) for x in c]]), np.array([[float(x) for x in d]]))[0]) > 0
     True
     """
+    require(Af.ndim == 2 and Af.shape[0] == Af.shape[1], "climbed_laws", "Af", Af, "a square k x k array")
     k = Af.shape[0]
     rng = np.random.default_rng(seed + 1)
     x = rng.uniform(-6, 6, (4000, 2 * k))
@@ -259,6 +270,7 @@ def _vertex_direction(b, others) -> np.ndarray | None:
     return w if (differences @ w >= 1).all() else None
 
 
+@checked(k=between(1, 8))
 @cache
 def generic_vertex_coefficients(k: int) -> tuple[tuple[tuple[int, ...], sp.Expr], ...]:
     """(subset S, coefficient) pairs: the coefficients, as polynomials in symbols m_S for the
@@ -306,6 +318,7 @@ def _vertices(points: list) -> list:
     ]
 
 
+@checked(lp="LawPolynomials", conditions="Sequence", per_condition=between(1, 1000), tries=between(1, 10**4))
 def vertex_laws(lp, conditions, per_condition: int = 2, tries: int = 12) -> list[tuple[list, list]]:
     """Laws t^w on which a negative vertex coefficient of a condition dominates (P3); at most
     ``tries`` negative terms per condition, largest first.
@@ -353,6 +366,7 @@ def _multipliers(gens, degree: int) -> list:
     return found
 
 
+@checked(lp="LawPolynomials", conditions="Sequence")
 def positivstellensatz_certificate(lp, conditions, degrees: tuple | None = None) -> str | None:
     """(P5): monomial multipliers s_i >= 0 with every coefficient of sum s_i g_i <= 0, checked exactly;
     multipliers of degree ``degrees[0]``, then ``degrees[1]``, ...
@@ -454,6 +468,7 @@ def _solve_and_check(lp, matrix, scale, products, monomials, margin, degree) -> 
     return f"a combination of {used} Liénard–Chipart conditions times monomials of degree <= {degree} has every coefficient <= 0"
 
 
+@checked(lp="LawPolynomials", conditions="Sequence", degree=between(0, 12))
 def damped_positivstellensatz_certificate(lp, conditions, degree: int = 4) -> str | None:
     """(P8): P5 on the other conditions after d_i = u + sum_(j != i) (-a_jj / a_ii) d_j, when a_ii > 0 is the
     only positive diagonal entry: u > 0 exactly when p_(2k-1) = sum a_jj d_j > 0 (u reuses the generator d_i).

@@ -105,6 +105,7 @@ import sympy as sp
 from sympy.polys.domains import QQ
 
 from ..algebra.basic import normalize
+from ..arguments import LARGEST, between, checked, require
 from ..deprecation import deprecated_alias, deprecated_names
 from ..errors import ContactsymError
 from .certificates import (
@@ -123,6 +124,7 @@ from .law_polynomials import LawPolynomials, fast_spectral_abscissa
 __all__ = ["WitnessLaw", "Certificate", "Robustness", "decide_robustness", "regions", "nested_sequences"]
 
 
+@checked(nan=True)
 @dataclass(frozen=True)
 class WitnessLaw:
     """One admissible law at the equilibrium: Phi_j, Psi_j < 0, with its verdict.
@@ -153,6 +155,7 @@ class WitnessLaw:
         return all(v > 0 for v in self.conditions)
 
 
+@checked(nan=True)
 @dataclass(frozen=True)
 class Certificate:
     """Why the equilibrium is stable (unstable) for every law.
@@ -172,6 +175,7 @@ class Certificate:
     statement: str
 
 
+@checked(nan=True)
 @dataclass(frozen=True)
 class Robustness:
     """The three-valued answer with its evidence (or ``undecided``).
@@ -206,6 +210,7 @@ class Robustness:
 # --- nested sequences (P6) ----------------------------------------------------------------
 
 
+@checked
 def nested_sequences(minors: dict) -> list[tuple[int, ...]]:
     """Orderings i1..ik along which every leading principal minor is positive.
 
@@ -218,7 +223,9 @@ def nested_sequences(minors: dict) -> list[tuple[int, ...]]:
     >>> nested_sequences({(0,): -1, (1,): -1, (0, 1): 2})
     []
     """
-    k = max(len(S) for S in minors)
+    k = max((len(S) for S in minors if isinstance(S, tuple)), default=0)
+    every = all(S in minors for r in range(1, k + 1) for S in itertools.combinations(range(k), r))
+    require(k > 0 and every, "nested_sequences", "minors", minors, "the principal minors {(0,): det A_0, ...}")
     found = []
     for order in itertools.permutations(range(k)):
         if all(minors[tuple(sorted(order[: r + 1]))] > 0 for r in range(k)):
@@ -335,6 +342,7 @@ def _numeric_matrix(A) -> sp.Matrix:
     return M
 
 
+@checked(A="sp.MatrixBase", laws=between(0, 10**6), seed=between(0, LARGEST))
 def decide_robustness(A, laws: int = 300, seed: int = 0) -> Robustness:
     """Stable for every law, unstable for every law, law-dependent or undecided, with evidence.
 
@@ -398,6 +406,7 @@ def _principal_minors(A: sp.Matrix) -> dict:
     return {S: normalize(A.extract(list(S), list(S)).det(method="berkowitz")) for S in subsets}
 
 
+@checked
 def regions(A: sp.Matrix, vertices: bool = False) -> dict[str, sp.Basic]:
     """Closed-form regions, any k, in the entries of A (all sufficient for what they name).
 

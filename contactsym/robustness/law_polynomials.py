@@ -32,6 +32,7 @@ from sympy.polys.domains import QQ
 from sympy.polys.rings import PolyElement, ring
 
 from ..algebra.hurwitz import Hurwitz
+from ..arguments import between, checked
 
 __all__ = ["LawPolynomials", "law_ring", "fast_spectral_abscissa"]
 
@@ -39,6 +40,7 @@ __all__ = ["LawPolynomials", "law_ring", "fast_spectral_abscissa"]
 EXPAND_UP_TO_K = 3
 
 
+@checked(k=between(1, 8))
 @cache
 def law_ring(k: int):
     """QQ[c1..ck, d1..dk] and its generators."""
@@ -97,6 +99,7 @@ def _rational_matrix(A) -> sp.Matrix:
     return sp.Matrix(A).applyfunc(_exact)
 
 
+@checked
 def fast_spectral_abscissa(A: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.ndarray:
     """max Re eig of (4.5) ``[[Psi A, Phi], [A, 0]]`` with Phi = -c, Psi = -d, for many laws at once.
 
@@ -115,6 +118,7 @@ def fast_spectral_abscissa(A: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.nd
     return np.linalg.eigvals(M).real.max(axis=1)
 
 
+@checked(A="sp.Matrix")
 class LawPolynomials:
     """Exact Liénard–Chipart conditions of (4.5) as polynomials in the law (c, d), for numeric A.
 

@@ -8,6 +8,7 @@ from importlib import import_module
 
 import sympy as sp
 
+from ..arguments import checked
 from ..errors import SceneError
 from ..validate import scene_name, shorten
 
@@ -67,6 +68,7 @@ def scene(name: str):
     return _built[name]
 
 
+@checked(scene="Scene")
 def paper_name(scene) -> str | None:
     """The built-in name of ``scene`` when it is the built-in scene object itself, else None.
 
@@ -86,6 +88,7 @@ def paper_name(scene) -> str | None:
     return name if isinstance(name, str) and _built.get(name) is scene else None
 
 
+@checked(scene="Scene")
 def paper_knowledge(scene, attribute: str, default=None):
     """What the paper says about the built-in ``scene``: ``attribute`` of the scene's own module.
 
@@ -117,6 +120,7 @@ def paper_knowledge(scene, attribute: str, default=None):
     return getattr(import_module(f".{_MODULES[name]}", __name__), attribute, default)
 
 
+@checked
 @dataclass(frozen=True)
 class SpecialCase:
     r"""One of the paper's special cases of a scene, derived from the scene's stages.

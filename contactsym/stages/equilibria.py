@@ -23,6 +23,7 @@ import sympy as sp
 
 from ..algebra.basic import normalize
 from ..algebra.hurwitz import Hurwitz
+from ..arguments import checked
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, signs_latex, tex
 from .fast import solve_piece
 from .linear import charpoly
@@ -34,6 +35,7 @@ __all__ = ["Branch", "Equilibria", "LiftOff"]
 NUMBERS = Numbering({"equilibrium": (("3.2",), ("4.2",), ("4.2",))})
 
 
+@checked
 @dataclass(frozen=True)
 class Branch(LatexReprMixin):
     """One equilibrium: its sign pattern, the reactions u* and where it exists.
@@ -62,6 +64,7 @@ class Branch(LatexReprMixin):
         return tuple(rows)
 
 
+@checked
 @dataclass(frozen=True)
 class LiftOff:
     """An equilibrium at which the unilateral contacts ``open`` lift off (u_j = 0, f_j > 0).
@@ -124,6 +127,7 @@ def _lift_offs(fast, patterns, stability_of) -> list[LiftOff]:
     return found
 
 
+@checked(fast="FastSubsystem")
 @dataclass(frozen=True, eq=False)
 class Equilibria(LatexReprMixin):
     """All equilibrium branches, one or more per admissible sign pattern.
@@ -165,6 +169,7 @@ class Equilibria(LatexReprMixin):
         """Equilibria with some unilateral contacts open (see the module docstring)."""
         return tuple(_lift_offs(self.fast, self.patterns, self._stability))
 
+    @checked(equilibrium="Branch | LiftOff")
     def stable(self, equilibrium) -> sp.Basic:
         """Where an equilibrium (a Branch or a LiftOff) is asymptotically stable for the scene's laws.
 
@@ -187,6 +192,7 @@ class Equilibria(LatexReprMixin):
     def __len__(self) -> int:
         return len(self.branches)
 
+    @checked
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:
         """Every branch's u* and where it exists: see :func:`contactsym.printing.latex_output.formulas`."""
         return tuple(row for branch in self.branches for row in branch.formulas(own=self.fast.paper_equations))

@@ -17,6 +17,7 @@ import sympy as sp
 
 from ..algebra.basic import PaperSymbol, normalize, present
 from ..algebra.fraction_free import solve_fraction_free, t
+from ..arguments import checked, require
 from ..errors import ContactsymError, SceneError, SingularJacobianError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, prime, tex
 
@@ -82,6 +83,7 @@ def _canonical(arg: sp.Expr, u) -> tuple[sp.Expr, int]:
     return (-sigma, -content) if sp.diff(sigma, first).could_extract_minus_sign() else (sigma, content)
 
 
+@checked(exprs="Sequence[sp.Expr]", u="Sequence[sp.Expr]")
 def switching_functions(exprs, u) -> tuple[sp.Expr, ...]:
     """The distinct arguments of Abs and sign in ``exprs`` that depend on ``u``.
 
@@ -101,6 +103,7 @@ def switching_functions(exprs, u) -> tuple[sp.Expr, ...]:
     return tuple(sorted(found, key=lambda s: (min(order[x] for x in s.free_symbols if x in order), str(s))))
 
 
+@checked(expr="sp.Expr", switching="Sequence[sp.Expr]", signs="Sequence[sp.Expr]", u="Sequence[sp.Expr]")
 def on_piece(expr, switching, signs, u) -> sp.Expr:
     """``expr`` on the piece where sign(switching[i]) = signs[i]; signs may be symbols.
 
@@ -166,6 +169,7 @@ def contact_accelerations(scene, u, *, load: bool) -> list[sp.Expr]:
     return [sp.Add(*[c[i] * w for c, w in zip(columns, multipliers)]) for i in range(scene.k)]
 
 
+@checked
 def solve_piece(f: sp.Matrix, u: tuple, signs: tuple) -> list[tuple]:
     """Roots of one smooth piece ``f`` of the fast subsystem: a linear solve when f is affine in u.
 
@@ -278,6 +282,7 @@ class FastSubsystem(LatexReprMixin):
     def presentation(self) -> dict:
         return self.scene.presentation
 
+    @checked(expr="sp.Basic | sp.MatrixBase", signs="Sequence[sp.Expr] | None")
     def present(self, expr: sp.Expr, signs=None) -> sp.Expr:
         """``expr`` in the scene's presentation variables (see :func:`contactsym.algebra.basic.present`)."""
         return present(expr, self.presentation, signs)
@@ -297,6 +302,7 @@ class FastSubsystem(LatexReprMixin):
         """Switching functions whose sign the scene fixes (unilateral contacts: u_j > 0)."""
         return {u: 1 for u, unilateral in zip(self.u, self.unilateral) if unilateral}
 
+    @checked
     def sign_patterns(self) -> list[tuple[int, ...]]:
         """All admissible sign patterns of the switching functions (fixed ones kept)."""
         choices = [(self.fixed_signs[s],) if s in self.fixed_signs else (1, -1) for s in self.switching]
@@ -386,6 +392,7 @@ class FastSubsystem(LatexReprMixin):
     def _later_stages(self) -> dict:
         return {}
 
+    @checked(key="tuple | str", build="Callable")
     def later_stage(self, key, build):
         """A stage built from this fast subsystem alone (a Linearization or a Stability per sign
         pattern), built once: the scene and :class:`~contactsym.stages.equilibria.Equilibria` share it."""
@@ -393,17 +400,41 @@ class FastSubsystem(LatexReprMixin):
             self._later_stages[key] = build()
         return self._later_stages[key]
 
+    @checked(signs="Sequence[sp.Expr]")
     def piece(self, signs) -> sp.Matrix:
         """f on the piece of a sign pattern (numbers or symbols)."""
+        require(
+            len(signs) == len(self.switching),
+            "FastSubsystem.piece",
+            "signs",
+            signs,
+            f"{len(self.switching)} signs, one per switching function",
+        )
         return self.f.applyfunc(lambda e: on_piece(e, self.switching, signs, self.u))
 
+    @checked(signs="Sequence[sp.Expr]")
     def jacobian(self, signs) -> sp.Matrix:
         """df/du on the piece of a sign pattern, from the terms of f that depend on u."""
+        require(
+            len(signs) == len(self.switching),
+            "FastSubsystem.jacobian",
+            "signs",
+            signs,
+            f"{len(self.switching)} signs, one per switching function",
+        )
         piece = self._depends_on_u.applyfunc(lambda e: on_piece(e, self.switching, signs, self.u))
         return piece.jacobian(self.u)
 
+    @checked(signs="Sequence[sp.Expr]")
     def roots(self, signs) -> list[tuple]:
         """The roots u* of f on the piece of a sign pattern (see :func:`solve_piece`)."""
+        require(
+            len(signs) == len(self.switching),
+            "FastSubsystem.roots",
+            "signs",
+            signs,
+            f"{len(self.switching)} signs, one per switching function",
+        )
         return solve_piece(self.piece(signs), self.u, signs)
 
     @cached_property
@@ -411,6 +442,7 @@ class FastSubsystem(LatexReprMixin):
         """The equations (2.1) as ``Eq(Symbol("u_j'"), ...)``, for display."""
         return [sp.Eq(sp.Symbol(f"{x}'"), r) for x, r in zip(self.state, self.rhs)]
 
+    @checked
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:
         """(2.1) in the form (3.1)/(4.1), and each f_j(u): see :func:`contactsym.printing.latex_output.formulas`."""
         u = self.u

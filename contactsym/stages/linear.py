@@ -19,6 +19,7 @@ import sympy as sp
 
 from ..algebra.basic import PaperSymbol, normalize, sign_symbols
 from ..algebra.canonical_form import TrigField, TrigFraction, to_fraction
+from ..arguments import checked
 from ..deprecation import deprecated_property
 from ..errors import ContactsymError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering
@@ -87,6 +88,7 @@ class _MinorsInRing:
         return self.field.reduce(self.field.field.new(self.det(S, S), self.denominator ** len(S)))
 
 
+@checked
 def principal_minors(A: sp.Matrix) -> dict[tuple[int, ...], sp.Expr]:
     """det(A_S) for every subset S of the indices (the empty set gives 1), in the canonical form.
 
@@ -104,6 +106,7 @@ def principal_minors(A: sp.Matrix) -> dict[tuple[int, ...], sp.Expr]:
     }
 
 
+@checked(Phi="Sequence[sp.Expr]", Psi="Sequence[sp.Expr]", positive="Sequence[sp.Expr]")
 def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
     """The characteristic polynomial of (4.5) from the principal minors of A.
 
@@ -170,6 +173,7 @@ def _charpoly_of_expression(A: sp.Matrix, Phi, Psi, positive) -> sp.Poly:
     return sp.Poly(fraction.as_expr(), lam)
 
 
+@checked(fast="FastSubsystem")
 @dataclass(frozen=True, eq=False)
 class Linearization(LatexReprMixin):
     """The linearized fast subsystem on one sign pattern.
@@ -270,6 +274,7 @@ class Linearization(LatexReprMixin):
         log.info("scene '%s': characteristic polynomial (4.6) from %d principal minors", self.fast.name, 2**self.A.rows)
         return charpoly(self.A, self.Phi, self.Psi, self.fast.positive)
 
+    @checked
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:
         """A (4.3), det A, the matrix (4.5) and p(lambda) (4.6); ``present``: in the presentation variables."""
         show = self.fast.present if present else (lambda expr: expr)

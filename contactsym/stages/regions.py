@@ -35,6 +35,7 @@ computation never imports the drawing).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from fractions import Fraction
 from functools import cached_property
 
 import numpy as np
@@ -44,7 +45,8 @@ from sympy.core.relational import Relational
 from .. import inequalities
 from ..algebra.basic import known_sign
 from ..algebra.hurwitz import expansion_bound
-from ..errors import SceneError
+from ..arguments import checked
+from ..errors import ArgumentError, SceneError
 from ..parse import sympy_only
 from ..printing.latex_output import tex
 from ..validate import shorten, sign_pattern
@@ -125,6 +127,7 @@ REGION_NAMES = {
 }
 
 
+@checked(scene="Scene", signs="Sequence[int] | None")
 def scene_regions(scene, signs=None) -> dict[str, Region]:
     """The named closed-form regions of a scene (one sign pattern, or all with symbols s_i).
 
@@ -160,6 +163,7 @@ def _meaning(attribute: str, k: int) -> str:
     return f"{attribute}: where it is proved"
 
 
+@checked
 @dataclass(frozen=True, eq=False)
 class Region:
     """A closed-form Boolean region in a scene's symbols.
@@ -203,6 +207,7 @@ class Region:
     def __invert__(self) -> Region:
         return Region(sp.Not(self.condition), f"not {self.name}" if self.name else "")
 
+    @checked
     def latex(self) -> str:
         return tex(self.condition)
 
@@ -226,9 +231,9 @@ class Region:
         unknown = set(values) - set(self._by_name)
         missing = set(self._by_name) - set(values)
         if missing:
-            raise ValueError(f"give values for {sorted(missing)}; the region depends on them.")
+            raise ArgumentError(f"give values for {sorted(missing)}; the region depends on them.")
         if unknown:
-            raise ValueError(f"the region does not depend on {sorted(unknown)}; known: {sorted(self._by_name)}.")
+            raise ArgumentError(f"the region does not depend on {sorted(unknown)}; known: {sorted(self._by_name)}.")
         return {self._by_name[name]: value for name, value in values.items()}
 
     @cached_property
@@ -236,6 +241,7 @@ class Region:
         symbols = sorted(self.condition.free_symbols, key=str)
         return symbols, sp.lambdify(symbols, self.condition, modules="numpy")
 
+    @checked
     def evaluate(self, **arrays) -> np.ndarray:
         """Membership for arrays of parameter values (broadcast with numpy), by symbol name."""
         self._symbols_for(arrays)
@@ -244,6 +250,7 @@ class Region:
         shape = np.broadcast_shapes(*(a.shape for a in arguments)) if arguments else ()
         return np.broadcast_to(np.asarray(function(*arguments), dtype=bool), shape)
 
+    @checked
     def contains(self, **exact_values) -> bool:
         """Exact membership: values are converted to rationals (floats exactly, strings parsed as numbers)."""
         values = {s: _exact(v) for s, v in self._symbols_for(exact_values).items()}
@@ -251,7 +258,7 @@ class Region:
         if result not in (sp.true, sp.false):
             result = result.simplify() if not result.free_symbols else result
         if result not in (sp.true, sp.false):
-            raise ValueError(f"cannot decide {result} exactly.")
+            raise ArgumentError(f"cannot decide {result} exactly.")
         return bool(result)
 
 
@@ -259,15 +266,17 @@ def _exact(value) -> sp.Expr:
     """A rational (or exact SymPy number) from an int, float, Fraction, or numeric string."""
     if isinstance(value, sp.Basic):
         if not value.is_number:
-            raise ValueError(f"{value} is not a number.")
+            raise ArgumentError(f"{value} is not a number.")
         return value
     if isinstance(value, str):
         try:
             return sp.Rational(value)
         except (TypeError, ValueError) as error:
-            raise ValueError(f"'{value}' is not a number; give e.g. '3/4' or '0.75'.") from error
+            raise ArgumentError(f"'{value}' is not a number; give e.g. '3/4' or '0.75'.") from error
     if isinstance(value, float):
         if not np.isfinite(value):
-            raise ValueError(f"{value} is not finite.")
+            raise ArgumentError(f"{value} is not finite.")
         return sp.Rational(value)
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer, Fraction)):
+        raise ArgumentError(f"{shorten(value)} ({type(value).__name__}) is not a number; give e.g. 3, 0.75 or '3/4'.")
     return sp.Rational(value)

@@ -18,6 +18,7 @@ import sympy as sp
 
 from ..algebra.basic import PaperSymbol, normalize
 from ..algebra.fraction_free import t
+from ..arguments import checked
 from ..errors import ContactsymError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, prime, tex
 from .fast import fast_variables, law_coefficients, on_piece
@@ -137,6 +138,7 @@ class Regularized(LatexReprMixin):
         return tuple(rows + [row(prime(y), Y) for y, Y in zip(self.y, self.Y)])
 
 
+@checked(scene="Scene")
 @dataclass(frozen=True, eq=False)
 class ReducedSystem(LatexReprMixin):
     """The comparison system (2.2): slow coordinates with the reactions N = u*.

@@ -28,6 +28,7 @@ import sympy as sp
 
 from ..algebra.basic import normalize
 from ..algebra.hurwitz import EXPAND_TERMS, Hurwitz, expansion_bound, hurwitz_minors
+from ..arguments import between, checked
 from ..deprecation import deprecated_property
 from ..errors import SingularJacobianError
 from ..inequalities import factor_list
@@ -320,6 +321,7 @@ class Stability(LatexReprMixin):
 
     # --- formulas -------------------------------------------------------------------
 
+    @checked
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:
         """The conditions (4.7) by name, the robustness statements, omega and the point decision."""
         fast = self.linearization.fast
@@ -405,6 +407,7 @@ def stability_of(fast, signs=None) -> Stability:
     return fast.later_stage(("stability", signs), lambda: Stability(linearization_of(fast, signs)))
 
 
+@checked(stability="Stability")
 def hurwitz_names(stability) -> list[str]:
     r"""LaTeX names of ``stability.hurwitz``: coefficients ``p_s`` of (4.6), minors ``Delta_m`` of (4.7).
 
@@ -418,6 +421,7 @@ def hurwitz_names(stability) -> list[str]:
     return [f"{letters[kind]}_{{{index}}}" for kind, index in stability.routh_hurwitz.labels]
 
 
+@checked(n=between(1, 12))
 def generic_minors(n: int) -> dict[int, sp.Expr]:
     """Delta_m in the coefficients p_n, ..., p_0 (symbols) of a degree-n polynomial, for m = 1..n.
 
@@ -431,6 +435,7 @@ def generic_minors(n: int) -> dict[int, sp.Expr]:
     return {m: sp.expand(minor) for m, minor in enumerate(minors, 1)}
 
 
+@checked(robustness="Robustness | None")
 def robustness_formulas(robustness) -> tuple[Formula, ...]:
     """The point decision of :func:`contactsym.robustness.classify.decide_robustness`: verdict, certificate, witness laws.
 

@@ -14,6 +14,7 @@ from types import MappingProxyType
 
 import sympy as sp
 
+from ...arguments import checked
 from ...errors import ContactsymError
 from ...laws import Coulomb, Generic, KelvinVoigt, Law, Viscous
 from ...parse import ParseError
@@ -28,6 +29,7 @@ __all__ = ["COMPLIANCE_LAWS", "LawKind", "build_contact", "read_contacts"]
 _Q, _QDOT = sp.symbols("q qdot", real=True)
 
 
+@checked
 @dataclass(frozen=True)
 class LawKind:
     """How a law is written in a file and built: its formulas (with defaults, None for

@@ -61,6 +61,7 @@ from pathlib import Path
 
 import sympy as sp
 
+from ...arguments import checked
 from ...errors import ContactsymError
 from ...parse import ParseError
 from ...scenes import scene, scene_names
@@ -159,6 +160,7 @@ def _dimensions(doc: TomlSource, head: dict, lagrangian: bool) -> int:
     return dimensions
 
 
+@checked
 def read_spec(
     text: str, source: str = "<scene file>", default_name: str = "user", *, limits: Limits = LIMITS
 ) -> SceneSpec:
@@ -372,6 +374,15 @@ def load_scene(path, *, limits: Limits = LIMITS) -> Scene:
     return read_scene(text, str(path), default, limits=limits)
 
 
+def _is_file(name: str) -> bool:
+    """Whether ``name`` is a file; a name the system cannot hold (too long, say) is none."""
+    try:
+        return Path(name).is_file()
+    except OSError:
+        return False
+
+
+@checked
 def scene_or_file(argument: str) -> Scene:
     """A scene file by path (a name ending in .toml), else a built-in scene, else an existing file.
 
@@ -383,6 +394,6 @@ def scene_or_file(argument: str) -> Scene:
     if not isinstance(argument, (str, os.PathLike)):
         raise SceneFileError(f"give a scene's name or a scene file's path, not {shown(argument)}.")
     argument = os.fspath(argument)
-    if argument.endswith(".toml") or (argument not in scene_names() and Path(argument).is_file()):
+    if argument.endswith(".toml") or (argument not in scene_names() and _is_file(argument)):
         return load_scene(argument)
     return scene(argument)

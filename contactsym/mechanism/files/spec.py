@@ -18,6 +18,7 @@ from types import MappingProxyType
 
 import sympy as sp
 
+from ...arguments import checked
 from ...errors import SceneError
 from ...validate import checked_fields, shorten
 
@@ -379,6 +380,7 @@ class ContactSpec:
     line: int  # of the law, where the law's own checks are reported
 
 
+@checked
 @dataclass(frozen=True)
 class SceneSpec:
     """Everything a scene file says, read and checked; :func:`build_scene` makes the Scene of it.

@@ -11,6 +11,7 @@ import difflib
 import re
 import sys
 
+from ...arguments import checked
 from ...errors import SceneFileError
 from ...validate import cut, shorten
 
@@ -24,6 +25,7 @@ __all__ = ["SceneFileError", "TomlSource", "shown"]
 _KEY = re.compile(r"""\s*(?:"([^"]*)"|'([^']*)'|([A-Za-z0-9_\-]+))\s*=""")
 
 
+@checked
 def shown(value) -> str:
     """A value as a message shows it: its repr, cut as every message cuts it (:func:`contactsym.validate.shorten`).
 
@@ -35,6 +37,7 @@ def shown(value) -> str:
     return shorten(value)
 
 
+@checked
 class TomlSource:
     """A parsed TOML document and where its keys are.
 
