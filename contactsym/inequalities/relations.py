@@ -12,8 +12,8 @@ import sympy as sp
 from sympy.core.relational import Relational
 
 from ..algebra.basic import known_sign
-from .factors import factor_list
 from ..arguments import checked, require
+from .factors import factor_list
 
 __all__ = [
     "FLIP",
