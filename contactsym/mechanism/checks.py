@@ -12,6 +12,7 @@ from __future__ import annotations
 import itertools
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 from ..algebra.basic import PaperSymbol, known_sign
 from ..arguments import checked
@@ -218,10 +219,14 @@ def _sample_points(exprs, positive=(), count: int = 3) -> list[dict]:
     cos get a rational point of the unit circle, in the quadrant where the declared positive
     expressions hold. Returns substitutions for :func:`_at`.
     """
+    exprs = [sp.sympify(e) for e in (*exprs, *positive)]  # the declared positives need values too
     trig = sorted(
-        {a.args[0] for e in exprs for a in sp.expand_trig(e).atoms(sp.sin, sp.cos) if a.args[0].is_Symbol}, key=str
+        {a.args[0] for e in exprs for a in sp.expand_trig(e).atoms(sp.sin, sp.cos) if _is_angle(a.args[0])}, key=str
     )
-    symbols = sorted(set().union(*(sp.sympify(e).free_symbols for e in exprs)) - set(trig), key=str)
+    # coordinates q(t) are values at an instant: a number each, and their time is no parameter
+    functions = {f for e in exprs for f in e.atoms(AppliedUndef)} - set(trig)
+    times = {x for f in (*functions, *trig) if isinstance(f, AppliedUndef) for x in f.free_symbols}
+    symbols = sorted((set().union(*(e.free_symbols for e in exprs)) - set(trig) - times) | functions, key=str)
     points = []
     for n in range(count):
         point = {}
@@ -238,6 +243,11 @@ def _sample_points(exprs, positive=(), count: int = 3) -> list[dict]:
                 points.append(trial)
                 break
     return points
+
+
+def _is_angle(x) -> bool:
+    """A symbol or a coordinate q(t): what the sample points give a point of the unit circle."""
+    return x.is_Symbol or isinstance(x, AppliedUndef)
 
 
 def _quadrant_choices(count: int):
@@ -348,6 +358,8 @@ def frictionless_part(scene) -> tuple[sp.Matrix, tuple[int, ...]] | None:
     reactions = [c.reaction for c in scene.contacts]
     nonsmooth = set().union(*(g.atoms(sp.Abs, sp.sign) for g in scene.accelerations.values()))
     shown = {j for j, n in enumerate(reactions) for f in nonsmooth if f.args[0].has(n)}
+    if any(contact.coordinate not in scene.accelerations for contact in scene.contacts):
+        return None  # a gap that is no coordinate: its row is not one acceleration
     rows = []
     for contact in scene.contacts:
         terms = sp.Add.make_args(sp.expand(scene.accelerations[contact.coordinate]))

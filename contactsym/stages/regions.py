@@ -89,7 +89,7 @@ def closed_form(condition, scene=None, solve_for: sp.Symbol | None = None, signs
     if condition in (sp.true, sp.false) or all(s in kept for s in condition.free_symbols):
         return condition.xreplace(kept)
     # one memo per scene: its regions share most relations and proofs (the answer is the same without it)
-    memo = scene.cached("closed forms", dict) if scene is not None else None
+    memo = scene.cached("closed forms", lambda: {}) if scene is not None else None
     reduced = inequalities.closed_form(
         condition, positive, solve_for, raw_ops=RAW_OPS, factor_terms=FACTOR_TERMS, memo=memo
     )

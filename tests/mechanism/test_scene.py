@@ -19,6 +19,7 @@ NAMES = [
     "double-pendulum-tip",
     "painleve-rod",
     "two-leg-block",
+    "painleve-rod-3d",
 ]
 
 x, y, z = dynamicsymbols("x y z")
