@@ -19,6 +19,7 @@ import sympy as sp
 
 from ..algebra.basic import PaperSymbol, normalize, sign_symbols
 from ..algebra.canonical_form import TrigField, TrigFraction, to_fraction
+from ..algebra.fraction_free import adjugate_and_det_in_field
 from ..deprecation import deprecated_property
 from ..errors import ContactsymError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering
@@ -80,11 +81,140 @@ class _MinorsInRing:
 
     def minor(self, S: tuple):
         """det(A_S) as a reduced field element."""
-        return self.field.reduce(self.field.field.new(self.det(S, S), self.denominator ** len(S)))
+        return self.field.reduce(self.field.field.new(self.numerator(S), self.denominator ** self.power(S)))
+
+    def numerator(self, S: tuple):
+        """det(A_S) = numerator(S) / denominator^power(S)."""
+        return self.det(S, S)
+
+    def power(self, S: tuple) -> int:
+        return len(S)
+
+    #: The largest power of the denominator a principal minor has.
+    @property
+    def top_power(self) -> int:
+        return len(self.P)
 
 
-def principal_minors(A: sp.Matrix) -> dict[tuple[int, ...], sp.Expr]:
+class _FactoredMinors(_MinorsInRing):
+    """A = W^T M^-1 V with polynomial M (n x n), W, V (n x k), as a Lagrangian scene's contact
+    space gives it. By the Schur complement, det(A_S) = (-1)^|S| det([[M, V_S], [W_S^T, 0]]) / det M:
+    every principal minor is one polynomial over det M (not over D^|S| for the lcm D of A's
+    denominators, whose cancellation would need a large gcd). The bordered determinants are
+    expanded along the rows of W_S^T and then of M, their sub-determinants memoized and shared
+    between the subsets S (a column of V is the same for every S that holds it)."""
+
+    def __init__(self, M: sp.Matrix, W: sp.Matrix, V: sp.Matrix, extra=()):
+        self.field = TrigField([*M, *W, *V, *extra])
+        self.n, self.k = M.rows, W.cols
+        self.M, self.W, self.V = (self._polynomials(X) for X in (M, W, V))
+        self._cache, self._m_cache = {}, {}
+        self.denominator = self._m_det(0, tuple(range(self.n)))
+
+    def _polynomials(self, X: sp.Matrix) -> list[list]:
+        rows = _polynomial_rows(self.field, X)
+        if rows is None:
+            raise ValueError("a factor of A with a polynomial denominator")
+        return rows
+
+    def _entry(self, row: int, column: int):
+        """Row ``row`` of [M | V] at ``column`` (< n: a column of M; n + j: the column of V of contact j)."""
+        return self.M[row][column] if column < self.n else self.V[row][column - self.n]
+
+    def _m_det(self, level: int, columns: tuple):
+        """det of the rows level.. of [M | V] on ``columns`` (as many as rows are left)."""
+        if level == self.n:
+            return self.field.ring.one
+        key = (level, columns)
+        if key not in self._m_cache:
+            total = self.field.ring.zero
+            for i, c in enumerate(columns):
+                entry = self._entry(level, c)
+                if entry:
+                    term = entry * self._m_det(level + 1, columns[:i] + columns[i + 1 :])
+                    total = total + term if i % 2 == 0 else total - term
+            self._m_cache[key] = self.field.reduce_poly(total)
+        return self._m_cache[key]
+
+    def _bordered(self, S: tuple, level: int, columns: tuple):
+        """det of [[W_S^T, 0], [M, V_S]] from the W-row ``level`` on, on ``columns``."""
+        if level == len(S):
+            return self._m_det(0, columns)
+        key = (S, level, columns)
+        if key not in self._cache:
+            total = self.field.ring.zero
+            for i, c in enumerate(columns):
+                entry = self.W[c][S[level]] if c < self.n else None
+                if entry:
+                    term = entry * self._bordered(S, level + 1, columns[:i] + columns[i + 1 :])
+                    total = total + term if i % 2 == 0 else total - term
+            self._cache[key] = self.field.reduce_poly(total)
+        return self._cache[key]
+
+    def numerator(self, S: tuple):
+        if not S:
+            return self.field.ring.one
+        # [[M, V_S], [W_S^T, 0]] is [[W_S^T, 0], [M, V_S]] with its p rows moved past n: (-1)^(n p)
+        value = self._bordered(S, 0, tuple(range(self.n)) + tuple(self.n + j for j in S))
+        return value if (len(S) + self.n * len(S)) % 2 == 0 else -value
+
+    def power(self, S: tuple) -> int:
+        return 1 if S else 0
+
+    @property
+    def top_power(self) -> int:
+        return 1
+
+    def det(self, rows: tuple, cols: tuple):  # pragma: no cover - the factored form has no P
+        raise NotImplementedError("the factored minors give numerator(S) over det M")
+
+
+def _product_of(M: sp.Matrix, W: sp.Matrix, V: sp.Matrix) -> sp.Matrix | None:
+    """W^T M^-1 V in the canonical form, as W^T adj(M) V / det M in one polynomial ring (each entry
+    cancelled once), or None when a factor is not polynomial."""
+    field = TrigField([*M, *W, *V])
+    adj, det = adjugate_and_det_in_field(field, M)
+    parts = [*[x for row in adj for x in row], det]
+    left, right = (_polynomial_rows(field, X.T) for X in (W, V))
+    if left is None or right is None or any(not x.denom.is_ground for x in parts):
+        return None
+    adj = [[x.numer.quo_ground(x.denom.LC) for x in row] for row in adj]
+    det = det.numer.quo_ground(det.denom.LC)
+    n = M.rows
+    adj_v = [
+        [field.reduce_poly(sum((adj[r][c] * v[c] for c in range(n)), field.ring.zero)) for r in range(n)] for v in right
+    ]
+
+    def entry(i, j):
+        numerator = field.reduce_poly(sum((left[i][r] * adj_v[j][r] for r in range(n)), field.ring.zero))
+        return normalize(field.present(field.field.new(numerator, det)))
+
+    return sp.Matrix(W.cols, V.cols, entry)
+
+
+def _polynomial_rows(field, X: sp.Matrix) -> list[list] | None:
+    """The rows of X as ring elements, or None when an entry has a polynomial denominator."""
+    rows = [[field.element(x) for x in row] for row in X.tolist()]
+    if any(not x.denom.is_ground for row in rows for x in row):
+        return None
+    return [[x.numer.quo_ground(x.denom.LC) for x in row] for row in rows]
+
+
+def _minors_of(A: sp.Matrix, factors=None, extra=()) -> _MinorsInRing:
+    """The minors of A: from its factors (W, M, V) when they are polynomial, else from A itself."""
+    if factors is not None:
+        try:
+            return _FactoredMinors(*factors, extra=extra)
+        except ValueError:
+            pass
+    return _MinorsInRing(A, extra)
+
+
+def principal_minors(A: sp.Matrix, factors=None) -> dict[tuple[int, ...], sp.Expr]:
     """det(A_S) for every subset S of the indices (the empty set gives 1), in the canonical form.
+
+    ``factors`` = (M, W, V) with A = W^T M^-1 V (a scene in contact space) gives each minor as
+    one polynomial over det M (see :class:`_FactoredMinors`).
 
     Examples
     --------
@@ -92,22 +222,26 @@ def principal_minors(A: sp.Matrix) -> dict[tuple[int, ...], sp.Expr]:
     >>> a, b, s = sp.Symbol("a"), sp.Symbol("b"), SignSymbol("s")
     >>> principal_minors(sp.Matrix([[a, s], [s, b]]))[(0, 1)]
     a*b - 1
+    >>> M, W, V = sp.Matrix([[2, 1], [1, 1]]), sp.eye(2), sp.Matrix([[a, 0], [0, 1]])
+    >>> principal_minors(W.T * M.inv() * V, (M, W, V))[(0, 1)] == (W.T * M.inv() * V).det()
+    True
     """
-    ring = _MinorsInRing(A)
+    ring = _minors_of(A, factors)
     k = A.rows
     return {
         S: ring.field.present(ring.minor(S)) for size in range(k + 1) for S in itertools.combinations(range(k), size)
     }
 
 
-def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
+def charpoly(A: sp.Matrix, Phi, Psi, positive=(), factors=None) -> sp.Poly:
     """The characteristic polynomial of (4.5) from the principal minors of A.
 
     When the common denominator of its coefficients is not a monomial but has a known sign
     (``positive`` lists expressions known to be positive, e.g. det M of a Lagrangian
     scene), the polynomial is multiplied by it: the same roots, polynomial coefficients.
     The sum is formed in a polynomial ring (A = P / D, the minors of P, then one division by
-    D^k), so nothing is expanded as a SymPy expression.
+    D^k), so nothing is expanded as a SymPy expression; with ``factors`` (see
+    :func:`principal_minors`) every minor is over det M and the sum over det M once.
 
     Examples
     --------
@@ -116,11 +250,11 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
     -Phi*a - Psi*a*lambda + lambda**2
     """
     k = A.rows
-    minors = _MinorsInRing(A, [*Phi, *Psi, lam])
+    minors = _minors_of(A, factors, [*Phi, *Psi, lam])
     field = minors.field
     law = [field.element(x) for x in (*Phi, *Psi)]
     if any(not x.denom.is_ground for x in law):  # a law with fractions at the equilibrium: sum as expressions
-        return _charpoly_of_expression(A, Phi, Psi, positive)
+        return _charpoly_of_expression(A, Phi, Psi, positive, factors)
     phi, psi = law[:k], law[k:]
     ring = field.ring
     x = ring.gens[ring.symbols.index(lam)]
@@ -130,32 +264,70 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
     total = ring.zero
     for size in range(k + 1):
         for S in itertools.combinations(range(k), size):
-            term = minors.det(S, S) * x ** (2 * (k - size)) * D ** (k - size)
+            top = minors.top_power
+            term = minors.numerator(S) * x ** (2 * (k - size)) * D ** (top - minors.power(S))
             for j in range(k):
                 factor = (
                     x * psi[j].numer * phi[j].denom + phi[j].numer * psi[j].denom if j in S else law_denominators[j]
                 )
                 term = field.reduce_poly(term * factor)
             total += -term if size % 2 else term
-    common = D**k
+    common = D**minors.top_power
     for c in law_denominators:
         common *= c
-    fraction = field.fraction(field.field.new(field.reduce_poly(total), common))
-    if fraction.denominator_split()[1] != 1:  # not a monomial: as the expression path does it
-        return _charpoly_of_expression(A, Phi, Psi, positive)
+    fraction = _integral_fraction(field, *_cancelled_in(field.reduce_poly(total), field.reduce_poly(common), x))
+    denominator = fraction.denom
+    if fraction.denominator_split()[1] != 1:  # not a monomial: multiplied out when its sign is known
+        sign = fraction.denominator_sign(positive)
+        if sign is not None:
+            fraction.numer, denominator = fraction.numer * sign, ring.one
     degree = fraction.numer.degree(x)
     coefficients = {
-        (d,): TrigFraction(fraction.numer.coeff_wrt(x, d), fraction.denom, fraction.pairs, fraction.signs).as_expr()
+        (d,): TrigFraction(fraction.numer.coeff_wrt(x, d), denominator, fraction.pairs, fraction.signs).as_expr()
         for d in range(degree + 1)
     }
     return sp.Poly.from_dict({d: c for d, c in coefficients.items() if c != 0}, lam)
 
 
-def _charpoly_of_expression(A: sp.Matrix, Phi, Psi, positive) -> sp.Poly:
+def _integral_fraction(field, numerator, denominator) -> TrigFraction:
+    """numerator / denominator (reduced, cancelled, no sign symbol in the denominator) with integer
+    coprime coefficients and a positive leading denominator coefficient, as TrigField.fraction
+    gives it, without a second gcd of the two."""
+    domain = field.ring.domain
+    scale = 1
+    for c in (*numerator.coeffs(), *denominator.coeffs()):
+        scale = sp.ilcm(scale, int(domain.denom(c)))
+    numerator, denominator = numerator * scale, denominator * scale
+    common = sp.igcd(*[int(domain.numer(c)) for c in (*numerator.coeffs(), *denominator.coeffs())]) or 1
+    numerator, denominator = numerator.quo_ground(domain(common)), denominator.quo_ground(domain(common))
+    if domain.is_negative(denominator.LC):
+        numerator, denominator = -numerator, -denominator
+    return TrigFraction(numerator, denominator, field.pairs, field.signs)
+
+
+def _cancelled_in(numerator, denominator, x) -> tuple:
+    """numerator / denominator cancelled by their gcd, for a numerator that is a polynomial in
+    ``x``: the gcd of the denominator with one coefficient after another (each smaller than the
+    whole numerator), stopping at a number."""
+    common = denominator
+    coefficients = sorted(
+        (numerator.coeff_wrt(x, d) for d in range(max(numerator.degree(x), 0) + 1)), key=lambda c: len(c)
+    )
+    for c in coefficients:
+        if common.is_ground:
+            break
+        if c:
+            common = common.gcd(c)
+    if common.is_ground:
+        return numerator, denominator
+    return numerator.exquo(common), denominator.exquo(common)
+
+
+def _charpoly_of_expression(A: sp.Matrix, Phi, Psi, positive, factors=None) -> sp.Poly:
     """:func:`charpoly` summed as one SymPy expression and brought to the canonical form."""
     k = A.rows
     total = sp.S.Zero
-    for S, minor in principal_minors(A).items():
+    for S, minor in principal_minors(A, factors).items():
         factor = sp.Mul(*[lam * Psi[j] + Phi[j] for j in S])
         total += (-1) ** len(S) * lam ** (2 * (k - len(S))) * minor * factor
     fraction = to_fraction(total)
@@ -221,13 +393,23 @@ class Linearization(LatexReprMixin):
 
     @cached_property
     def A(self) -> sp.Matrix:
+        if self.factors is not None:
+            product = _product_of(*self.factors)
+            if product is not None:
+                return product
         return self.fast.jacobian(self.sign_values).applyfunc(normalize)
 
     @cached_property
     def det_A(self) -> sp.Expr:
         """det A in the canonical form, by fraction-free expansion in a polynomial ring."""
-        minors = _MinorsInRing(self.A)
+        minors = _minors_of(self.A, self.factors)
         return minors.field.present(minors.minor(tuple(range(self.A.rows))))
+
+    @cached_property
+    def factors(self) -> tuple | None:
+        """(M, W, V) with A = W^T M^-1 V for a scene built in contact space, else None."""
+        jacobian_factors = getattr(self.fast, "jacobian_factors", None)
+        return None if jacobian_factors is None else jacobian_factors(self.sign_values)
 
     @cached_property
     def u_star(self) -> dict:
@@ -264,7 +446,7 @@ class Linearization(LatexReprMixin):
     @cached_property
     def charpoly(self) -> sp.Poly:
         log.info("scene '%s': characteristic polynomial (4.6) from %d principal minors", self.fast.name, 2**self.A.rows)
-        return charpoly(self.A, self.Phi, self.Psi, self.fast.positive)
+        return charpoly(self.A, self.Phi, self.Psi, self.fast.positive, self.factors)
 
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:
         """A (4.3), det A, the matrix (4.5) and p(lambda) (4.6); ``present``: in the presentation variables."""

@@ -108,6 +108,7 @@ SCHEMA = MappingProxyType(
             presentation="table",
             count_presentation="table",
             figures="table",
+            values="table",
         ),
         "scene": _table(("coordinates",), name="label", description="text", coordinates="names", solve_for="formula"),
         "parameters": _free("entry"),
@@ -134,6 +135,7 @@ SCHEMA = MappingProxyType(
             ("x", "y", "x_range", "y_range"), x="name", y="name", x_range="numbers", y_range="numbers", values="table"
         ),
         "figures.values": _free("number"),
+        "values": _free("formula"),
     }
 )
 
@@ -341,6 +343,8 @@ class SceneSpec:
     solve_for: sp.Symbol | None = None
     figures: FigurePlan | None = None
     eps: sp.Symbol = sp.Symbol("epsilon", positive=True)
+    #: ``[values]``: parameters fixed at numbers before the derivation (``Scene.with_values``).
+    values: tuple[tuple[sp.Symbol, sp.Expr], ...] = ()
 
     @property
     def lagrangian(self) -> bool:
