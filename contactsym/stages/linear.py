@@ -18,11 +18,11 @@ from functools import cached_property
 import sympy as sp
 
 from ..algebra.basic import PaperSymbol, normalize, sign_symbols
-from ..algebra.canonical_form import TrigField, TrigFraction, to_fraction
-from ..algebra.fraction_free import adjugate_and_det_in_field
+from ..algebra.canonical_form import TrigFraction, to_fraction
 from ..deprecation import deprecated_property
 from ..errors import ContactsymError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering
+from .minors import _cancelled_in, _integral_fraction, minors_of, product_of
 
 __all__ = ["lam", "charpoly", "principal_minors", "Linearization", "linearization_of"]
 
@@ -42,179 +42,11 @@ log = logging.getLogger("contactsym")
 lam = PaperSymbol("lambda")
 
 
-class _MinorsInRing:
-    """A = P / D in the polynomial ring of a :class:`TrigField` (P polynomial, D the common
-    denominator), with the minors det(P_(R, C)) by Laplace expansion, memoized and reduced
-    (s^2 = 1, sin^2 + cos^2 = 1) after every product: exact, no rational-function arithmetic."""
-
-    def __init__(self, A: sp.Matrix, extra=()):
-        self.field = TrigField([*A, *extra])
-        ring = self.field.ring
-        entries = [[self.field.element(x) for x in row] for row in A.tolist()]
-        self.denominator = ring.one
-        for row in entries:
-            for x in row:
-                self.denominator = self.denominator.lcm(x.denom) if not x.denom.is_ground else self.denominator
-        scale = ring.domain.one
-        for row in entries:
-            for x in row:
-                if x.denom.is_ground:
-                    scale = ring.domain.lcm(scale, ring.domain.convert(x.denom.LC))
-        self.denominator = self.denominator * scale
-        self.P = [[x.numer * self.denominator.exquo(x.denom) for x in row] for row in entries]
-        self._cache: dict = {}
-
-    def det(self, rows: tuple, cols: tuple):
-        """det P restricted to ``rows`` and ``cols`` (equal lengths), a reduced ring element."""
-        if not rows:
-            return self.field.ring.one
-        key = (rows, cols)
-        if key not in self._cache:
-            total = self.field.ring.zero
-            for i, c in enumerate(cols):
-                entry = self.P[rows[0]][c]
-                if entry:
-                    term = entry * self.det(rows[1:], cols[:i] + cols[i + 1 :])
-                    total = total + term if i % 2 == 0 else total - term
-            self._cache[key] = self.field.reduce_poly(total)
-        return self._cache[key]
-
-    def minor(self, S: tuple):
-        """det(A_S) as a reduced field element."""
-        return self.field.reduce(self.field.field.new(self.numerator(S), self.denominator ** self.power(S)))
-
-    def numerator(self, S: tuple):
-        """det(A_S) = numerator(S) / denominator^power(S)."""
-        return self.det(S, S)
-
-    def power(self, S: tuple) -> int:
-        return len(S)
-
-    #: The largest power of the denominator a principal minor has.
-    @property
-    def top_power(self) -> int:
-        return len(self.P)
-
-
-class _FactoredMinors(_MinorsInRing):
-    """A = W^T M^-1 V with polynomial M (n x n), W, V (n x k), as a Lagrangian scene's contact
-    space gives it. By the Schur complement, det(A_S) = (-1)^|S| det([[M, V_S], [W_S^T, 0]]) / det M:
-    every principal minor is one polynomial over det M (not over D^|S| for the lcm D of A's
-    denominators, whose cancellation would need a large gcd). The bordered determinants are
-    expanded along the rows of W_S^T and then of M, their sub-determinants memoized and shared
-    between the subsets S (a column of V is the same for every S that holds it)."""
-
-    def __init__(self, M: sp.Matrix, W: sp.Matrix, V: sp.Matrix, extra=()):
-        self.field = TrigField([*M, *W, *V, *extra])
-        self.n, self.k = M.rows, W.cols
-        self.M, self.W, self.V = (self._polynomials(X) for X in (M, W, V))
-        self._cache, self._m_cache = {}, {}
-        self.denominator = self._m_det(0, tuple(range(self.n)))
-
-    def _polynomials(self, X: sp.Matrix) -> list[list]:
-        rows = _polynomial_rows(self.field, X)
-        if rows is None:
-            raise ValueError("a factor of A with a polynomial denominator")
-        return rows
-
-    def _entry(self, row: int, column: int):
-        """Row ``row`` of [M | V] at ``column`` (< n: a column of M; n + j: the column of V of contact j)."""
-        return self.M[row][column] if column < self.n else self.V[row][column - self.n]
-
-    def _m_det(self, level: int, columns: tuple):
-        """det of the rows level.. of [M | V] on ``columns`` (as many as rows are left)."""
-        if level == self.n:
-            return self.field.ring.one
-        key = (level, columns)
-        if key not in self._m_cache:
-            total = self.field.ring.zero
-            for i, c in enumerate(columns):
-                entry = self._entry(level, c)
-                if entry:
-                    term = entry * self._m_det(level + 1, columns[:i] + columns[i + 1 :])
-                    total = total + term if i % 2 == 0 else total - term
-            self._m_cache[key] = self.field.reduce_poly(total)
-        return self._m_cache[key]
-
-    def _bordered(self, S: tuple, level: int, columns: tuple):
-        """det of [[W_S^T, 0], [M, V_S]] from the W-row ``level`` on, on ``columns``."""
-        if level == len(S):
-            return self._m_det(0, columns)
-        key = (S, level, columns)
-        if key not in self._cache:
-            total = self.field.ring.zero
-            for i, c in enumerate(columns):
-                entry = self.W[c][S[level]] if c < self.n else None
-                if entry:
-                    term = entry * self._bordered(S, level + 1, columns[:i] + columns[i + 1 :])
-                    total = total + term if i % 2 == 0 else total - term
-            self._cache[key] = self.field.reduce_poly(total)
-        return self._cache[key]
-
-    def numerator(self, S: tuple):
-        if not S:
-            return self.field.ring.one
-        # [[M, V_S], [W_S^T, 0]] is [[W_S^T, 0], [M, V_S]] with its p rows moved past n: (-1)^(n p)
-        value = self._bordered(S, 0, tuple(range(self.n)) + tuple(self.n + j for j in S))
-        return value if (len(S) + self.n * len(S)) % 2 == 0 else -value
-
-    def power(self, S: tuple) -> int:
-        return 1 if S else 0
-
-    @property
-    def top_power(self) -> int:
-        return 1
-
-    def det(self, rows: tuple, cols: tuple):  # pragma: no cover - the factored form has no P
-        raise NotImplementedError("the factored minors give numerator(S) over det M")
-
-
-def _product_of(M: sp.Matrix, W: sp.Matrix, V: sp.Matrix) -> sp.Matrix | None:
-    """W^T M^-1 V in the canonical form, as W^T adj(M) V / det M in one polynomial ring (each entry
-    cancelled once), or None when a factor is not polynomial."""
-    field = TrigField([*M, *W, *V])
-    adj, det = adjugate_and_det_in_field(field, M)
-    parts = [*[x for row in adj for x in row], det]
-    left, right = (_polynomial_rows(field, X.T) for X in (W, V))
-    if left is None or right is None or any(not x.denom.is_ground for x in parts):
-        return None
-    adj = [[x.numer.quo_ground(x.denom.LC) for x in row] for row in adj]
-    det = det.numer.quo_ground(det.denom.LC)
-    n = M.rows
-    adj_v = [
-        [field.reduce_poly(sum((adj[r][c] * v[c] for c in range(n)), field.ring.zero)) for r in range(n)] for v in right
-    ]
-
-    def entry(i, j):
-        numerator = field.reduce_poly(sum((left[i][r] * adj_v[j][r] for r in range(n)), field.ring.zero))
-        return normalize(field.present(field.field.new(numerator, det)))
-
-    return sp.Matrix(W.cols, V.cols, entry)
-
-
-def _polynomial_rows(field, X: sp.Matrix) -> list[list] | None:
-    """The rows of X as ring elements, or None when an entry has a polynomial denominator."""
-    rows = [[field.element(x) for x in row] for row in X.tolist()]
-    if any(not x.denom.is_ground for row in rows for x in row):
-        return None
-    return [[x.numer.quo_ground(x.denom.LC) for x in row] for row in rows]
-
-
-def _minors_of(A: sp.Matrix, factors=None, extra=()) -> _MinorsInRing:
-    """The minors of A: from its factors (W, M, V) when they are polynomial, else from A itself."""
-    if factors is not None:
-        try:
-            return _FactoredMinors(*factors, extra=extra)
-        except ValueError:
-            pass
-    return _MinorsInRing(A, extra)
-
-
 def principal_minors(A: sp.Matrix, factors=None) -> dict[tuple[int, ...], sp.Expr]:
     """det(A_S) for every subset S of the indices (the empty set gives 1), in the canonical form.
 
     ``factors`` = (M, W, V) with A = W^T M^-1 V (a scene in contact space) gives each minor as
-    one polynomial over det M (see :class:`_FactoredMinors`).
+    one polynomial over det M (see :class:`~contactsym.stages.minors.FactoredMinors`).
 
     Examples
     --------
@@ -226,7 +58,7 @@ def principal_minors(A: sp.Matrix, factors=None) -> dict[tuple[int, ...], sp.Exp
     >>> principal_minors(W.T * M.inv() * V, (M, W, V))[(0, 1)] == (W.T * M.inv() * V).det()
     True
     """
-    ring = _minors_of(A, factors)
+    ring = minors_of(A, factors)
     k = A.rows
     return {
         S: ring.field.present(ring.minor(S)) for size in range(k + 1) for S in itertools.combinations(range(k), size)
@@ -238,7 +70,8 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=(), factors=None) -> sp.Poly:
 
     When the common denominator of its coefficients is not a monomial but has a known sign
     (``positive`` lists expressions known to be positive, e.g. det M of a Lagrangian
-    scene), the polynomial is multiplied by it: the same roots, polynomial coefficients.
+    scene), the polynomial is multiplied by it: the same roots, polynomial coefficients;
+    with an unknown sign each coefficient stays over it.
     The sum is formed in a polynomial ring (A = P / D, the minors of P, then one division by
     D^k), so nothing is expanded as a SymPy expression; with ``factors`` (see
     :func:`principal_minors`) every minor is over det M and the sum over det M once.
@@ -250,7 +83,7 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=(), factors=None) -> sp.Poly:
     -Phi*a - Psi*a*lambda + lambda**2
     """
     k = A.rows
-    minors = _minors_of(A, factors, [*Phi, *Psi, lam])
+    minors = minors_of(A, factors, [*Phi, *Psi, lam])
     field = minors.field
     law = [field.element(x) for x in (*Phi, *Psi)]
     if any(not x.denom.is_ground for x in law):  # a law with fractions at the equilibrium: sum as expressions
@@ -287,40 +120,6 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=(), factors=None) -> sp.Poly:
         for d in range(degree + 1)
     }
     return sp.Poly.from_dict({d: c for d, c in coefficients.items() if c != 0}, lam)
-
-
-def _integral_fraction(field, numerator, denominator) -> TrigFraction:
-    """numerator / denominator (reduced, cancelled, no sign symbol in the denominator) with integer
-    coprime coefficients and a positive leading denominator coefficient, as TrigField.fraction
-    gives it, without a second gcd of the two."""
-    domain = field.ring.domain
-    scale = 1
-    for c in (*numerator.coeffs(), *denominator.coeffs()):
-        scale = sp.ilcm(scale, int(domain.denom(c)))
-    numerator, denominator = numerator * scale, denominator * scale
-    common = sp.igcd(*[int(domain.numer(c)) for c in (*numerator.coeffs(), *denominator.coeffs())]) or 1
-    numerator, denominator = numerator.quo_ground(domain(common)), denominator.quo_ground(domain(common))
-    if domain.is_negative(denominator.LC):
-        numerator, denominator = -numerator, -denominator
-    return TrigFraction(numerator, denominator, field.pairs, field.signs)
-
-
-def _cancelled_in(numerator, denominator, x) -> tuple:
-    """numerator / denominator cancelled by their gcd, for a numerator that is a polynomial in
-    ``x``: the gcd of the denominator with one coefficient after another (each smaller than the
-    whole numerator), stopping at a number."""
-    common = denominator
-    coefficients = sorted(
-        (numerator.coeff_wrt(x, d) for d in range(max(numerator.degree(x), 0) + 1)), key=lambda c: len(c)
-    )
-    for c in coefficients:
-        if common.is_ground:
-            break
-        if c:
-            common = common.gcd(c)
-    if common.is_ground:
-        return numerator, denominator
-    return numerator.exquo(common), denominator.exquo(common)
 
 
 def _charpoly_of_expression(A: sp.Matrix, Phi, Psi, positive, factors=None) -> sp.Poly:
@@ -394,7 +193,7 @@ class Linearization(LatexReprMixin):
     @cached_property
     def A(self) -> sp.Matrix:
         if self.factors is not None:
-            product = _product_of(*self.factors)
+            product = product_of(*self.factors)
             if product is not None:
                 return product
         return self.fast.jacobian(self.sign_values).applyfunc(normalize)
@@ -402,7 +201,7 @@ class Linearization(LatexReprMixin):
     @cached_property
     def det_A(self) -> sp.Expr:
         """det A in the canonical form, by fraction-free expansion in a polynomial ring."""
-        minors = _minors_of(self.A, self.factors)
+        minors = minors_of(self.A, self.factors)
         return minors.field.present(minors.minor(tuple(range(self.A.rows))))
 
     @cached_property
