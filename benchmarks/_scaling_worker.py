@@ -1,16 +1,26 @@
-"""One cold derivation of a mechanism in a fresh process: ``python -m benchmarks._scaling_worker MODE TARGET``.
+"""One cold derivation of a mechanism in a fresh process: ``python benchmarks/_scaling_worker.py MODE TARGET``.
 
-MODE is ``ours`` (the contact-space derivation) or ``naive`` (today's way before it: the
-accelerations by LU solve of the symbolic mass matrix, each expanded, then the same stages
-with expand-based normalization). TARGET is ``chain-N``, ``stepladder`` or a built-in scene.
-Prints one JSON line: seconds from scene to stability, and operation counts.
+MODE is ``ours`` (the contact-space derivation of the contactsym on the path) or ``naive``
+(the way before it: the accelerations by LU solve of the symbolic mass matrix, each expanded,
+then the same stages with expand-based normalization). Run with another contactsym first on
+``PYTHONPATH`` (an older checkout), ``ours`` measures that one: the benchmark's baseline.
+TARGET is ``chain-N`` (point masses, one tip contact, the built-in chain), ``stepladder``, a
+built-in scene, ``arm`` (examples/four-link-arm.toml) or ``links-N-C-KIND`` (a scene file
+written here: N links of KIND ``rods`` or ``points``, C = 1..3 contacts); a suffix ``-fixed``
+fixes every mass and length at 1 (``Scene.with_values`` where it exists, else the numbers
+written into the file). Prints one JSON line: seconds from scene to Hurwitz conditions and
+robust classification, and operation counts.
 """
 
 from __future__ import annotations
 
 import json
+import re
 import sys
 import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
 
 
 def _expand_normalize(expr):
@@ -42,7 +52,85 @@ def _use_the_naive_way() -> None:
     assert cs.Scene is Scene
 
 
+def chain_file(n: int, contacts: int, kind: str) -> str:
+    """A scene file: n links pinned at the origin at angles q_i from the downward vertical, as
+    uniform rods or as point masses at the joints; the tip slides in +x on a rough floor, and
+    for contacts 2 and 3 the joints ceil(n/2) and 1 (or 2) slide up rough walls x = w_2, w_3."""
+    if not 1 <= contacts <= min(3, n):
+        raise ValueError(f"{contacts} contacts on {n} links")
+    rods = kind == "rods"
+    q = [f"q{i}" for i in range(1, n + 1)]
+
+    def joint(j, half=False):  # the joint at the end of link j (or the middle of link j)
+        x = " + ".join(f"l{i}*sin(q{i})" + ("/2" if half and i == j else "") for i in range(1, j + 1))
+        y = " - ".join(f"l{i}*cos(q{i})" + ("/2" if half and i == j else "") for i in range(1, j + 1))
+        return x, "-" + y
+
+    lines = ["[scene]", f'name = "links-{n}-{contacts}-{kind}"', f"coordinates = {json.dumps(q)}", "[parameters]"]
+    names = [f"m{i}" for i in range(1, n + 1)] + [f"l{i}" for i in range(1, n + 1)] + ["g", "h"]
+    names += [f"w{c}" for c in range(2, contacts + 1)] + [f"mu_{c}" for c in range(1, contacts + 1)]
+    lines += [f'{name} = "positive"' for name in names]
+    lines.append("[points]")
+    for j in range(1, n + 1):
+        x, y = joint(j)
+        lines.append(f'P{j} = ["{x}", "{y}"]')
+        if rods:
+            x, y = joint(j, half=True)
+            lines.append(f'C{j} = ["{x}", "{y}"]')
+    for j in range(1, n + 1):
+        if rods:
+            lines += [
+                "[[bodies]]",
+                f'point = "C{j}"',
+                f'angle = "q{j}"',
+                f'mass = "m{j}"',
+                f'inertia = "m{j}*l{j}^2/12"',
+            ]
+        else:
+            lines += ["[[masses]]", f'point = "P{j}"', f'mass = "m{j}"']
+    height = [f"m{j}*g*({joint(j, half=rods)[1]})" for j in range(1, n + 1)]
+    lines += ["[energy]", f'potential = "{" + ".join(height)}"']
+    tip_y = joint(n)[1]
+    lines += ["[[contacts]]", f'gap = "h + ({tip_y})"', 'reaction = "N_1"', "unilateral = true"]
+    lines.append(f'friction = {{ mu = "mu_1", point = "P{n}", direction = ["1", "0"] }}')
+    at = [f'h = "-({tip_y})"']
+    for c, j in zip(range(2, contacts + 1), [(n + 1) // 2, 1 if (n + 1) // 2 != 1 else 2]):
+        x = joint(j)[0]
+        lines += ["[[contacts]]", f'gap = "w{c} - ({x})"', f'reaction = "N_{c}"', "unilateral = true"]
+        lines.append(f'friction = {{ mu = "mu_{c}", point = "P{j}", direction = ["0", "1"] }}')
+        at.append(f'w{c} = "{x}"')
+    return "\n".join(lines + ["[at]", *at]) + "\n"
+
+
+def _numbers_written_in(text: str, names: list[str]) -> str:
+    """The file with each name replaced by 1 in its formulas and dropped from [parameters]."""
+    head, rest = text.split("[points]", 1)
+    for name in names:
+        head = re.sub(rf'^{name} = "positive"\n', "", head, flags=re.M)
+        rest = re.sub(rf"\b{name}\b", "1", rest)
+    return head + "[points]" + rest
+
+
 def build(target: str):
+    fixed = target.endswith("-fixed")
+    target = target.removesuffix("-fixed")
+    if target == "arm" or target.startswith("links-"):
+        from contactsym.mechanism.files import read_scene
+
+        if target == "arm":
+            text, n = (ROOT / "examples" / "four-link-arm.toml").read_text(), 4
+        else:
+            _, n, contacts, kind = target.split("-")
+            n = int(n)
+            text = chain_file(n, int(contacts), kind)
+        names = [f"{p}{i}" for p in "ml" for i in range(1, n + 1)]
+        if not fixed:
+            return read_scene(text, f"{target}.toml")
+        if "[values]" in (ROOT / "contactsym" / "mechanism" / "files" / "spec.py").read_text() and hasattr(
+            __import__("contactsym").Scene, "with_values"
+        ):
+            return read_scene(text, f"{target}.toml").with_values(dict.fromkeys(names, 1))
+        return read_scene(_numbers_written_in(text, names), f"{target}.toml")
     if target.startswith("chain-"):
         from contactsym.scenes.link_chain import build_chain
 
@@ -71,11 +159,13 @@ def main(argv: list[str]) -> int:
     lin = scene.linearization()
     st = scene.stability()
     conditions = st.hurwitz
+    hurwitz_s = time.perf_counter() - started
     claims = (st.robustly_stable, st.robustly_unstable)
     seconds = time.perf_counter() - started
     info = {
         "seconds": seconds,
-        "ops_f": int(sp.count_ops(scene.fast_subsystem().f)),
+        "hurwitz_s": hurwitz_s,
+        "ops_f": int(sp.count_ops(scene.fast_subsystem().f)) if not target.startswith(("arm", "links")) else None,
         "ops_A": int(sp.count_ops(lin.A)),
         "ops_hurwitz": int(sum(sp.count_ops(c) for c in conditions)),
         "claims": len(claims),
@@ -85,4 +175,5 @@ def main(argv: list[str]) -> int:
 
 
 if __name__ == "__main__":
+    sys.path.insert(0, str(Path.cwd()))  # run as a file: the contactsym of the working directory first
     sys.exit(main(sys.argv[1:]))

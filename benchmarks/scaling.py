@@ -8,16 +8,81 @@ with a time limit; a naive run that does not finish is reported as "did not fini
 Cases: n-link chains with a frictional tip contact (n = 1..6), the stepladder (4 coordinates,
 3 contacts), the paper's Lagrangian scenes. Reported: wall time from scene to Hurwitz
 conditions and robust classification, and the operation counts of f, A and the conditions.
+
+The mechanism table (:func:`mechanism_table`): chains of 1..6 links with 1..3 contacts,
+rods and point masses, fully symbolic and partly numeric (masses and lengths fixed), and
+the four-link, two-contact arm of ``examples/four-link-arm.toml``, against today's pipeline
+(a checkout named by the environment variable ``CONTACTSYM_BASELINE``).
 """
 
 from __future__ import annotations
 
+import json
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 from . import fresh_process, record
 
 ROOT = Path(__file__).resolve().parent.parent
-TARGETS = {"chain n=6": 60.0, "chain n=3": 10.0, "stepladder": 30.0}
+TARGETS = {
+    "chain n=6": 60.0,
+    "chain n=3": 10.0,
+    "stepladder": 30.0,
+    "arm": 30.0,
+    "arm-fixed": 5.0,
+    "links-6-2-rods": 120.0,
+    "links-6-2-points": 120.0,
+    "links-6-3-rods-fixed": 60.0,
+    "links-6-3-points-fixed": 60.0,
+}
+#: A checkout of today's pipeline to compare the mechanism table against (e.g. made by
+#: ``git worktree add /tmp/base main``); without it the table has no baseline column.
+BASELINE = os.environ.get("CONTACTSYM_BASELINE")
+
+
+def _in_tree(tree: Path, target: str, timeout: float) -> dict | None:
+    """The worker file of this checkout run in a fresh process on the contactsym of ``tree``."""
+    env = dict(os.environ, PYTHONPATH=str(tree))
+    command = [sys.executable, str(Path(__file__).parent / "_scaling_worker.py"), "ours", target]
+    try:
+        done = subprocess.run(command, cwd=tree, env=env, capture_output=True, text=True, timeout=timeout, check=True)
+    except (subprocess.TimeoutExpired, subprocess.CalledProcessError):
+        return None
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+def mechanism_table(quick: bool) -> list[dict]:
+    """Chains of 1..6 links with 1..3 contacts (rods and point masses, fully symbolic and with every
+    mass and length fixed) and the four-link, two-contact arm: scene to Hurwitz conditions and
+    robust classification, each in a fresh process with a time limit, against ``BASELINE``."""
+    limit, base_limit = (60.0, 30.0) if quick else (300.0, 300.0)
+    if quick:
+        targets = ["arm-fixed", "links-2-2-rods", "links-3-2-points-fixed"]
+    else:
+        targets = ["arm", "arm-fixed"] + [
+            f"links-{n}-{c}-{kind}{suffix}"
+            for n in range(1, 7)
+            for c in range(1, min(3, n) + 1)
+            for kind in ("rods", "points")
+            for suffix in ("", "-fixed")
+        ]
+    records = []
+    for target in targets:
+        ours = _in_tree(ROOT, target, limit)
+        base = _in_tree(Path(BASELINE), target, base_limit) if BASELINE else None
+        ours_s = ours["seconds"] if ours else limit
+        base_s = (base["seconds"] if base else base_limit) if BASELINE else None
+        notes = [
+            f"ours: Hurwitz {ours['hurwitz_s']:.1f} s, ops A {ours['ops_A']}" if ours else f"ours: not in {limit:.0f} s"
+        ]
+        if BASELINE:
+            notes.append(f"baseline: {base['seconds']:.1f} s" if base else f"baseline: not in {base_limit:.0f} s")
+        if target in TARGETS:
+            notes.append(f"target < {TARGETS[target]:.0f} s")
+        records.append(record(f"mechanisms/{target}", ours_s, base_s, None, None, "; ".join(notes)))
+    return records
 
 
 def _worker(mode: str, target: str, timeout: float) -> dict | None:
@@ -56,7 +121,7 @@ def run(quick: bool, out_dir) -> list[dict]:
         records.append(record(f"scaling/{label}", ours_s, naive_s, None, size, notes))
         rows.append((label, size, o, n, ours_s, naive_s))
     _plot(out_dir, [r for r in rows if r[0].startswith("chain")], naive_limit)
-    return records
+    return records + mechanism_table(quick)
 
 
 def _plot(out_dir, rows, naive_limit):

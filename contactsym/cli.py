@@ -5,10 +5,10 @@ SCENE is a built-in scene's name or the path of a scene file (``my.toml``, see
 
 The commands::
 
-    contactsym [show] [SCENE]            the derivation chain of a scene, as text
+    contactsym [show] [SCENE] [--set NAME=VALUE ...]  the derivation chain of a scene, as text
     contactsym list                      the built-in scenes
-    contactsym conditions SCENE --format text|latex|json [--signs +1,-1]
-    contactsym report [SCENE ...] --out DIR [--no-pdf] [--force] [--resolution N] [--dpi N]
+    contactsym conditions SCENE --format text|latex|json [--signs +1,-1] [--set NAME=VALUE ...]
+    contactsym report [SCENE ...] --out DIR [--no-pdf] [--force] [--resolution N] [--dpi N] [--set NAME=VALUE ...]
                                              a LaTeX/PDF report per scene, figures and conditions.json
     contactsym bench [--quick] [--out DIR] [--json FILE] the benchmarks (from a source checkout)
     contactsym atlas SCENE QUANTITY --grid NAME=START:STOP:COUNT [--scheduler ADDRESS] [--out FILE.nc]
@@ -19,6 +19,10 @@ Caps on what a scene file may cost (its size, its number of contacts, ...: the f
 :data:`contactsym.parse.CAPS`) refuse a file beyond them, naming the cap. ``--limit CAP=N``,
 before or after the command and as often as needed, raises one for this run, e.g.
 ``contactsym --limit max_degree=64 --limit max_contacts=8 report big.toml``.
+
+``--set m1=1 --set l1=1/2`` fixes parameters at numbers before the derivation (a partly
+numeric scene, :meth:`contactsym.Scene.with_values`); the value is read by the package's
+formula parser (numbers only, never evaluated as Python).
 
 Output directories are written all or nothing (:mod:`contactsym.atomic`): a report or
 benchmark directory appears whole or not at all, and one that contactsym did not write
@@ -48,7 +52,7 @@ from .errors import ContactsymError, SceneError, SignPatternError
 from .mechanism.files.reader import scene_or_file
 from .mechanism.files.spec import Limits, file_limits
 from .mechanism.scene import Scene
-from .parse import CAPS, ParseError, formula_caps
+from .parse import CAPS, ParseError, formula_caps, parse_expression
 from .scenes import DEFAULT_SCENE, scene, scene_names
 from .validate import cut, path_text, shorten
 
@@ -243,12 +247,14 @@ def _parser() -> argparse.ArgumentParser:
     show = sub.add_parser("show", help="print the derivation chain of a scene")
     _add_limit(show, "command_limits")
     show.add_argument("scene", nargs="?", default=DEFAULT_SCENE, help=f"one of {names}")
+    _add_set(show)
     sub.add_parser("list", help="list the built-in scenes")
     cond = sub.add_parser("conditions", help="print a scene's stability conditions and regions")
     _add_limit(cond, "command_limits")
     cond.add_argument("scene", help=f"one of {names}")
     cond.add_argument("--format", choices=("text", "latex", "json"), default="text", help="output format")
     cond.add_argument("--signs", help="one sign pattern of the switching functions, e.g. +1,-1")
+    _add_set(cond)
     report = sub.add_parser("report", help="write a LaTeX/PDF report per scene, with figures and conditions.json")
     _add_limit(report, "command_limits")
     report.add_argument("scenes", nargs="*", metavar="SCENE", help=f"scenes to report (default: all of {names})")
@@ -264,6 +270,7 @@ def _parser() -> argparse.ArgumentParser:
         help="grid points per axis of the region maps (default: 400 for the paper's figures, 200 otherwise)",
     )
     report.add_argument("--dpi", type=_positive_int, metavar="N", help="dots per inch of the figures (default: 150)")
+    _add_set(report)
     bench = sub.add_parser("bench", help="run the benchmarks (source checkout); table and plots in --out")
     bench.add_argument("--quick", action="store_true", help="smaller sweeps, under 3 minutes")
     bench.add_argument("--json", metavar="FILE", type=_path, help="write the records as a JSON list to FILE")
@@ -278,6 +285,48 @@ def _parser() -> argparse.ArgumentParser:
 
     add_atlas_command(sub)
     return parser
+
+
+def _add_set(command) -> None:
+    command.add_argument(
+        "--set",
+        dest="values",
+        action="append",
+        type=parse_setting,
+        default=[],
+        metavar="NAME=VALUE",
+        help="fix a parameter at a number before the derivation (repeat it: --set m1=1 --set l1=0.5)",
+    )
+
+
+def parse_setting(text: str) -> tuple[str, sp.Expr]:
+    """``NAME=VALUE`` from the command line: a name and an exact number (the formula parser reads
+    the value with no names declared, so only numbers, pi and functions of them pass).
+
+    Examples
+    --------
+    >>> parse_setting("m1=1/2"), parse_setting("l = 0.1")
+    (('m1', 1/2), ('l', 1/10))
+    >>> parse_setting("m1")
+    Traceback (most recent call last):
+    ...
+    argparse.ArgumentTypeError: 'm1' is not NAME=VALUE; write e.g. --set m1=1.5
+    """
+    name, equals, value = text.partition("=")
+    name = name.strip()
+    if not equals or not name.isidentifier():
+        raise argparse.ArgumentTypeError(f"{cut(text)!r} is not NAME=VALUE; write e.g. --set m1=1.5")
+    try:
+        number = parse_expression(value.strip(), {}, source="--set")
+    except ParseError as error:
+        raise argparse.ArgumentTypeError(f"--set {cut(name)}: {error}") from None
+    if not (number.is_real and number.is_finite):
+        raise argparse.ArgumentTypeError(f"--set {cut(name)}: {cut(value)!r} is not a finite real number")
+    return name, number
+
+
+def _with_values(s: Scene, values: list) -> Scene:
+    return s.with_values(dict(values)) if values else s
 
 
 def _positive_int(text: str) -> int:
@@ -302,12 +351,18 @@ def _progress(message: str) -> None:
 
 
 def _report(
-    names: list[str], out: str, pdf: bool, force: bool = False, resolution: int | None = None, dpi: int | None = None
+    names: list[str],
+    out: str,
+    pdf: bool,
+    force: bool = False,
+    resolution: int | None = None,
+    dpi: int | None = None,
+    values: list = (),
 ) -> int:
     from .report import FigureSource, ReportError, conditions, summary_text, write_report  # brings matplotlib
 
     names = names or scene_names()
-    scenes = [scene_or_file(name) for name in names]  # unknown names and bad files fail before any work
+    scenes = [_with_values(scene_or_file(name), values) for name in names]  # bad input fails before any work
     seen: dict = {}
     for name, s in zip(names, scenes):
         if seen.setdefault(s.name, name) != name:
@@ -345,10 +400,10 @@ def _report(
     return 0
 
 
-def _conditions(name: str, fmt: str, signs: str | None) -> int:
+def _conditions(name: str, fmt: str, signs: str | None, values: list = ()) -> int:
     from .report import conditions  # the report brings matplotlib, which only the report commands need
 
-    s = scene_or_file(name)
+    s = _with_values(scene_or_file(name), values)
     pattern = None if signs is None else s.check_signs(parse_signs(signs))
     data = conditions(s, pattern)
     if fmt == "json":
@@ -447,17 +502,25 @@ def _run(args) -> int:
         return 0
     if args.command == "report":
         return _report(
-            args.scenes, args.out, pdf=not args.no_pdf, force=args.force, resolution=args.resolution, dpi=args.dpi
+            args.scenes,
+            args.out,
+            pdf=not args.no_pdf,
+            force=args.force,
+            resolution=args.resolution,
+            dpi=args.dpi,
+            values=args.values,
         )
     if args.command == "conditions":
-        return _conditions(args.scene, args.format, args.signs)
+        return _conditions(args.scene, args.format, args.signs, args.values)
     if args.command == "bench":
         return _bench(args.quick, args.json, args.out, args.force)
     if args.command == "atlas":
         from .atlas.cli import run_atlas  # Dask and xarray, only when the atlas runs
 
         return run_atlas(args)
-    print(derivation_chain(getattr(args, "scene", DEFAULT_SCENE)))
+    name = getattr(args, "scene", DEFAULT_SCENE)
+    values = getattr(args, "values", [])
+    print(derivation_chain(_with_values(scene_or_file(name), values) if values else name))
     return 0
 
 

@@ -217,3 +217,25 @@ def test_a_bad_limit_is_a_usage_error(capsys, option):
     assert main(["--limit", option, "list"]) == 2
     error = capsys.readouterr().err
     assert "--limit" in error and "\n" not in error.strip()
+
+
+def test_set_fixes_parameters_before_the_derivation(capsys):
+    code, out, err = run(capsys, "show", "brake", "--set", "m=2", "--set", "J=0.5")
+    assert code == 0, err
+    assert "(fixed: m = 2, J = 1/2)" in out.splitlines()[0]
+    assert str(cs.scene("brake").with_values({"m": 2, "J": 0.5}).linearization().A.tolist()) in out
+
+
+@pytest.mark.parametrize(
+    "setting, message",
+    [
+        ("m", "is not NAME=VALUE"),
+        ("m=x", "unknown name 'x'"),
+        ("m=__import__", "unexpected character"),
+        ("q=1", "'q' is not a parameter"),
+        ("m=-1", "declared positive"),
+    ],
+)
+def test_a_bad_set_is_a_usage_error(capsys, setting, message):
+    code, _, err = run(capsys, "conditions", "brake", "--set", setting)
+    assert code == 2 and message in err

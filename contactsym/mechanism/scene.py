@@ -36,6 +36,7 @@ from ..validate import lagrangian_parts, scene_options, scene_parts, shorten, si
 from .checks import check_eps, check_equations, check_inertia, check_scene, user_names, with_friction
 from .contact import Contact, contact_manifold, frozen_symbol, plain_symbol
 from .contact_space import contact_space, mass_determinant, t
+from .fixed_values import checked_values, substituted
 
 __all__ = ["Contact", "Scene", "paper_equations", "plain_symbol", "t"]
 
@@ -189,6 +190,42 @@ class Scene(LatexReprMixin):
         check_scene(self, parameters)
         #: How the masses and inertias were found positive: 'proved', 'sampled' or 'unchecked'.
         self.inertia = check_inertia(self)
+        #: The parameters fixed at numbers by :meth:`with_values`, {Symbol: number} (empty: none).
+        self.fixed_values: dict = {}
+
+    def with_values(self, values: dict) -> Scene:
+        """A new scene with some parameters fixed at exact numbers before the derivation.
+
+        ``values`` maps parameters (symbols or their names) to finite real numbers; a float is
+        read as the decimal it prints. Every stage of the new scene is derived from the
+        substituted input, so it is smaller (masses and lengths fixed, angles and friction
+        symbolic is the usual case). The new scene's ``fixed_values`` lists what was fixed.
+        See :mod:`contactsym.mechanism.fixed_values` for the checks (a name that is not a
+        parameter, a value against a declared sign or interval: a SceneError).
+
+        Examples
+        --------
+        >>> import contactsym as cs
+        >>> brake = cs.scene("brake").with_values({"m": 2, "J": 0.5, "r": 1})
+        >>> brake.fixed_values
+        {m: 2, J: 1/2, r: 1}
+        >>> brake.linearization().A[0, 1]
+        mu*sin(alpha)/2 - cos(alpha)/2
+        >>> try:
+        ...     cs.scene("brake").with_values({"x": 1})
+        ... except cs.SceneError as error:
+        ...     print(str(error).split(";")[0])
+        'x' is not a parameter of the scene 'brake'
+        """
+        fixed = checked_values(self, values)
+        scene = Scene(**substituted(self, fixed))
+        scene.fixed_values = {**self.fixed_values, **fixed}
+        return scene
+
+    @property
+    def declared_positive(self) -> tuple:
+        """The expressions declared positive (``positive=``, a file's intervals), on plain symbols."""
+        return self._declared_positive
 
     # --- construction ------------------------------------------------------------
 

@@ -161,12 +161,31 @@ def contact_accelerations(scene, u, *, load: bool) -> list[sp.Expr]:
         h = sp.Matrix([place(sp.diff(g, t, 2).subs(second)) for g in scene.gaps])
         (b,) = solve_fraction_free(M, [space.F.applyfunc(place)], W, substitution=rates, offsets=[h])
         return b
+    return reaction_part(*reaction_factors(scene, u))
+
+
+def reaction_part(M, W, loads, multipliers) -> list[sp.Expr]:
+    """G u + H phi(u) = W^T M^-1 L m(u) from the factors of :func:`reaction_factors`."""
+    columns = solve_fraction_free(M, [loads[:, c] for c in range(loads.cols)], W)
+    return [sp.Add(*[c[i] * w for c, w in zip(columns, multipliers)]) for i in range(W.cols)]
+
+
+def reaction_factors(scene, u) -> tuple[sp.Matrix, sp.Matrix, sp.Matrix, list]:
+    """(M, W, L, m(u)) on the contact manifold: the reaction part of f is W^T M^-1 L m(u), with the
+    columns of L the gap gradients and the friction directions and m(u) = (u, phi(u)). The
+    linearization keeps A = W^T M^-1 L dm/du in these factors (its minors need no division)."""
+    space = scene.contact_space
+    rate_symbols = {scene.frozen_symbols[sp.diff(q, t)] for q in scene.coordinates}
+    positions = {k: v for k, v in scene.manifold.items() if k not in rate_symbols}
+
+    def place(expr):
+        return scene.plain(expr).subs(positions)
+
     frozen = [term for term in space.friction if term is not None]
-    loads = [space.W[:, j] for j in range(scene.k)] + [term[0] for term in frozen]
-    columns = solve_fraction_free(M, [x.applyfunc(place) for x in loads], W)
+    loads = sp.Matrix.hstack(*[space.W[:, j] for j in range(scene.k)], *[term[0] for term in frozen])
     to_u = dict(zip(scene.reactions, u))
     multipliers = [*u] + [scene.freeze(term[1]).subs(to_u) for term in frozen]
-    return [sp.Add(*[c[i] * w for c, w in zip(columns, multipliers)]) for i in range(scene.k)]
+    return space.M.applyfunc(place), space.W.applyfunc(place), loads.applyfunc(place), multipliers
 
 
 @checked
@@ -370,9 +389,17 @@ class FastSubsystem(LatexReprMixin):
     @cached_property
     def _reaction_part(self) -> list | None:
         """G u + H phi(u) of a Lagrangian scene (see :func:`contact_accelerations`), else None."""
+        if self.reaction_factors is None:
+            return None
+        log.info("scene '%s': contact space, the %d x %d Delassus matrix", self.name, self.k, self.k)
+        return reaction_part(*self.reaction_factors)
+
+    @cached_property
+    def reaction_factors(self) -> tuple | None:
+        """(M, W, L, m(u)) of :func:`reaction_factors` for a scene in contact space, else None."""
         if self.scene.contact_space is None:
             return None
-        return contact_accelerations(self.scene, self.u, load=False)
+        return reaction_factors(self.scene, self.u)
 
     @cached_property
     def _depends_on_u(self) -> sp.Matrix:
@@ -424,6 +451,16 @@ class FastSubsystem(LatexReprMixin):
         )
         piece = self._depends_on_u.applyfunc(lambda e: on_piece(e, self.switching, signs, self.u))
         return piece.jacobian(self.u)
+
+    def jacobian_factors(self, signs) -> tuple[sp.Matrix, sp.Matrix, sp.Matrix] | None:
+        """(M, W, V) with df/du = W^T M^-1 V on the piece of a sign pattern, for a scene built in
+        contact space (else None): the mass matrix and the gap gradients on the manifold, and V
+        the loads times d(u, phi(u))/du."""
+        if self.reaction_factors is None:
+            return None
+        M, W, loads, multipliers = self.reaction_factors
+        piece = sp.Matrix([on_piece(m, self.switching, signs, self.u) for m in multipliers])
+        return M, W, loads * piece.jacobian(self.u)
 
     @checked(signs="Sequence[sp.Expr]")
     def roots(self, signs) -> list[tuple]:

@@ -18,11 +18,12 @@ from functools import cached_property
 import sympy as sp
 
 from ..algebra.basic import PaperSymbol, normalize, sign_symbols
-from ..algebra.canonical_form import TrigField, TrigFraction, to_fraction
+from ..algebra.canonical_form import TrigFraction, to_fraction
 from ..arguments import checked
 from ..deprecation import deprecated_property
 from ..errors import ContactsymError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering
+from .minors import _cancelled_in, _integral_fraction, minors_of, product_of
 
 __all__ = ["lam", "charpoly", "principal_minors", "Linearization", "linearization_of"]
 
@@ -46,51 +47,12 @@ log = logging.getLogger("contactsym")
 lam = PaperSymbol("lambda")
 
 
-class _MinorsInRing:
-    """A = P / D in the polynomial ring of a :class:`TrigField` (P polynomial, D the common
-    denominator), with the minors det(P_(R, C)) by Laplace expansion, memoized and reduced
-    (s^2 = 1, sin^2 + cos^2 = 1) after every product: exact, no rational-function arithmetic."""
-
-    def __init__(self, A: sp.Matrix, extra=()):
-        self.field = TrigField([*A, *extra])
-        ring = self.field.ring
-        entries = [[self.field.element(x) for x in row] for row in A.tolist()]
-        self.denominator = ring.one
-        for row in entries:
-            for x in row:
-                self.denominator = self.denominator.lcm(x.denom) if not x.denom.is_ground else self.denominator
-        scale = ring.domain.one
-        for row in entries:
-            for x in row:
-                if x.denom.is_ground:
-                    scale = ring.domain.lcm(scale, ring.domain.convert(x.denom.LC))
-        self.denominator = self.denominator * scale
-        self.P = [[x.numer * self.denominator.exquo(x.denom) for x in row] for row in entries]
-        self._cache: dict = {}
-
-    def det(self, rows: tuple, cols: tuple):
-        """det P restricted to ``rows`` and ``cols`` (equal lengths), a reduced ring element."""
-        if not rows:
-            return self.field.ring.one
-        key = (rows, cols)
-        if key not in self._cache:
-            total = self.field.ring.zero
-            for i, c in enumerate(cols):
-                entry = self.P[rows[0]][c]
-                if entry:
-                    term = entry * self.det(rows[1:], cols[:i] + cols[i + 1 :])
-                    total = total + term if i % 2 == 0 else total - term
-            self._cache[key] = self.field.reduce_poly(total)
-        return self._cache[key]
-
-    def minor(self, S: tuple):
-        """det(A_S) as a reduced field element."""
-        return self.field.reduce(self.field.field.new(self.det(S, S), self.denominator ** len(S)))
-
-
 @checked
-def principal_minors(A: sp.Matrix) -> dict[tuple[int, ...], sp.Expr]:
+def principal_minors(A: sp.Matrix, factors=None) -> dict[tuple[int, ...], sp.Expr]:
     """det(A_S) for every subset S of the indices (the empty set gives 1), in the canonical form.
+
+    ``factors`` = (M, W, V) with A = W^T M^-1 V (a scene in contact space) gives each minor as
+    one polynomial over det M (see :class:`~contactsym.stages.minors.FactoredMinors`).
 
     Examples
     --------
@@ -98,8 +60,11 @@ def principal_minors(A: sp.Matrix) -> dict[tuple[int, ...], sp.Expr]:
     >>> a, b, s = sp.Symbol("a"), sp.Symbol("b"), SignSymbol("s")
     >>> principal_minors(sp.Matrix([[a, s], [s, b]]))[(0, 1)]
     a*b - 1
+    >>> M, W, V = sp.Matrix([[2, 1], [1, 1]]), sp.eye(2), sp.Matrix([[a, 0], [0, 1]])
+    >>> principal_minors(W.T * M.inv() * V, (M, W, V))[(0, 1)] == (W.T * M.inv() * V).det()
+    True
     """
-    ring = _MinorsInRing(A)
+    ring = minors_of(A, factors)
     k = A.rows
     return {
         S: ring.field.present(ring.minor(S)) for size in range(k + 1) for S in itertools.combinations(range(k), size)
@@ -107,14 +72,16 @@ def principal_minors(A: sp.Matrix) -> dict[tuple[int, ...], sp.Expr]:
 
 
 @checked(Phi="Sequence[sp.Expr]", Psi="Sequence[sp.Expr]", positive="Sequence[sp.Expr]")
-def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
+def charpoly(A: sp.Matrix, Phi, Psi, positive=(), factors=None) -> sp.Poly:
     """The characteristic polynomial of (4.5) from the principal minors of A.
 
     When the common denominator of its coefficients is not a monomial but has a known sign
     (``positive`` lists expressions known to be positive, e.g. det M of a Lagrangian
-    scene), the polynomial is multiplied by it: the same roots, polynomial coefficients.
+    scene), the polynomial is multiplied by it: the same roots, polynomial coefficients;
+    with an unknown sign each coefficient stays over it.
     The sum is formed in a polynomial ring (A = P / D, the minors of P, then one division by
-    D^k), so nothing is expanded as a SymPy expression.
+    D^k), so nothing is expanded as a SymPy expression; with ``factors`` (see
+    :func:`principal_minors`) every minor is over det M and the sum over det M once.
 
     Examples
     --------
@@ -123,11 +90,11 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
     -Phi*a - Psi*a*lambda + lambda**2
     """
     k = A.rows
-    minors = _MinorsInRing(A, [*Phi, *Psi, lam])
+    minors = minors_of(A, factors, [*Phi, *Psi, lam])
     field = minors.field
     law = [field.element(x) for x in (*Phi, *Psi)]
     if any(not x.denom.is_ground for x in law):  # a law with fractions at the equilibrium: sum as expressions
-        return _charpoly_of_expression(A, Phi, Psi, positive)
+        return _charpoly_of_expression(A, Phi, Psi, positive, factors)
     phi, psi = law[:k], law[k:]
     ring = field.ring
     x = ring.gens[ring.symbols.index(lam)]
@@ -137,32 +104,36 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=()) -> sp.Poly:
     total = ring.zero
     for size in range(k + 1):
         for S in itertools.combinations(range(k), size):
-            term = minors.det(S, S) * x ** (2 * (k - size)) * D ** (k - size)
+            top = minors.top_power
+            term = minors.numerator(S) * x ** (2 * (k - size)) * D ** (top - minors.power(S))
             for j in range(k):
                 factor = (
                     x * psi[j].numer * phi[j].denom + phi[j].numer * psi[j].denom if j in S else law_denominators[j]
                 )
                 term = field.reduce_poly(term * factor)
             total += -term if size % 2 else term
-    common = D**k
+    common = D**minors.top_power
     for c in law_denominators:
         common *= c
-    fraction = field.fraction(field.field.new(field.reduce_poly(total), common))
-    if fraction.denominator_split()[1] != 1:  # not a monomial: as the expression path does it
-        return _charpoly_of_expression(A, Phi, Psi, positive)
+    fraction = _integral_fraction(field, *_cancelled_in(field.reduce_poly(total), field.reduce_poly(common), x))
+    denominator = fraction.denom
+    if fraction.denominator_split()[1] != 1:  # not a monomial: multiplied out when its sign is known
+        sign = fraction.denominator_sign(positive)
+        if sign is not None:
+            fraction.numer, denominator = fraction.numer * sign, ring.one
     degree = fraction.numer.degree(x)
     coefficients = {
-        (d,): TrigFraction(fraction.numer.coeff_wrt(x, d), fraction.denom, fraction.pairs, fraction.signs).as_expr()
+        (d,): TrigFraction(fraction.numer.coeff_wrt(x, d), denominator, fraction.pairs, fraction.signs).as_expr()
         for d in range(degree + 1)
     }
     return sp.Poly.from_dict({d: c for d, c in coefficients.items() if c != 0}, lam)
 
 
-def _charpoly_of_expression(A: sp.Matrix, Phi, Psi, positive) -> sp.Poly:
+def _charpoly_of_expression(A: sp.Matrix, Phi, Psi, positive, factors=None) -> sp.Poly:
     """:func:`charpoly` summed as one SymPy expression and brought to the canonical form."""
     k = A.rows
     total = sp.S.Zero
-    for S, minor in principal_minors(A).items():
+    for S, minor in principal_minors(A, factors).items():
         factor = sp.Mul(*[lam * Psi[j] + Phi[j] for j in S])
         total += (-1) ** len(S) * lam ** (2 * (k - len(S))) * minor * factor
     fraction = to_fraction(total)
@@ -229,13 +200,23 @@ class Linearization(LatexReprMixin):
 
     @cached_property
     def A(self) -> sp.Matrix:
+        if self.factors is not None:
+            product = product_of(*self.factors)
+            if product is not None:
+                return product
         return self.fast.jacobian(self.sign_values).applyfunc(normalize)
 
     @cached_property
     def det_A(self) -> sp.Expr:
         """det A in the canonical form, by fraction-free expansion in a polynomial ring."""
-        minors = _MinorsInRing(self.A)
+        minors = minors_of(self.A, self.factors)
         return minors.field.present(minors.minor(tuple(range(self.A.rows))))
+
+    @cached_property
+    def factors(self) -> tuple | None:
+        """(M, W, V) with A = W^T M^-1 V for a scene built in contact space, else None."""
+        jacobian_factors = getattr(self.fast, "jacobian_factors", None)
+        return None if jacobian_factors is None else jacobian_factors(self.sign_values)
 
     @cached_property
     def u_star(self) -> dict:
@@ -272,7 +253,7 @@ class Linearization(LatexReprMixin):
     @cached_property
     def charpoly(self) -> sp.Poly:
         log.info("scene '%s': characteristic polynomial (4.6) from %d principal minors", self.fast.name, 2**self.A.rows)
-        return charpoly(self.A, self.Phi, self.Psi, self.fast.positive)
+        return charpoly(self.A, self.Phi, self.Psi, self.fast.positive, self.factors)
 
     @checked
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:

@@ -43,6 +43,9 @@ The motion
     their names in the file, or for symbols the pipeline adds, such as the laws' ``Phi_1``,
     ``Psi_1`` and the sign symbols ``s_1``; each admissible for its symbol) for the
     report's region maps and phase portrait. See :mod:`contactsym.mechanism.files.figures`.
+``[values]``
+    Parameters fixed at numbers before the derivation (``m1 = 1``, ``l2 = "1/3"``): a partly
+    numeric scene, :meth:`contactsym.Scene.with_values`; its stages are smaller.
 
 Bodies in space: ``dimensions = 3`` in ``[scene]`` with ``[frames]``, points, bodies, loads
 and contacts in 3-D (see :mod:`contactsym.mechanism.files.spatial`).
@@ -243,7 +246,22 @@ def read_spec(
         options["count_presentation"] = reader.substitutions("count_presentation", plain=True)
     extra = pipeline_names(len(contacts), _switching(contacts, written))
     options["figures"] = read_figures(reader, parameters, coordinates, extra)
+    options["values"] = _read_values(reader)
     return SceneSpec(**options)
+
+
+def _read_values(reader: FormulaReader) -> tuple:
+    """``[values]``: a declared parameter = a number (or a formula of numbers, "1/3")."""
+    table = reader.checked(reader.section("values"), "values", "values")
+    values = []
+    for key, value in table.items():
+        if reader.kinds.get(key) != "parameter":
+            reader.doc.fail("values", key, f"'{key}' is not a declared parameter; [values] fixes parameters at numbers")
+        number = reader.formula(value, "values", key, names={})
+        if not (number.is_real and number.is_finite):
+            reader.doc.fail("values", key, f"the value of {key} must be a finite real number, not {shown(value)}")
+        values.append((reader.names[key], number))
+    return tuple(values)
 
 
 def build_scene(spec: SceneSpec) -> Scene:
@@ -288,8 +306,10 @@ def build_scene(spec: SceneSpec) -> Scene:
     try:
         if spec.lagrangian:
             L, loads = plane.lagrangian(spec)
-            return Scene.from_lagrangian(L, coordinates, contacts, loads=loads, frame=plane.frame, **options)
-        return Scene.from_accelerations(coordinates, list(spec.accelerations), contacts, **options)
+            built = Scene.from_lagrangian(L, coordinates, contacts, loads=loads, frame=plane.frame, **options)
+        else:
+            built = Scene.from_accelerations(coordinates, list(spec.accelerations), contacts, **options)
+        return built.with_values(dict(spec.values)) if spec.values else built
     except (SceneFileError, ParseError):
         raise
     except ContactsymError as error:  # the API's own message, from the file

@@ -122,6 +122,7 @@ SCHEMA = MappingProxyType(
             count_presentation="table",
             figures="table",
             frames="table",
+            values="table",
         ),
         "scene": _table(
             ("coordinates",),
@@ -165,6 +166,7 @@ SCHEMA = MappingProxyType(
             euler_parameters="formulas",
             relative_to="name",
         ),
+        "values": _free("formula"),
     }
 )
 
@@ -418,6 +420,8 @@ class SceneSpec:
     eps: sp.Symbol = sp.Symbol("epsilon", positive=True)
     #: The frames, points, bodies and loads of a spatial file (``dimensions = 3``), else None.
     space: object = None
+    #: ``[values]``: parameters fixed at numbers before the derivation (``Scene.with_values``).
+    values: tuple[tuple[sp.Symbol, sp.Expr], ...] = ()
 
     @property
     def lagrangian(self) -> bool:

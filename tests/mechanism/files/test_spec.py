@@ -52,6 +52,7 @@ BASE = {
     "presentation": {"F": "2*G"},
     "count_presentation": {"F": "2*G"},
     "figures": {"x": "theta", "y": "mu", "x_range": [0.1, 1.5], "y_range": [0, 2], "values": {"m": 1, "J": 1}},
+    "values": {"J": "1/2"},
 }
 
 #: A spatial document (dimensions = 3) holding the keys only a scene in space has.

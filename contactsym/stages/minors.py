@@ -1,0 +1,252 @@
+"""The principal minors of A in a polynomial ring, exact and without rational-function arithmetic.
+
+Two ways: from A = P / D itself (:class:`MinorsInRing`: the minors of P over D^|S|), or, for a
+scene in contact space, from its factors A = W^T M^-1 V (:class:`FactoredMinors`: by the Schur
+complement each minor is one polynomial over det M). Used by :mod:`contactsym.stages.linear`.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ..algebra.basic import normalize
+from ..algebra.canonical_form import TrigField, TrigFraction
+from ..algebra.fraction_free import adjugate_and_det_in_field
+
+__all__ = ["MinorsInRing", "FactoredMinors", "minors_of", "product_of"]
+
+
+class MinorsInRing:
+    """A = P / D in the polynomial ring of a :class:`TrigField` (P polynomial, D the common
+    denominator), with the minors det(P_(R, C)) by Laplace expansion, memoized and reduced
+    (s^2 = 1, sin^2 + cos^2 = 1) after every product: exact, no rational-function arithmetic.
+
+    Examples
+    --------
+    >>> a, b = sp.symbols("a b")
+    >>> minors = MinorsInRing(sp.Matrix([[a, 1 / b], [1, b]]))
+    >>> minors.field.present(minors.minor((0, 1)))
+    a*b - 1/b
+    """
+
+    def __init__(self, A: sp.Matrix, extra=()):
+        self.field = TrigField([*A, *extra])
+        ring = self.field.ring
+        entries = [[self.field.element(x) for x in row] for row in A.tolist()]
+        self.denominator = ring.one
+        for row in entries:
+            for x in row:
+                self.denominator = self.denominator.lcm(x.denom) if not x.denom.is_ground else self.denominator
+        scale = ring.domain.one
+        for row in entries:
+            for x in row:
+                if x.denom.is_ground:
+                    scale = ring.domain.lcm(scale, ring.domain.convert(x.denom.LC))
+        self.denominator = self.denominator * scale
+        self.P = [[x.numer * self.denominator.exquo(x.denom) for x in row] for row in entries]
+        self._cache: dict = {}
+
+    def det(self, rows: tuple, cols: tuple):
+        """det P restricted to ``rows`` and ``cols`` (equal lengths), a reduced ring element."""
+        if not rows:
+            return self.field.ring.one
+        key = (rows, cols)
+        if key not in self._cache:
+            total = self.field.ring.zero
+            for i, c in enumerate(cols):
+                entry = self.P[rows[0]][c]
+                if entry:
+                    term = entry * self.det(rows[1:], cols[:i] + cols[i + 1 :])
+                    total = total + term if i % 2 == 0 else total - term
+            self._cache[key] = self.field.reduce_poly(total)
+        return self._cache[key]
+
+    def minor(self, S: tuple):
+        """det(A_S) as a reduced field element."""
+        return self.field.reduce(self.field.field.new(self.numerator(S), self.denominator ** self.power(S)))
+
+    def numerator(self, S: tuple):
+        """det(A_S) = numerator(S) / denominator^power(S)."""
+        return self.det(S, S)
+
+    def power(self, S: tuple) -> int:
+        return len(S)
+
+    #: The largest power of the denominator a principal minor has.
+    @property
+    def top_power(self) -> int:
+        return len(self.P)
+
+
+class FactoredMinors(MinorsInRing):
+    """A = W^T M^-1 V with polynomial M (n x n), W, V (n x k), as a Lagrangian scene's contact
+    space gives it. By the Schur complement, det(A_S) = (-1)^|S| det([[M, V_S], [W_S^T, 0]]) / det M:
+    every principal minor is one polynomial over det M (not over D^|S| for the lcm D of A's
+    denominators, whose cancellation would need a large gcd). The bordered determinants are
+    expanded along the rows of W_S^T and then of M, their sub-determinants memoized and shared
+    between the subsets S (a column of V is the same for every S that holds it).
+
+    Examples
+    --------
+    >>> a = sp.Symbol("a")
+    >>> M, W, V = sp.Matrix([[2, 1], [1, 1]]), sp.eye(2), sp.Matrix([[a, 0], [0, 1]])
+    >>> minors = FactoredMinors(M, W, V)
+    >>> minors.denominator.as_expr(), minors.numerator((0, 1)).as_expr()  # det M, det M det(A)
+    (1, a)
+    >>> minors.field.present(minors.minor((0, 1))) == (W.T * M.inv() * V).det()
+    True
+    """
+
+    def __init__(self, M: sp.Matrix, W: sp.Matrix, V: sp.Matrix, extra=()):
+        self.field = TrigField([*M, *W, *V, *extra])
+        self.n, self.k = M.rows, W.cols
+        self.M, self.W, self.V = (self._polynomials(X) for X in (M, W, V))
+        self._cache, self._m_cache = {}, {}
+        self.denominator = self._m_det(0, tuple(range(self.n)))
+
+    def _polynomials(self, X: sp.Matrix) -> list[list]:
+        rows = _polynomial_rows(self.field, X)
+        if rows is None:
+            raise ValueError("a factor of A with a polynomial denominator")
+        return rows
+
+    def _entry(self, row: int, column: int):
+        """Row ``row`` of [M | V] at ``column`` (< n: a column of M; n + j: the column of V of contact j)."""
+        return self.M[row][column] if column < self.n else self.V[row][column - self.n]
+
+    def _m_det(self, level: int, columns: tuple):
+        """det of the rows level.. of [M | V] on ``columns`` (as many as rows are left)."""
+        if level == self.n:
+            return self.field.ring.one
+        key = (level, columns)
+        if key not in self._m_cache:
+            total = self.field.ring.zero
+            for i, c in enumerate(columns):
+                entry = self._entry(level, c)
+                if entry:
+                    term = entry * self._m_det(level + 1, columns[:i] + columns[i + 1 :])
+                    total = total + term if i % 2 == 0 else total - term
+            self._m_cache[key] = self.field.reduce_poly(total)
+        return self._m_cache[key]
+
+    def _bordered(self, S: tuple, level: int, columns: tuple):
+        """det of [[W_S^T, 0], [M, V_S]] from the W-row ``level`` on, on ``columns``."""
+        if level == len(S):
+            return self._m_det(0, columns)
+        key = (S, level, columns)
+        if key not in self._cache:
+            total = self.field.ring.zero
+            for i, c in enumerate(columns):
+                entry = self.W[c][S[level]] if c < self.n else None
+                if entry:
+                    term = entry * self._bordered(S, level + 1, columns[:i] + columns[i + 1 :])
+                    total = total + term if i % 2 == 0 else total - term
+            self._cache[key] = self.field.reduce_poly(total)
+        return self._cache[key]
+
+    def numerator(self, S: tuple):
+        if not S:
+            return self.field.ring.one
+        # [[M, V_S], [W_S^T, 0]] is [[W_S^T, 0], [M, V_S]] with its p rows moved past n: (-1)^(n p)
+        value = self._bordered(S, 0, tuple(range(self.n)) + tuple(self.n + j for j in S))
+        return value if (len(S) + self.n * len(S)) % 2 == 0 else -value
+
+    def power(self, S: tuple) -> int:
+        return 1 if S else 0
+
+    @property
+    def top_power(self) -> int:
+        return 1
+
+    def det(self, rows: tuple, cols: tuple):  # pragma: no cover - the factored form has no P
+        raise NotImplementedError("the factored minors give numerator(S) over det M")
+
+
+def product_of(M: sp.Matrix, W: sp.Matrix, V: sp.Matrix) -> sp.Matrix | None:
+    """W^T M^-1 V in the canonical form, as W^T adj(M) V / det M in one polynomial ring (each entry
+    cancelled once), or None when a factor is not polynomial.
+
+    Examples
+    --------
+    >>> q, m = sp.symbols("q m", positive=True)
+    >>> M, W = sp.Matrix([[m, 0], [0, m]]), sp.Matrix([sp.cos(q), sp.sin(q)])
+    >>> product_of(M, W, W)
+    Matrix([[1/m]])
+    """
+    field = TrigField([*M, *W, *V])
+    adj, det = adjugate_and_det_in_field(field, M)
+    parts = [*[x for row in adj for x in row], det]
+    left, right = (_polynomial_rows(field, X.T) for X in (W, V))
+    if left is None or right is None or any(not x.denom.is_ground for x in parts):
+        return None
+    adj = [[x.numer.quo_ground(x.denom.LC) for x in row] for row in adj]
+    det = det.numer.quo_ground(det.denom.LC)
+    n = M.rows
+    adj_v = [
+        [field.reduce_poly(sum((adj[r][c] * v[c] for c in range(n)), field.ring.zero)) for r in range(n)] for v in right
+    ]
+
+    def entry(i, j):
+        numerator = field.reduce_poly(sum((left[i][r] * adj_v[j][r] for r in range(n)), field.ring.zero))
+        return normalize(field.present(field.field.new(numerator, det)))
+
+    return sp.Matrix(W.cols, V.cols, entry)
+
+
+def _polynomial_rows(field, X: sp.Matrix) -> list[list] | None:
+    """The rows of X as ring elements, or None when an entry has a polynomial denominator."""
+    rows = [[field.element(x) for x in row] for row in X.tolist()]
+    if any(not x.denom.is_ground for row in rows for x in row):
+        return None
+    return [[x.numer.quo_ground(x.denom.LC) for x in row] for row in rows]
+
+
+def minors_of(A: sp.Matrix, factors=None, extra=()) -> MinorsInRing:
+    """The minors of A: from its factors (M, W, V) when they are polynomial, else from A itself.
+
+    Examples
+    --------
+    >>> a = sp.Symbol("a")
+    >>> type(minors_of(sp.Matrix([[a]]))).__name__, type(minors_of(sp.Matrix([[a]]), (sp.eye(1), sp.eye(1), sp.Matrix([[a]])))).__name__
+    ('MinorsInRing', 'FactoredMinors')
+    """
+    if factors is not None:
+        try:
+            return FactoredMinors(*factors, extra=extra)
+        except ValueError:
+            pass
+    return MinorsInRing(A, extra)
+
+
+def _integral_fraction(field, numerator, denominator) -> TrigFraction:
+    """numerator / denominator (reduced, cancelled, no sign symbol in the denominator) with integer
+    coprime coefficients and a positive leading denominator coefficient, as TrigField.fraction
+    gives it, without a second gcd of the two."""
+    domain = field.ring.domain
+    scale = 1
+    for c in (*numerator.coeffs(), *denominator.coeffs()):
+        scale = sp.ilcm(scale, int(domain.denom(c)))
+    numerator, denominator = numerator * scale, denominator * scale
+    common = sp.igcd(*[int(domain.numer(c)) for c in (*numerator.coeffs(), *denominator.coeffs())]) or 1
+    numerator, denominator = numerator.quo_ground(domain(common)), denominator.quo_ground(domain(common))
+    if domain.is_negative(denominator.LC):
+        numerator, denominator = -numerator, -denominator
+    return TrigFraction(numerator, denominator, field.pairs, field.signs)
+
+
+def _cancelled_in(numerator, denominator, x) -> tuple:
+    """numerator / denominator cancelled by their gcd, for a numerator that is a polynomial in
+    ``x``: the gcd of the denominator with one coefficient after another (each smaller than the
+    whole numerator), stopping at a number."""
+    common = denominator
+    coefficients = sorted(
+        (numerator.coeff_wrt(x, d) for d in range(max(numerator.degree(x), 0) + 1)), key=lambda c: len(c)
+    )
+    for c in coefficients:
+        if common.is_ground:
+            break
+        if c:
+            common = common.gcd(c)
+    if common.is_ground:
+        return numerator, denominator
+    return numerator.exquo(common), denominator.exquo(common)

@@ -1,0 +1,83 @@
+"""Partly numeric scenes: Scene.with_values, [values] in a file (the derivation with numbers put in
+first agrees with the symbolic derivation evaluated afterwards, at random points)."""
+
+import math
+import random
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+import contactsym as cs
+from contactsym.mechanism.files import SceneFileError, read_scene
+
+ARM = (Path(__file__).parents[2] / "examples" / "two-link-arm.toml").read_text()
+
+
+def test_numbers_first_agree_with_numbers_after():
+    """A and det A of the arm with masses and lengths fixed, against the symbolic ones evaluated there."""
+    rng = random.Random(3)
+    symbolic = read_scene(ARM, "arm.toml")
+    values = {name: sp.Rational(rng.randint(1, 9), rng.randint(1, 5)) for name in ("m1", "m2", "l1", "l2")}
+    fixed = symbolic.with_values(values)
+    assert {str(k): v for k, v in fixed.fixed_values.items()} == values
+    assert "fixed: m1 = " in fixed.description
+    A_fixed, A_symbolic = fixed.linearization().A, symbolic.linearization().A
+    names = {str(x): x for x in A_symbolic.free_symbols}
+    assert not {"m1", "m2", "l1", "l2"} & {str(x) for x in A_fixed.free_symbols}
+    for _ in range(3):
+        point = {name: rng.uniform(-1.2, 1.2) for name in ("q1", "q2")} | {"mu": rng.uniform(0.1, 2), "s": 1}
+        both = {names[n]: v for n, v in (point | values).items() if n in names}
+        here = {x: point[str(x)] for x in A_fixed.free_symbols}
+        assert float(A_fixed[0, 0].subs(here)) == pytest.approx(float(A_symbolic[0, 0].subs(both)), rel=1e-10)
+
+
+def test_the_values_table_of_a_file_is_with_values():
+    from_file = read_scene(ARM + '\n[values]\nm1 = 1\nl1 = "1/2"\nm2 = 0.3\n', "arm.toml")
+    direct = read_scene(ARM, "arm.toml").with_values({"m1": 1, "l1": sp.Rational(1, 2), "m2": 0.3})
+    assert (
+        from_file.fixed_values
+        == direct.fixed_values
+        == {
+            sp.Symbol("m1", positive=True): 1,
+            sp.Symbol("l1", positive=True): sp.Rational(1, 2),
+            sp.Symbol("m2", positive=True): sp.Rational(3, 10),  # a float is the decimal it prints
+        }
+    )
+    assert from_file.linearization().A == direct.linearization().A
+
+
+@pytest.mark.parametrize(
+    "values, message",
+    [
+        ({"m1": -1}, "m1 is declared positive"),
+        ({"zz": 1}, "not a parameter of the scene"),
+        ({"h": 1}, "placed on the contact manifold"),
+        ({"m1": math.nan}, "finite real number"),
+        ({"m1": math.inf}, "finite real number"),
+        ({"m1": True}, "finite real number"),
+        ({"m1": "1"}, "finite real number"),
+        ({"m1": sp.I}, "finite real number"),
+        ({sp.Symbol("m1"): 1}, "not a parameter"),  # a symbol of the same name but other assumptions
+    ],
+)
+def test_bad_values_are_refused_with_the_reason(values, message):
+    with pytest.raises(cs.SceneError, match=message):
+        read_scene(ARM, "arm.toml").with_values(values)
+
+
+def test_a_value_outside_a_declared_interval_is_refused():
+    text = (
+        '[scene]\ncoordinates = ["x"]\n[parameters]\nalpha = [0, "pi"]\n[accelerations]\nx = "N*sin(alpha) - 1"\n'
+        '[[contacts]]\ngap = "x"\nreaction = "N"\n'
+    )
+    scene = read_scene(text, "a.toml")
+    fast = scene.with_values({"alpha": 1}).fast_subsystem()
+    assert fast.f[0] == fast.u[0] * sp.sin(1) - 1
+    with pytest.raises(cs.SceneError, match="declares positive"):
+        scene.with_values({"alpha": 4})
+
+
+def test_a_values_table_names_only_declared_parameters():
+    with pytest.raises(SceneFileError, match="'zz' is not a declared parameter"):
+        read_scene(ARM + "\n[values]\nzz = 1\n", "arm.toml")

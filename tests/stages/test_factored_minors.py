@@ -1,0 +1,98 @@
+"""Principal minors and A from the factors A = W^T M^-1 V (a scene in contact space).
+
+Each minor is one polynomial over det M (Schur complement); checked against numpy
+determinants of W^T M^-1 V at random rational points, and against the minors of A itself.
+"""
+
+import itertools
+import random
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import contactsym as cs
+from contactsym.algebra.basic import SignSymbol, normalize
+from contactsym.stages.linear import charpoly, lam, principal_minors
+
+q1, q2, m, a = sp.symbols("q1 q2 m a", positive=True)
+s = SignSymbol("s")
+
+
+def random_factors(seed: int, n: int, k: int):
+    """A positive definite M (a Gram matrix plus m I) and W, V with trig and parameter entries."""
+    rng = random.Random(seed)
+    pool = [sp.cos(q1), sp.sin(q1), sp.cos(q2), a, 1, 1, s]
+
+    def entry():
+        return rng.choice([-2, -1, 1, 2]) * rng.choice(pool)
+
+    B = sp.Matrix(n, n, lambda i, j: entry())
+    M = B.T * B + m * sp.eye(n)
+    W = sp.Matrix(n, k, lambda i, j: entry())
+    V = sp.Matrix(n, k, lambda i, j: entry())
+    return M, W, V
+
+
+def product(M, W, V) -> sp.Matrix:
+    """W^T M^-1 V as W^T adj(M) V / det M, unexpanded."""
+    return W.T * M.adjugate(method="berkowitz") * V / M.det(method="berkowitz")
+
+
+def random_point(rng):
+    point = {x: rng.uniform(0.2, 1.4) for x in (q1, q2, m, a)}
+    point[s] = rng.choice([-1, 1])
+    return point
+
+
+@pytest.mark.parametrize("seed, n, k", [(1, 2, 2), (4, 3, 1)])
+def test_factored_minors_are_the_determinants_of_w_m_inverse_v(seed, n, k):
+    M, W, V = random_factors(seed, n, k)
+    minors = principal_minors(product(M, W, V), (M, W, V))
+    rng = random.Random(seed)
+    factors = sp.lambdify([q1, q2, m, a, s], [M, W, V], "numpy")
+    for _ in range(3):
+        point = random_point(rng)
+        Mn, Wn, Vn = (np.array(x, dtype=float) for x in factors(*point.values()))
+        An = Wn.T @ np.linalg.solve(Mn, Vn)
+        for size in range(1, k + 1):
+            for S in itertools.combinations(range(k), size):
+                expected = np.linalg.det(An[np.ix_(S, S)])
+                value = float(sp.lambdify([q1, q2, m, a, s], minors[S])(*point.values()))
+                assert value == pytest.approx(expected, rel=1e-9, abs=1e-9)
+
+
+def test_factored_and_plain_minors_agree_exactly():
+    M, W, V = random_factors(5, 2, 2)
+    A = product(M, W, V).applyfunc(normalize)
+    factored, plain = principal_minors(A, (M, W, V)), principal_minors(A)
+    for S in factored:
+        assert normalize(factored[S] - plain[S]) == 0
+
+
+def test_the_factored_characteristic_polynomial_is_that_of_the_jacobian():
+    """p(lambda) from the factored minors, against numpy's characteristic polynomial of (4.5)."""
+    M, W, V = random_factors(5, 3, 2)
+    A = product(M, W, V)
+    Phi, Psi = sp.symbols("Phi_1:3"), sp.symbols("Psi_1:3")
+    p = charpoly(A, Phi, Psi, factors=(M, W, V))
+    assert p.gen == lam and p.degree() == 4
+    rng = random.Random(7)
+    for _ in range(3):
+        point = random_point(rng) | {x: rng.uniform(-2, 2) for x in (*Phi, *Psi)}
+        An = np.array(sp.lambdify([q1, q2, m, a, s], A)(*[point[x] for x in (q1, q2, m, a, s)]), dtype=float)
+        J = np.block(
+            [[np.diag([point[x] for x in Psi]) @ An, np.diag([point[x] for x in Phi])], [An, np.zeros((2, 2))]]
+        )
+        coefficients = np.array([float(sp.lambdify(list(point), c)(*point.values())) for c in p.all_coeffs()])
+        assert coefficients / coefficients[0] == pytest.approx(np.poly(J), rel=1e-8, abs=1e-8)
+
+
+def test_a_lagrangian_scene_linearizes_from_its_factors():
+    """A = W^T M^-1 V from the fast subsystem's factors is the Jacobian of f, entry for entry."""
+    scene = cs.scene("two-leg-block")
+    lin = scene.linearization()
+    M, W, V = lin.factors
+    assert (W.T * M.inv() * V - lin.A).applyfunc(sp.simplify) == sp.zeros(2, 2)
+    jacobian = scene.fast_subsystem().jacobian(lin.sign_values).applyfunc(normalize)
+    assert lin.A == jacobian
