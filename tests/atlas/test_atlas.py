@@ -542,7 +542,7 @@ def test_squeal_from_the_normal_form_near_the_line_and_by_continuation_farther_o
     """Hertz pads: before the line the equilibrium is stable (amplitude 0); at 0.1-0.3% past it the
     normal form gives the value (where a simulation to a Poincare section does not converge), with
     its error calibrated by one shot cycle of the line; farther out, cycles continued by shooting
-    (stable: multiplier < 1), the one at 0.5% within 2% of a long simulation of the fast subsystem
+    (stable: multiplier < 1), the one at 1.5% within 2% of a long simulation of the fast subsystem
     (runs from inside and outside the cycle bracket it); at 5% a pad opens: NaN, labelled."""
     from contactsym.atlas.quantities import SQUEAL_METHODS, squeal
     from contactsym.laws.library import Hertz
@@ -559,7 +559,7 @@ def test_squeal_from_the_normal_form_near_the_line_and_by_continuation_farther_o
     assert np.all(ds.multiplier.values[:5] < 1) and np.all(ds.contact_loss.values[:5] == 0)
     assert np.isnan(ds.amplitude.values[5]) and "contact loss" in str(atlas.reason_text(ds).values[5])
     assert ds.contact_loss.values[5] == 1
-    mu = grid["mu"][3]
+    mu = grid["mu"][4]  # 1.5% past the line: the long runs last 1.5/alpha
     duration, period = 1.5 / (h.dalpha * (mu - h.value)), 2 * np.pi / h.omega
     simulated = []
     for factor in (0.8, 1.2):
@@ -568,7 +568,8 @@ def test_squeal_from_the_normal_form_near_the_line_and_by_continuation_farther_o
             method="DOP853", rtol=1e-6, t_eval=np.linspace(duration - 2 * period, duration, 1000),
         )  # fmt: skip
         simulated.append(float(np.max(np.ptp(run.reactions, axis=1)) / 2))
-    assert abs(ds.amplitude.values[3] - np.mean(simulated)) / np.mean(simulated) < 0.02, (
-        ds.amplitude.values[3],
+    assert min(simulated) < ds.amplitude.values[4] < max(simulated)
+    assert abs(ds.amplitude.values[4] - np.mean(simulated)) / np.mean(simulated) < 0.02, (
+        ds.amplitude.values[4],
         simulated,
     )
