@@ -393,6 +393,9 @@ def _wrap(function, extra: dict, label: str, skip_first: bool, nan: bool = False
         return function(*args, **kwargs)
 
     setattr(wrapper, _CHECKED, True)
+    for name in ("cache_clear", "cache_info"):  # a checked lru_cache still clears and reports its cache
+        if hasattr(function, name):
+            setattr(wrapper, name, getattr(function, name))
     return wrapper
 
 

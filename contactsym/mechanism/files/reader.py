@@ -342,7 +342,6 @@ def _is_file(name: str) -> bool:
         return False
 
 
-@checked
 def scene_or_file(argument: str) -> Scene:
     """A scene file by path (a name ending in .toml), else a built-in scene, else an existing file.
 
