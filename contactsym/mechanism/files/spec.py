@@ -178,7 +178,7 @@ class Limits:
         for cap in fields(self):
             value = getattr(self, cap.name)
             if isinstance(value, bool) or not isinstance(value, int) or value < 1:
-                raise SceneError(f"Limits({cap.name}={value!r}): a cap is a whole number >= 1.")
+                raise SceneError(f"Limits({cap.name}={shorten(value)}): a cap is a whole number >= 1.")
 
 
 @dataclass(frozen=True)
