@@ -24,7 +24,7 @@ from .contact_space import t
 __all__ = ["check_eps", "check_equations", "check_inertia", "check_scene", "user_names", "with_friction"]
 
 
-@checked(eps="sp.Basic | float | None", taken="Sequence | set | frozenset")
+@checked(taken="Sequence | set | frozenset")
 def check_eps(eps, taken=()) -> sp.Expr:
     """eps is the small positive parameter of (1.6): a positive symbol or number.
 
