@@ -83,7 +83,7 @@ def paper_name(scene) -> str | None:
     return name if isinstance(name, str) and _built.get(name) is scene else None
 
 
-@checked(scene="Scene")
+@checked
 def paper_knowledge(scene, attribute: str, default=None):
     """What the paper says about the built-in ``scene``: ``attribute`` of the scene's own module.
 
