@@ -63,7 +63,7 @@ def scene(name: str):
     return _built[name]
 
 
-@checked(scene="Scene")
+@checked
 def paper_name(scene) -> str | None:
     """The built-in name of ``scene`` when it is the built-in scene object itself, else None.
 
