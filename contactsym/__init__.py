@@ -17,6 +17,7 @@ import sys
 
 from . import _aliases, _entry  # noqa: F401 - _entry first: a Ctrl-C while the command line imports
 from .errors import (
+    ArgumentError,
     AtlasError,
     ComplianceError,
     ContactsymError,
@@ -71,6 +72,7 @@ _LAZY = {
 }
 
 __all__ = [
+    "ArgumentError",
     "AtlasError",
     "Compliance",
     "ComplianceError",

@@ -19,7 +19,8 @@ What a hint asks for, beyond its type:
   checked element by element; text is not a sequence.
 
 Parameters without a hint can be given one in the decorator: ``@checked(scene="Scene")``
-(the hint is also written into the function's annotations, so its signature shows it).
+(kept by the check alone: the function's own annotations stay as written, so
+``typing.get_type_hints`` still resolves them in the function's module).
 
 Examples
 --------
@@ -393,7 +394,7 @@ def _wrap(function, extra: dict, label: str, skip_first: bool, nan: bool = False
         return function(*args, **kwargs)
 
     setattr(wrapper, _CHECKED, True)
-    for name in ("cache_clear", "cache_info"):  # a cached function stays one to its callers
+    for name in ("cache_clear", "cache_info"):  # a checked lru_cache still clears and reports its cache
         if hasattr(function, name):
             setattr(wrapper, name, getattr(function, name))
     return wrapper
@@ -402,8 +403,8 @@ def _wrap(function, extra: dict, label: str, skip_first: bool, nan: bool = False
 def checked(target=None, /, *, nan: bool = False, **hints):
     """Check the arguments of a function, a method or a class's constructor against their type hints.
 
-    ``hints`` give (or replace) the hint of a parameter by name, as a type or as text; they are
-    also written into the annotations. A class is checked at construction, by the hints of its
+    ``hints`` give (or replace) the hint of a parameter by name, as a type or as text (names are
+    looked up among contactsym's public classes). A class is checked at construction, by the hints of its
     ``__init__`` (a dataclass: of its fields); ``nan=True`` lets its float fields hold nan for "no value".
 
     Examples
@@ -425,13 +426,9 @@ def checked(target=None, /, *, nan: bool = False, **hints):
         return lambda decorated: checked(decorated, nan=nan, **hints)
     if isinstance(target, type):
         init = target.__init__
-        annotations = dict(getattr(init, "__annotations__", {}))
-        annotations.update(hints)
-        init.__annotations__ = annotations
         target.__init__ = _wrap(init, hints, target.__name__, skip_first=True, nan=nan)
         return target
     function = target.__func__ if isinstance(target, (classmethod, staticmethod)) else target
-    function.__annotations__ = {**getattr(function, "__annotations__", {}), **hints}
     qualname = function.__qualname__
     is_method = "." in qualname and "<locals>" not in qualname.rsplit(".", 1)[0]
     first = next(iter(inspect.signature(function).parameters), "")

@@ -34,7 +34,7 @@ __all__ = [
 ]
 
 
-@checked(eps="sp.Basic | float | None", taken="Sequence | set | frozenset")
+@checked(taken="Sequence | set | frozenset")
 def check_eps(eps, taken=()) -> sp.Expr:
     """eps is the small positive parameter of (1.6): a positive symbol or number.
 

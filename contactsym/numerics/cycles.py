@@ -80,7 +80,7 @@ def _no_cycle(system: OdeSystem, message: str) -> Cycle:
     )
 
 
-@checked(scene="Scene", unilateral="bool | None", initial="RealArray | None")
+@checked(scene="Scene", unilateral="bool | None")
 def fast_cycle(
     scene,
     values: Mapping | None,
@@ -209,13 +209,6 @@ def _sampled_cycle(system: OdeSystem, found: tuple, samples: int, N_scale: float
     )
 
 
-@checked(
-    scene="Scene",
-    span="Sequence[float]",
-    unilateral="bool | None",
-    atol="float | RealArray | None",
-    t_eval="RealArray | None",
-)
 def simulate_averaged(
     scene,
     values: Mapping | None,

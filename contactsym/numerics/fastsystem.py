@@ -249,14 +249,6 @@ class FastProblem:
         return scale
 
 
-@checked(
-    scene="Scene",
-    span="Sequence[float]",
-    initial="RealArray | None",
-    unilateral="bool | None",
-    atol="float | RealArray | None",
-    t_eval="RealArray | None",
-)
 def simulate_fast(
     scene,
     values: Mapping | None,

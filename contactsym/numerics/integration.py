@@ -141,7 +141,6 @@ def _budget_message(method: str, analytic: bool, counter: dict, max_rhs: int, bu
     return f"{method} used up its budget of {spent}; {reached}. {advice}."
 
 
-@checked(span="Sequence[float]", z0="RealArray", atol="float | RealArray | None", t_eval="RealArray | None")
 def integrate(
     system: OdeSystem,
     span,

@@ -136,7 +136,6 @@ def _try_branch(scene, frozen: NumericValues, signs):
         return None
 
 
-@checked(scene="Scene", span="Sequence[float]", atol="float | RealArray | None", t_eval="RealArray | None")
 def simulate_reduced(
     scene,
     values: Mapping | None,

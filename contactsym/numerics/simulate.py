@@ -8,7 +8,6 @@ from dataclasses import dataclass, replace
 import numpy as np
 import sympy as sp
 
-from ..arguments import checked
 from ..errors import NumericsError
 from ..progress import Progress
 from .codegen import lambdify_cse
@@ -29,14 +28,6 @@ from .values import (
 )
 
 
-@checked(
-    scene="Scene",
-    eps="float",
-    span="Sequence[float]",
-    unilateral="bool | None",
-    atol="float | RealArray | None",
-    t_eval="RealArray | None",
-)
 def simulate_full(
     scene,
     values: Mapping | None,

@@ -209,7 +209,7 @@ def _manifold_parameters(scene) -> dict:
     return {key: value for key, value in scene.manifold.items() if key not in state}
 
 
-@checked(scene="Scene", eps="float", unilateral="bool | None")
+@checked(scene="Scene", unilateral="bool | None")
 def full_system(scene, values: Mapping | None, eps, *, laws: Mapping | None = None, unilateral=None) -> OdeSystem:
     """The full compliant system (1.9) at a numeric ``eps``, in the original time t.
 

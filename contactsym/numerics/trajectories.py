@@ -11,7 +11,7 @@ from .fastsystem import FastProblem, simulate_fast
 from .reduced import equilibrium_reactions
 
 
-@checked(scene="Scene", unilateral="bool | None", starts="RealArray | None", span="Sequence[float]")
+@checked(scene="Scene", unilateral="bool | None", span="Sequence[float]")
 def fast_trajectories_data(
     scene,
     values: Mapping | None,

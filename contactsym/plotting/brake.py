@@ -48,7 +48,7 @@ class BrakeMapData:
     regions: dict = field(repr=False)
 
 
-@checked(scene="Scene", mu_max="float", resolution=between(2, 4096))
+@checked(mu_max="float", resolution=between(2, 4096))
 def brake_map_data(scene, *, mu_max=2.0, resolution=300) -> BrakeMapData:
     """Regions of the brake in the (alpha, mu) plane (6.3), from ``scene.regions()``.
 
@@ -149,7 +149,7 @@ class BrakeHopfData:
     hopf_field: list
 
 
-@checked(scene="Scene", Psi="float", m="float", mu_max="float", Phi_min="float", resolution=between(2, 4096))
+@checked(Psi="float", m="float", mu_max="float", Phi_min="float", resolution=between(2, 4096))
 def brake_hopf_data(scene, *, Psi=-1.0, m=1.0, mu_max=3.0, Phi_min=-10.0, resolution=300) -> BrakeHopfData:
     """Hurwitz stability (6.4) and the Hopf line of the brake at alpha = 90 deg, equal laws.
 

@@ -71,7 +71,7 @@ def _directory(directory) -> Path:
     return directory
 
 
-@checked(scene="Scene", directory="Path | str", resolution=between(2, 4096), dpi=between(10, 2400))
+@checked(scene="Scene | str", directory="Path | str", resolution=between(2, 4096), dpi=between(10, 2400))
 def scene_figures(scene, directory, *, resolution=400, dpi=150) -> dict[str, Path]:
     """Write one scene's figures as PNGs into ``directory``; returns {LaTeX caption: path}.
 

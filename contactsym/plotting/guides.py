@@ -64,7 +64,7 @@ class Fig1Data:
     count_regions: dict = field(repr=False)
 
 
-@checked(scene="Scene", phi="sp.Expr", extent="float", resolution=between(2, 4096))
+@checked(phi="sp.Expr", extent="float", resolution=between(2, 4096))
 def fig1_data(scene, phi, *, extent=4.0, resolution=400) -> Fig1Data:
     """Fig. 1: stability and count regions of the guides in the (v1, v2) plane at angle phi.
 

@@ -58,7 +58,6 @@ def _by_name(expr, values: dict):
 
 
 @checked(
-    scene="Scene",
     values="Mapping | None",
     Phi="float",
     Psi="float",

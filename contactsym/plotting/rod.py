@@ -103,7 +103,7 @@ class RodFData:
     curves: list  # (X*, f(u) array, [(u*, slope), ...])
 
 
-@checked(scene="Scene", case="str", values="Mapping | None", points=between(2, 100_000))
+@checked(case="str", values="Mapping | None", points=between(2, 100_000))
 def rod_f_data(scene, case="cusp", *, values=None, points=400) -> RodFData:
     """f(u) (3.6) of the rod with the classification of its count region.
 

@@ -49,7 +49,7 @@ def fast_trajectories_plot(data: dict, ax=None) -> ContactPlot:
     return ContactPlot.of(ax, artists)
 
 
-@checked(run="Simulation", ax="Axes | None", names="Sequence[str] | None")
+@checked(ax="Axes | None", names="Sequence[str] | None")
 def reactions_plot(run, ax=None, *, names=None) -> ContactPlot:
     """Plot the reactions of a simulation against its time; returns the lines.
 
@@ -68,6 +68,7 @@ def reactions_plot(run, ax=None, *, names=None) -> ContactPlot:
     >>> plt.close(fig)
     """
     ax = axes_or_current(ax)
+    require(all(hasattr(run, a) for a in ("t", "reaction_names")), "reactions_plot", "run", run, "a Simulation")
     chosen = names or run.reaction_names
     lines = []
     for name in chosen:
@@ -79,7 +80,7 @@ def reactions_plot(run, ax=None, *, names=None) -> ContactPlot:
     return ContactPlot.of(ax, lines)
 
 
-@checked(cycle="Cycle", ax="Axes | None")
+@checked(ax="Axes | None")
 def cycle_plot(cycle, ax=None) -> ContactPlot:
     """The reactions over one period of a fast cycle, with their means; returns the artists.
 
@@ -99,6 +100,8 @@ def cycle_plot(cycle, ax=None) -> ContactPlot:
     """
     ax = axes_or_current(ax)
     artists = []
+    needed = ("reaction_names", "tau", "reactions", "mean_reactions")
+    require(all(hasattr(cycle, a) for a in needed), "cycle_plot", "cycle", cycle, "a Cycle of fast_cycle")
     for row, name in enumerate(cycle.reaction_names):
         (line,) = ax.plot(cycle.tau, cycle.reactions[row], label=f"{name}(tau)")
         mean = ax.axhline(cycle.mean_reactions[row], color=line.get_color(), ls=":", label=f"mean {name}")

@@ -68,7 +68,7 @@ def scene(name: str):
     return _built[name]
 
 
-@checked(scene="Scene")
+@checked
 def paper_name(scene) -> str | None:
     """The built-in name of ``scene`` when it is the built-in scene object itself, else None.
 
@@ -88,7 +88,7 @@ def paper_name(scene) -> str | None:
     return name if isinstance(name, str) and _built.get(name) is scene else None
 
 
-@checked(scene="Scene")
+@checked
 def paper_knowledge(scene, attribute: str, default=None):
     """What the paper says about the built-in ``scene``: ``attribute`` of the scene's own module.
 

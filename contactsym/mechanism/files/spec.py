@@ -213,7 +213,7 @@ class Limits:
         for cap in fields(self):
             value = getattr(self, cap.name)
             if isinstance(value, bool) or not isinstance(value, int) or value < 1:
-                raise SceneError(f"Limits({cap.name}={value!r}): a cap is a whole number >= 1.")
+                raise SceneError(f"Limits({cap.name}={shorten(value)}): a cap is a whole number >= 1.")
 
 
 #: The caps :func:`file_limits` put in force, or None for the defaults (or what the caller passes).
