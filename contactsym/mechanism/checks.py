@@ -356,6 +356,8 @@ def frictionless_part(scene) -> tuple[sp.Matrix, tuple[int, ...]] | None:
     (Matrix([[2]]), (0,))
     """
     reactions = [c.reaction for c in scene.contacts]
+    if any(c.coordinate not in scene.accelerations for c in scene.contacts):
+        return None  # a gap that is no coordinate: its acceleration is not one of the scene's
     nonsmooth = set().union(*(g.atoms(sp.Abs, sp.sign) for g in scene.accelerations.values()))
     shown = {j for j, n in enumerate(reactions) for f in nonsmooth if f.args[0].has(n)}
     if any(contact.coordinate not in scene.accelerations for contact in scene.contacts):
