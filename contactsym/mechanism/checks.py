@@ -360,8 +360,6 @@ def frictionless_part(scene) -> tuple[sp.Matrix, tuple[int, ...]] | None:
         return None  # a gap that is no coordinate: its acceleration is not one of the scene's
     nonsmooth = set().union(*(g.atoms(sp.Abs, sp.sign) for g in scene.accelerations.values()))
     shown = {j for j, n in enumerate(reactions) for f in nonsmooth if f.args[0].has(n)}
-    if any(contact.coordinate not in scene.accelerations for contact in scene.contacts):
-        return None  # a gap that is no coordinate: its row is not one acceleration
     rows = []
     for contact in scene.contacts:
         terms = sp.Add.make_args(sp.expand(scene.accelerations[contact.coordinate]))
