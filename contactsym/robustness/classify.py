@@ -342,7 +342,7 @@ def _numeric_matrix(A) -> sp.Matrix:
     return M
 
 
-@checked(laws=between(0, 10**6), seed=between(0, LARGEST))
+@checked(A="sp.MatrixBase | RealArray", laws=between(0, 10**6), seed=between(0, LARGEST))
 def decide_robustness(A, laws: int = 300, seed: int = 0) -> Robustness:
     """Stable for every law, unstable for every law, law-dependent or undecided, with evidence.
 
