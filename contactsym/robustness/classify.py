@@ -357,6 +357,8 @@ def decide_robustness(A, laws: int = 300, seed: int = 0) -> Robustness:
     >>> decide_robustness(sp.Matrix([[1, 0, 0], [0, -1, 0], [0, 0, 1]])).verdict
     'unstable'
     """
+    shape = A.shape if isinstance(A, sp.MatrixBase) else np.shape(A)
+    require(len(shape) == 2 and shape[0] == shape[1] > 0, "decide_robustness", "A", A, "a square k x k matrix")
     lp = LawPolynomials(_numeric_matrix(A))
     k = lp.k
     if lp.minors[tuple(range(k))] == 0:
