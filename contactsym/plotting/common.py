@@ -17,6 +17,7 @@ import sympy as sp
 
 from ..arguments import checked
 from ..errors import SceneError
+from ..validate import shorten
 
 __all__ = ["ContactPlot", "STABLE_HATCH", "UNSTABLE_HATCH", "axes_or_current"]
 
@@ -125,7 +126,10 @@ def _scene(scene):
     contactsym.errors.SceneError: give the Scene object, e.g. contactsym.scene('brake'), not its name 'brake'.
     """
     if isinstance(scene, str):
-        raise SceneError(f"give the Scene object, e.g. contactsym.scene({scene!r}), not its name {scene!r}.")
+        name = shorten(scene)
+        raise SceneError(f"give the Scene object, e.g. contactsym.scene({name}), not its name {name}.")
+    if not callable(getattr(scene, "fast_subsystem", None)):
+        raise SceneError(f"give a Scene object, e.g. contactsym.scene('brake'), not {type(scene).__name__}.")
     return scene
 
 

@@ -342,7 +342,7 @@ def _numeric_matrix(A) -> sp.Matrix:
     return M
 
 
-@checked(laws=between(0, 10**6), seed=between(0, LARGEST))
+@checked(A="sp.MatrixBase | RealArray", laws=between(0, 10**6), seed=between(0, LARGEST))
 def decide_robustness(A, laws: int = 300, seed: int = 0) -> Robustness:
     """Stable for every law, unstable for every law, law-dependent or undecided, with evidence.
 
@@ -357,6 +357,8 @@ def decide_robustness(A, laws: int = 300, seed: int = 0) -> Robustness:
     >>> decide_robustness(sp.Matrix([[1, 0, 0], [0, -1, 0], [0, 0, 1]])).verdict
     'unstable'
     """
+    shape = A.shape if isinstance(A, sp.MatrixBase) else np.shape(A)
+    require(len(shape) == 2 and shape[0] == shape[1] > 0, "decide_robustness", "A", A, "a square k x k matrix")
     lp = LawPolynomials(_numeric_matrix(A))
     k = lp.k
     if lp.minors[tuple(range(k))] == 0:
