@@ -364,9 +364,15 @@ def require(ok: bool, label: str, name: str, value, what: str) -> None:
 
 
 def _refuse(label: str, name: str, value, hint):
+    wanted = hint if isinstance(hint, str) else describe(hint)
+    # text where SymPy objects are wanted: say why it is not parsed, and what to write instead
+    why = (
+        " (contactsym never evaluates text: build it with sympy, or read it with contactsym.parse.parse_expression)"
+        if isinstance(value, str) and ("a SymPy" in wanted or wanted.startswith("a finite SymPy"))
+        else ""
+    )
     raise ArgumentError(
-        f"{label}: {name} = {shorten(value)} ({type(value).__name__}) is not accepted; "
-        f"pass {hint if isinstance(hint, str) else describe(hint)}."
+        f"{label}: {name} = {shorten(value)} ({type(value).__name__}) is not accepted; pass {wanted}{why}."
     )
 
 

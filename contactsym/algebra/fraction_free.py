@@ -128,7 +128,14 @@ def adjugate_and_det_in_field(field, M: sp.Matrix):
 @lru_cache(maxsize=16)
 def polynomial_adjugate(M: sp.ImmutableMatrix):
     """(adj M, det M) as reduced polynomials of M's own field's ring, or None when an entry is
-    not a polynomial; cached: the fast subsystem and the sign of det M both need it."""
+    not a polynomial; cached: the fast subsystem and the sign of det M both need it.
+
+    Examples
+    --------
+    >>> x = sp.Symbol("x")
+    >>> polynomial_adjugate(sp.ImmutableMatrix([[x, 1], [1, 2]]))
+    ([[2, -1], [-1, x]], 2*x - 1)
+    """
     field = TrigField(list(M))
     entries = [[field.element(x) for x in row] for row in M.tolist()]
     if any(x.denom != 1 for row in entries for x in row):

@@ -19,7 +19,7 @@ import numpy as np
 
 from ..atomic import process_tag, remove_leftovers, umask_bits
 from ..errors import AtlasError, UsageError
-from ..validate import shorten
+from ..validate import cut
 from .grid import check_size
 from .run import sweep
 
@@ -43,8 +43,8 @@ def _axis_spec(text: str) -> tuple[str, float, float, int] | tuple[str, list]:
     name, _, spec = text.partition("=")
     name = name.strip()
     if not name or not spec:
-        raise UsageError(f"--grid {shorten(text)}: write NAME=START:STOP:COUNT or NAME=V1,V2,...")
-    what = f"--grid {shorten(text)}"
+        raise UsageError(f"--grid {cut(text)}: write NAME=START:STOP:COUNT or NAME=V1,V2,...")
+    what = f"--grid {cut(text)}"
     if ":" in spec:
         parts = spec.split(":")
         if len(parts) != 3:

@@ -23,9 +23,12 @@ from collections import Counter
 import sympy as sp
 from sympy.polys.polyerrors import PolynomialError
 
+from ..arguments import checked
+
 __all__ = ["factor_list", "split_by_degree_one"]
 
 
+@checked
 def factor_list(expr: sp.Expr) -> tuple[sp.Expr, list[tuple[sp.Expr, int]]]:
     """``sympy.factor_list(expr)``, without Wang's algorithm where degree-1 variables split the polynomial.
 
@@ -43,6 +46,7 @@ def factor_list(expr: sp.Expr) -> tuple[sp.Expr, list[tuple[sp.Expr, int]]]:
     return cheap if cheap is not None else sp.factor_list(expr)
 
 
+@checked
 def split_by_degree_one(poly: sp.Poly) -> list[sp.Poly] | None:
     """The irreducible factors of a primitive polynomial (content 1, no monomial factor, positive leading
     coefficient) found through variables of degree 1; None where that does not finish.

@@ -12,6 +12,7 @@ import itertools
 import random
 from collections.abc import Callable, Iterator
 from functools import lru_cache
+from typing import Literal
 
 import sympy as sp
 
@@ -57,6 +58,10 @@ def half_angles(expr: sp.Expr) -> sp.Expr:
 #: Numbers tried for a symbol, in turn; each is used only where it has every property the symbol has.
 _CANDIDATES = tuple(sp.Rational(c) for c in ("1", "-1", "2", "-2", "1/2", "-1/3", "3", "-5/2", "0", "7", "-7", "1/7"))
 #: Points tried before a sign is asked of SymPy's assumptions (see :func:`refuted`).
+#:
+#: >>> from contactsym.inequalities import POINTS
+#: >>> POINTS > 0
+#: True
 POINTS = 6
 
 
@@ -67,6 +72,7 @@ def _values_for(symbol: sp.Symbol) -> tuple[sp.Rational, ...]:
     return tuple(c for c in _CANDIDATES if all(getattr(c, f"is_{k}") == v for k, v in facts.items()))
 
 
+@checked(sign=Literal[1, -1])
 def refuted(value: sp.Expr, sign: int, strict: bool, points: int = POINTS) -> bool:
     """True when ``sign * value`` is exactly < 0 (or = 0, when ``strict``) at some point tried.
 

@@ -276,7 +276,14 @@ def generic_vertex_coefficients(k: int) -> tuple[tuple[tuple[int, ...], sp.Expr]
     """(subset S, coefficient) pairs: the coefficients, as polynomials in symbols m_S for the
     principal minors det(A_S), at the vertices of the Newton polytopes of the Hurwitz minors
     among the Liénard–Chipart conditions of the generic A (P3). A negative value at some A gives an
-    unstable law: the vertex of the generic support is a vertex of any support inside it."""
+    unstable law: the vertex of the generic support is a vertex of any support inside it.
+
+    Examples
+    --------
+    >>> pairs = generic_vertex_coefficients(2)
+    >>> len(pairs), pairs[0][1]
+    (8, m_1**2*m_1_2)
+    """
     subsets = [S for r in range(1, k + 1) for S in itertools.combinations(range(k), r)]
     m = {S: sp.Symbol("m_" + "_".join(str(j + 1) for j in S)) for S in subsets}
     names = [f"c{j}" for j in range(1, k + 1)] + [f"d{j}" for j in range(1, k + 1)]

@@ -43,7 +43,14 @@ EXPAND_UP_TO_K = 3
 @checked(k=between(1, 8))
 @cache
 def law_ring(k: int):
-    """QQ[c1..ck, d1..dk] and its generators."""
+    """QQ[c1..ck, d1..dk] and its generators.
+
+    Examples
+    --------
+    >>> R, gens = law_ring(2)
+    >>> gens
+    [c1, c2, d1, d2]
+    """
     names = [f"c{j}" for j in range(1, k + 1)] + [f"d{j}" for j in range(1, k + 1)]
     R, *gens = ring(",".join(names), QQ)
     return R, gens
