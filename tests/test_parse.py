@@ -13,8 +13,8 @@ from hypothesis import strategies as st
 from sympy.physics.mechanics import dynamicsymbols
 
 import contactsym as cs
-from contactsym.errors import ArgumentError
 from contactsym import parse
+from contactsym.errors import ArgumentError
 from contactsym.numerics import PointClassifier, certified_sign, decide
 from contactsym.parse import MAX_DEPTH, MAX_LENGTH, ParseError, parse_expression, sympy_only
 
