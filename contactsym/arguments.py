@@ -127,6 +127,11 @@ def _sympy_fits(value, kind) -> bool:
         return kind in (sp.Basic, sp.Expr) and _finite_number(value)
     if not isinstance(value, _LOOSE.get(kind, kind)):
         return False
+    if isinstance(value, sp.Poly):  # its args would rebuild the whole expression; read the coefficients
+        exact = (
+            value.domain.is_ZZ or value.domain.is_QQ or value.domain.is_PolynomialRing or value.domain.is_FractionField
+        )
+        return exact or not any(c.has(*_NOT_FINITE) for c in value.coeffs())
     return not value.has(*_NOT_FINITE)
 
 
