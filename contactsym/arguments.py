@@ -205,7 +205,7 @@ def fits(value, hint) -> bool:
     if origin in (typing.Union, types.UnionType):
         return any(fits(value, h) for h in typing.get_args(hint))
     if origin is typing.Literal:
-        return any(value == a and type(value) is type(a) for a in typing.get_args(hint))
+        return any(type(value) is type(a) and value == a for a in typing.get_args(hint))  # type first: no array ==
     if origin is type:
         return isinstance(value, type)
     if origin is not None:

@@ -115,3 +115,9 @@ def test_counts_that_would_run_for_ever_are_refused_at_once():
     for call in (lambda: sign_symbols(10**30), lambda: orthant_patterns(10**6), lambda: generic_minors(10**9)):
         with pytest.raises(ArgumentError, match="from"):
             call()
+
+
+def test_an_array_against_a_literal_is_refused_not_compared():
+    """Found with --hypothesis-seed=11: ``array == 'a'`` has no truth value; the type is asked first."""
+    assert not fits(np.array([[1.0, 2.0]]), Literal["a", "b"])
+    assert fits("a", Literal["a", "b"]) and not fits(True, Literal[1, -1])
