@@ -194,6 +194,8 @@ def _is(value, kind) -> bool | None:
             return False
         if kind is Path and isinstance(value, str):
             return True
+        if kind in (abc.Sequence, abc.Iterable, abc.Collection) and isinstance(value, np.ndarray):
+            return True  # the package's rule (contactsym.arguments): an array is a sequence of its entries
         return isinstance(value, kind)
     return None
 
@@ -208,7 +210,7 @@ def matches(value, hint) -> bool:
     if origin in (typing.Union, types.UnionType):
         return any(matches(value, h) for h in typing.get_args(hint))
     if origin is typing.Literal:
-        return value in typing.get_args(hint)
+        return any(type(value) is type(a) and value == a for a in typing.get_args(hint))  # no array ==
     if origin is not None:
         return _is(value, origin) is not False
     return _is(value, hint) is not False
