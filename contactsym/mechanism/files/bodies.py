@@ -43,15 +43,21 @@ def read_points(reader: FormulaReader) -> tuple[PointSpec, ...]:
     return tuple(points.values())
 
 
-def read_motion(reader: FormulaReader, points: tuple[PointSpec, ...]) -> dict:
-    """``[[masses]]``, ``[[bodies]]``, ``[energy]`` and ``[[loads]]``: the SceneSpec fields of a Lagrangian."""
-    known = [p.name for p in points]
-    masses, bodies, loads = [], [], []
+def read_masses(reader: FormulaReader, known) -> list[MassSpec]:
+    """``[[masses]]``: point masses at the named points (planar and spatial files alike)."""
+    masses = []
     for index, entry in enumerate(reader.section("masses", kind=list)):
         where = f"masses.{index}"
         reader.checked(entry, where, "masses")
         point = reader.reference(entry, "point", where, known, "[points]")
         masses.append(MassSpec(point, reader.formula(entry["mass"], where, "mass")))
+    return masses
+
+
+def read_motion(reader: FormulaReader, points: tuple[PointSpec, ...]) -> dict:
+    """``[[masses]]``, ``[[bodies]]``, ``[energy]`` and ``[[loads]]``: the SceneSpec fields of a Lagrangian."""
+    known = [p.name for p in points]
+    masses, bodies, loads = read_masses(reader, known), [], []
     for index, entry in enumerate(reader.section("bodies", kind=list)):
         where = f"bodies.{index}"
         reader.checked(entry, where, "bodies")

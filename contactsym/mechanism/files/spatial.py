@@ -36,10 +36,11 @@ from __future__ import annotations
 
 import sympy as sp
 
+from .bodies import read_masses
 from .contacts import _law
 from .declarations import _NAME, FormulaReader
 from .space import FrameSpec, Space, SpaceBodySpec, SpaceLoadSpec, SpacePointSpec, SpatialSpec, is_identity, printed
-from .spec import ContactSpec, FrictionSpec, MassSpec
+from .spec import ContactSpec, FrictionSpec
 from .toml_source import shown
 
 __all__ = ["read_space"]
@@ -121,12 +122,7 @@ def _points(reader: FormulaReader, frames) -> tuple[SpacePointSpec, ...]:
 
 
 def _motion(reader: FormulaReader, points, frames) -> dict:
-    masses, bodies, loads = [], [], []
-    for index, entry in enumerate(reader.section("masses", kind=list)):
-        where = f"masses.{index}"
-        reader.checked(entry, where, "masses")
-        point = reader.reference(entry, "point", where, points, "[points]")
-        masses.append(MassSpec(point, reader.formula(entry["mass"], where, "mass")))
+    masses, bodies, loads = read_masses(reader, points), [], []
     for index, entry in enumerate(reader.section("bodies", kind=list)):
         where = f"bodies.{index}"
         reader.checked(entry, where, "bodies")
