@@ -119,3 +119,10 @@ def test_text_is_never_executed_where_expressions_are_taken():
     ]
     executed = [fuzz.outcome(fuzz.Case("text", call, True))[0] == "evaluated text" for call in calls]
     assert executed == [False, False, False]
+
+
+def test_slow_valid_calls_get_their_measured_limit_and_wrong_calls_do_not():
+    slow = next(iter(fuzz.SLOW_VALID))
+    assert fuzz.call_limit(slow, [], 30.0) == fuzz.SLOW_VALID[slow] > 30.0
+    assert fuzz.call_limit(slow, ["dpi"], 30.0) == 30.0  # a wrong argument must be refused at once
+    assert fuzz.call_limit("contactsym.scene", [], 30.0) == 30.0
