@@ -6,7 +6,9 @@ this subpackage exports nothing of its own. Its modules are leaves below every o
 contactsym (they import only :mod:`contactsym.errors` and each other):
 
 - :mod:`~contactsym.boundary.plain_values`: user text cut short for messages, and checks of
-  flags, paths and plain-typed dataclass fields, for ``contactsym.validate``.
+  flags, paths and plain-typed dataclass fields, for ``contactsym.validate``;
+- :mod:`~contactsym.boundary.hints`: one value against one type hint (``fits``), and what a
+  hint asks for in words (``describe``), for ``contactsym.arguments.checked``.
 """
 
 __all__: list[str] = []
