@@ -1,5 +1,7 @@
 """Command line.
 
+The argument parser and the text the commands print are in :mod:`contactsym.command_line`.
+
 SCENE is a built-in scene's name or the path of a scene file (``my.toml``, see
 :mod:`contactsym.mechanism.files.reader`).
 
@@ -35,315 +37,34 @@ directory, a pdflatex error).
 
 from __future__ import annotations
 
-import argparse
-import difflib
 import json
 import os
 import sys
 import time
-from contextlib import ExitStack
-from dataclasses import fields
 from pathlib import Path
 
 import sympy as sp
 
 from .atomic import last_signal, replaced_directory, scratch_directory, signals_as_exceptions
+from .command_line.options import FAILURE, USAGE, command_parser, parse_signs, raised_limits
+from .command_line.options import LIMIT_NAMES as LIMIT_NAMES
+from .command_line.options import parse_setting as parse_setting
+from .command_line.output import conditions_latex, conditions_text, derivation_chain
 from .errors import ContactsymError, SceneError, SignPatternError
 from .mechanism.files.reader import scene_or_file
-from .mechanism.files.spec import Limits, file_limits
 from .mechanism.scene import Scene
-from .parse import CAPS, ParseError, formula_caps, parse_expression
+from .parse import ParseError
 from .scenes import DEFAULT_SCENE, scene, scene_names
 from .validate import cut, path_text, shorten
 
 __all__ = ["derivation_chain", "main"]
 
-#: Exit codes.
-USAGE, FAILURE = 2, 1
-
-
-def derivation_chain(name) -> str:
-    """The derivation chain of a scene (a built-in name, a scene file or a Scene), as plain text.
-
-    Examples
-    --------
-    >>> print(derivation_chain("sliding-point").splitlines()[0])
-    scene sliding-point: (1.10)-(1.12): a point sliding on a rough line, Kelvin-Voigt contact
-    """
-    s = name if isinstance(name, Scene) else scene_or_file(name)
-    fast = s.fast_subsystem()
-    lin = s.linearization()
-    st = s.stability()
-    lines = [f"scene {s.name}: {s.description}", "", "accelerations (1.4):"]
-    lines += [f"  {s.plain(q)}'' = {s.plain(g)}" for q, g in s.accelerations.items()]
-    lines += ["", "fast subsystem (2.1), tau = t/eps:"]
-    lines += [f"  {eq.lhs} = {eq.rhs}" for eq in fast.equations]
-    lines += ["", "equilibria f(u*) = 0 (4.2):"]
-    for branch in s.equilibria():
-        lines.append(f"  signs {branch.signs}: u* = {branch.u_star}, exists where {branch.condition}")
-    lines += [
-        "",
-        f"A (4.3) = {lin.A.tolist()}",
-        f"det A = {lin.det_A}",
-        f"characteristic polynomial (4.6): {lin.charpoly.as_expr()}",
-        "",
-        "Hurwitz conditions (4.7), all > 0:",
-    ]
-    lines += [f"  {c}" for c in st.hurwitz]
-    lines += [
-        "",
-        "for every admissible contact law:",
-        f"  stable where   {_verdict_text(st.robustly_stable)}",
-        f"  unstable where {_verdict_text(st.robustly_unstable)}",
-        f"  law-dependent where {_verdict_text(st.law_dependent)}",
-    ]
-    if st.k >= 3 and st.A.free_symbols and st.undecided != sp.false:
-        lines.append(f"  undecided where {st.undecided}")
-    if st.hopf_frequency is not None:
-        lines.append(f"Hopf frequency omega (stretched time) = {st.hopf_frequency}")
-    return "\n".join(lines)
-
-
-def _verdict_text(value) -> str:
-    """A robustness statement as text: its region, or "undecided" where it is neither proved nor disproved."""
-    return "undecided" if value is None else str(value)
-
-
-# --- conditions -------------------------------------------------------------------------------
-
-
-def parse_signs(text: str) -> tuple[int, ...]:
-    """A sign pattern from the command line: ``+1,-1`` or ``+,-`` (no expression is evaluated).
-
-    Examples
-    --------
-    >>> parse_signs("+1,-1"), parse_signs("+ -"), parse_signs("1")
-    ((1, -1), (1, -1), (1,))
-    >>> parse_signs("1,x")
-    Traceback (most recent call last):
-    ...
-    contactsym.errors.SignPatternError: --signs: 'x' is not a sign; write e.g. --signs +1,-1.
-    """
-    values = {"+1": 1, "1": 1, "+": 1, "-1": -1, "-": -1}
-    tokens = text.replace(",", " ").split()
-    if not tokens:
-        raise SignPatternError("--signs is empty; write e.g. --signs +1,-1.")
-    for token in tokens:
-        if token not in values:
-            raise SignPatternError(f"--signs: {shorten(token)} is not a sign; write e.g. --signs +1,-1.")
-    return tuple(values[token] for token in tokens)
-
-
-def conditions_text(data: dict) -> str:
-    """The conditions of :func:`contactsym.report.conditions` as plain text, in full."""
-    lines = [f"{data['scene']}: {data['description']}"]
-    if data.get("signs"):
-        lines.append(f"sign pattern {tuple(data['signs'])}")
-    lines.append("closed-form regions:")
-    for name, entry in data["regions"].items():
-        cite = ", ".join(entry.get("paper", []))
-        lines.append(f"  {name}: {entry['sympy']}" + (f"   {cite}" if cite else ""))
-    if data.get("equilibrium_counts"):
-        lines.append("number of equilibria:")
-        for name, entry in data["equilibrium_counts"].items():
-            cite = ", ".join(entry.get("paper", []))
-            lines.append(f"  {name}: {entry['sympy']}" + (f"   {cite}" if cite else ""))
-    lines.append("Routh-Hurwitz conditions (4.7), all > 0:")
-    for entry in data["hurwitz"]:
-        name = entry["name"].replace("\\", "").replace("{", "").replace("}", "")
-        lines.append(
-            f"  {name} > 0 always: {entry['always']}" if entry.get("always") else f"  {name} = {entry['sympy']}"
-        )
-    if data.get("hopf_frequency"):
-        lines.append(f"Hopf frequency omega (stretched time tau) = {data['hopf_frequency']['sympy']}")
-    return "\n".join(lines)
-
-
-def conditions_latex(data: dict) -> str:
-    r"""The conditions as a LaTeX fragment (amsmath ``align*``), one numbered line each.
-
-    Examples
-    --------
-    >>> from contactsym.report import conditions
-    >>> print(conditions_latex(conditions(scene("brake"))).splitlines()[2])
-    \text{stable for every law:} &\quad \mu \leq \left|{\cot{\left(\alpha \right)}}\right| \tag*{(4.4), (6.3)} \\
-    """
-    lines = [f"% contactsym conditions: {data['scene']}", r"\begin{align*}"]
-    rows = []
-    for name, entry in data["regions"].items():
-        rows.append((name, entry))
-    for name, entry in (data.get("equilibrium_counts") or {}).items():
-        rows.append((f"equilibria, {name}", entry))
-    for entry in data["hurwitz"]:
-        rows.append((None, {**entry, "latex": f"{entry['name']} = {entry['latex']}"}))
-    if data.get("hopf_frequency"):
-        rows.append((None, {**data["hopf_frequency"], "latex": r"\omega = " + data["hopf_frequency"]["latex"]}))
-    body = []
-    for name, entry in rows:
-        label = r"\text{" + name.replace("_", r"\_") + r":} " if name else ""
-        tag = r" \tag*{" + ", ".join(entry["paper"]) + "}" if entry.get("paper") else ""
-        body.append(f"{label}&\\quad {entry['latex']}{tag}")
-    lines.append(" \\\\\n".join(body) + " \\\\")
-    lines.append(r"\end{align*}")
-    return "\n".join(lines)
-
-
-# --- the command line ----------------------------------------------------------------------------
-
-
-class _Parser(argparse.ArgumentParser):
-    """argparse with one-line errors."""
-
-    def error(self, message: str):
-        message = cut(message, 200)
-        self.exit(USAGE, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
-
-
-#: The caps ``--limit`` raises: a scene file's sizes, then its formulas'.
-LIMIT_NAMES = tuple(f.name for f in fields(Limits)) + CAPS
-
-
-def _limit(text: str) -> tuple[str, int]:
-    """One ``--limit CAP=N``: a cap's name (:data:`LIMIT_NAMES`) and a whole number >= 1."""
-    name, equals, value = text.partition("=")
-    name = name.strip()
-    if not equals or name not in LIMIT_NAMES:
-        close = difflib.get_close_matches(name, LIMIT_NAMES, n=1)
-        hint = f"did you mean {close[0]}? " if close else ""
-        raise argparse.ArgumentTypeError(
-            f"{cut(text, 40)!r} is not CAP=N; {hint}give e.g. --limit max_degree=64 (--help lists the caps)"
-        )
-    return name, _positive_int(value.strip())
-
-
-def _add_limit(parser: argparse.ArgumentParser, dest: str) -> None:
-    parser.add_argument(
-        "--limit",
-        dest=dest,
-        action="append",
-        type=_limit,
-        default=[],
-        metavar="CAP=N",
-        help=f"raise a cap on scene files for this run (repeatable); CAP is one of {', '.join(LIMIT_NAMES)}",
-    )
-
-
-def _raised_limits(pairs) -> ExitStack:
-    """The caps of ``--limit`` in force: file sizes through ``file_limits``, formulas through ``formula_caps``."""
-    values = dict(pairs)
-    stack = ExitStack()
-    sizes = {name: value for name, value in values.items() if name not in CAPS}
-    if sizes:
-        stack.enter_context(file_limits(Limits(**sizes)))
-    stack.enter_context(formula_caps(**{name: value for name, value in values.items() if name in CAPS}))
-    return stack
-
-
-def _parser() -> argparse.ArgumentParser:
-    names = ", ".join(scene_names()) + ", or a scene file (.toml)"
-    parser = _Parser(prog="contactsym", description="Exact stability of frictional compliant contacts.")
-    _add_limit(parser, "limits")
-    sub = parser.add_subparsers(dest="command", parser_class=_Parser)
-    show = sub.add_parser("show", help="print the derivation chain of a scene")
-    _add_limit(show, "command_limits")
-    show.add_argument("scene", nargs="?", default=DEFAULT_SCENE, help=f"one of {names}")
-    _add_set(show)
-    sub.add_parser("list", help="list the built-in scenes")
-    cond = sub.add_parser("conditions", help="print a scene's stability conditions and regions")
-    _add_limit(cond, "command_limits")
-    cond.add_argument("scene", help=f"one of {names}")
-    cond.add_argument("--format", choices=("text", "latex", "json"), default="text", help="output format")
-    cond.add_argument("--signs", help="one sign pattern of the switching functions, e.g. +1,-1")
-    _add_set(cond)
-    report = sub.add_parser("report", help="write a LaTeX/PDF report per scene, with figures and conditions.json")
-    _add_limit(report, "command_limits")
-    report.add_argument("scenes", nargs="*", metavar="SCENE", help=f"scenes to report (default: all of {names})")
-    report.add_argument(
-        "--out", default="contactsym-report", type=_path, help="output directory (default: contactsym-report)"
-    )
-    report.add_argument("--no-pdf", action="store_true", help="write report.tex but do not run pdflatex")
-    report.add_argument("--force", action="store_true", help="replace scene directories that contactsym did not write")
-    report.add_argument(
-        "--resolution",
-        type=_positive_int,
-        metavar="N",
-        help="grid points per axis of the region maps (default: 400 for the paper's figures, 200 otherwise)",
-    )
-    report.add_argument("--dpi", type=_positive_int, metavar="N", help="dots per inch of the figures (default: 150)")
-    _add_set(report)
-    bench = sub.add_parser("bench", help="run the benchmarks (source checkout); table and plots in --out")
-    bench.add_argument("--quick", action="store_true", help="smaller sweeps, under 3 minutes")
-    bench.add_argument("--json", metavar="FILE", type=_path, help="write the records as a JSON list to FILE")
-    bench.add_argument(
-        "--out",
-        default="contactsym-bench",
-        type=_path,
-        help="folder for the table and plots (default: contactsym-bench)",
-    )
-    bench.add_argument("--force", action="store_true", help="replace an --out folder that contactsym did not write")
-    from .atlas.cli import add_atlas_command  # the atlas imports Dask and xarray only when it runs
-
-    add_atlas_command(sub)
-    return parser
-
-
-def _add_set(command) -> None:
-    command.add_argument(
-        "--set",
-        dest="values",
-        action="append",
-        type=parse_setting,
-        default=[],
-        metavar="NAME=VALUE",
-        help="fix a parameter at a number before the derivation (repeat it: --set m1=1 --set l1=0.5)",
-    )
-
-
-def parse_setting(text: str) -> tuple[str, sp.Expr]:
-    """``NAME=VALUE`` from the command line: a name and an exact number (the formula parser reads
-    the value with no names declared, so only numbers, pi and functions of them pass).
-
-    Examples
-    --------
-    >>> parse_setting("m1=1/2"), parse_setting("l = 0.1")
-    (('m1', 1/2), ('l', 1/10))
-    >>> parse_setting("m1")
-    Traceback (most recent call last):
-    ...
-    argparse.ArgumentTypeError: 'm1' is not NAME=VALUE; write e.g. --set m1=1.5
-    """
-    name, equals, value = text.partition("=")
-    name = name.strip()
-    if not equals or not name.isidentifier():
-        raise argparse.ArgumentTypeError(f"{cut(text)!r} is not NAME=VALUE; write e.g. --set m1=1.5")
-    try:
-        number = parse_expression(value.strip(), {}, source="--set")
-    except ParseError as error:
-        raise argparse.ArgumentTypeError(f"--set {cut(name)}: {error}") from None
-    if not (number.is_real and number.is_finite):
-        raise argparse.ArgumentTypeError(f"--set {cut(name)}: {cut(value)!r} is not a finite real number")
-    return name, number
+# the argument parser by its name before the split (benchmarks/boundary.py reads it)
+_parser = command_parser
 
 
 def _with_values(s: Scene, values: list) -> Scene:
     return s.with_values(dict(values)) if values else s
-
-
-def _positive_int(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{cut(text)!r} is not a whole number; give e.g. 100") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"{value} is not positive; give e.g. 100")
-    return value
-
-
-def _path(text: str) -> str:
-    """A path argument: not empty (an empty --out would mean the current directory)."""
-    if not text.strip():
-        raise argparse.ArgumentTypeError("the path is empty; name a file or directory")
-    return text
 
 
 def _progress(message: str) -> None:
@@ -463,14 +184,14 @@ def main(argv: list[str] | None = None) -> int:
 
 def _main(argv: list[str] | None) -> int:
     try:
-        args = _parser().parse_args(argv)
+        args = command_parser().parse_args(argv)
     except SystemExit as stop:  # --help, or a usage error already printed in one line
         return int(stop.code or 0)
     except KeyboardInterrupt as stop:
         print("contactsym: interrupted", file=sys.stderr)
         return getattr(stop, "exit_code", 130)
     try:
-        with sp.evaluate(True), _raised_limits(args.limits + getattr(args, "command_limits", [])):
+        with sp.evaluate(True), raised_limits(args.limits + getattr(args, "command_limits", [])):
             code = _run(args)
         sys.stdout.flush()
         if last_signal() is not None:  # it landed where Python swallows exceptions (a finalizer): still a stop

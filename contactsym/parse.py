@@ -35,19 +35,18 @@ whole process, ``contactsym.parse.MAX_DEGREE = 100``.
 
 The Python API takes SymPy objects and numbers only: :func:`sympy_only` is the check
 that its entry points run on their inputs, and a string there is an error that points
-here.
+here. It, the tokenizer and :data:`FUNCTIONS` live in :mod:`contactsym.boundary.formula_text`.
 """
 
 from __future__ import annotations
 
 import difflib
-import re
 from collections.abc import Iterator, Mapping
 from contextlib import AbstractContextManager, contextmanager
-from dataclasses import dataclass
 
 import sympy as sp
 
+from .boundary.formula_text import CONSTANTS, FUNCTIONS, Token, shown, sympy_only, tokens, where
 from .errors import ParseError
 from .validate import cut
 
@@ -65,29 +64,6 @@ __all__ = [
     "parse_expression",
     "sympy_only",
 ]
-
-#: The functions a formula may call, by name, with their number of arguments.
-FUNCTIONS = {
-    "sin": (sp.sin, 1),
-    "cos": (sp.cos, 1),
-    "tan": (sp.tan, 1),
-    "cot": (sp.cot, 1),
-    "asin": (sp.asin, 1),
-    "acos": (sp.acos, 1),
-    "atan": (sp.atan, 1),
-    "atan2": (sp.atan2, 2),
-    "sinh": (sp.sinh, 1),
-    "cosh": (sp.cosh, 1),
-    "tanh": (sp.tanh, 1),
-    "sqrt": (sp.sqrt, 1),
-    "exp": (sp.exp, 1),
-    "log": (sp.log, 1),
-    "Abs": (sp.Abs, 1),
-    "sign": (sp.sign, 1),
-}
-
-#: Constants every formula may use.
-CONSTANTS = {"pi": sp.pi}
 
 #: Longest formula accepted, in characters.
 MAX_LENGTH = 10_000
@@ -147,69 +123,21 @@ def _caps_in_force(caps: dict) -> Iterator[None]:
         globals().update({name.upper(): value for name, value in saved.items()})
 
 
-_TOKEN = re.compile(
-    r"(?P<space>\s+)|(?P<number>(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)|(?P<name>[A-Za-z][A-Za-z0-9_]*'*)"
-    r"|(?P<op>\*\*|[-+*/^(),])"
-)
-
-
-@dataclass(frozen=True)
-class _Token:
-    kind: str  # 'number', 'name', 'op' or 'end'
-    text: str
-    column: int  # 0-based
-
-
-def _where(source: str, line: int, column: int) -> str:
-    return f"{source}:{line}:{column + 1}"
-
-
-def _digits(n: int) -> int:
-    """Decimal digits of n, without printing it (Python refuses to print ints of over 4300 digits)."""
-    n = abs(n)
-    estimate = max(1, int(n.bit_length() * 0.30102999566398120))
-    return estimate + (n >= 10**estimate)
-
-
-def _shown(expr: sp.Basic) -> str:
-    """An expression for a message, cut short; a huge number by its number of digits."""
-    if expr.is_Rational and max(abs(expr.p), expr.q).bit_length() > 300:
-        return f"a number of {_digits(max(abs(expr.p), expr.q))} digits"
-    return cut(str(expr))
-
-
-def _tokens(text: str, fail) -> list[_Token]:
-    tokens, position = [], 0
-    while position < len(text):
-        match = _TOKEN.match(text, position)
-        if match is None:
-            bad = text[position]
-            hint = (
-                " (attributes, strings, brackets and other Python are not formulas)" if bad in ".[]{}'\"_:=<>" else ""
-            )
-            fail(position, f"unexpected character {bad!r}{hint}; expected a number, a name, an operator or '('")
-        if match.lastgroup != "space":
-            tokens.append(_Token(match.lastgroup, match.group(), position))
-        position = match.end()
-    tokens.append(_Token("end", "", len(text)))
-    return tokens
-
-
 class _Parser:
     """Recursive descent over the tokens; each method parses one rule of the grammar."""
 
     def __init__(self, text: str, names: Mapping, source: str, line: int, column: int):
         self.text, self.names, self.source, self.line, self.column = text, names, source, line, column
-        self.tokens = _tokens(text, self.fail)
+        self.tokens = tokens(text, self.fail)
         self.position = 0
         self.depth = 0
         self.calls = 0  # function calls open around the current token
 
     def fail(self, column: int, message: str):
-        raise ParseError(f"{_where(self.source, self.line, self.column + column)}: {message}.")
+        raise ParseError(f"{where(self.source, self.line, self.column + column)}: {message}.")
 
     @property
-    def token(self) -> _Token:
+    def token(self) -> Token:
         return self.tokens[self.position]
 
     def take(self, *texts: str) -> bool:
@@ -246,7 +174,7 @@ class _Parser:
         """``expr``, checked where numbers are made: digits of a rational, size of any other number."""
         if expr.is_Rational:
             if max(abs(expr.p), expr.q) >= 10**MAX_DIGITS:
-                self.cap(column, _shown(expr), "MAX_DIGITS", "use smaller numbers")
+                self.cap(column, shown(expr), "MAX_DIGITS", "use smaller numbers")
         elif expr.is_number:
             if expr.has(sp.zoo, sp.nan, sp.oo, sp.S.NegativeInfinity):
                 self.fail(column, f"{cut(str(expr))} is not finite; check for a division by zero")
@@ -276,7 +204,7 @@ class _Parser:
                 if max(abs(node.exp.p), node.exp.q) > MAX_DEGREE:
                     self.cap(
                         0,
-                        f"the power {_shown(node.exp)} of {cut(str(node.base))} (powers combined)",
+                        f"the power {shown(node.exp)} of {cut(str(node.base))} (powers combined)",
                         "MAX_DEGREE",
                         "write a lower power",
                     )
@@ -348,7 +276,7 @@ class _Parser:
     def power_bounded(self, base: sp.Expr, exponent: sp.Rational, column: int) -> None:
         """Refuse a power before SymPy computes it: a number's in full (9^9^9), a symbol's later, in the pipeline."""
         size = max(abs(exponent.p), exponent.q)
-        power = f"the power {_shown(exponent)} of {cut(str(base))}"
+        power = f"the power {shown(exponent)} of {cut(str(base))}"
         if base.is_Rational:
             bits = (base.p.bit_length() + base.q.bit_length()) * abs(exponent)
             if abs(exponent) > MAX_EXPONENT or bits > 64 * MAX_EXPONENT:
@@ -385,7 +313,7 @@ class _Parser:
             return expr
         self.fail(token.column, f"expected a number, a name or '(', found {self._found()}")
 
-    def call(self, token: _Token) -> sp.Expr:
+    def call(self, token: Token) -> sp.Expr:
         function, arity = FUNCTIONS[token.text]
         self.expect("(", "'('")
         self.nest()
@@ -402,7 +330,7 @@ class _Parser:
             self.fail(token.column, f"{token.text} takes {arity} argument(s), got {len(arguments)}")
         return self.bounded(function(*arguments), token.column)
 
-    def name(self, token: _Token) -> sp.Expr:
+    def name(self, token: Token) -> sp.Expr:
         if token.text in self.names:
             return self.names[token.text]
         if token.text in CONSTANTS:
@@ -463,41 +391,11 @@ def parse_expression(
         )
     names = dict(names or {})
     if not isinstance(text, str):
-        raise ParseError(f"{_where(source, line, column)}: a formula must be text, not {type(text).__name__}.")
+        raise ParseError(f"{where(source, line, column)}: a formula must be text, not {type(text).__name__}.")
     if len(text) > MAX_LENGTH:
         raise ParseError(
-            f"{_where(source, line, column)}: the formula has {len(text)} characters, more than "
+            f"{where(source, line, column)}: the formula has {len(text)} characters, more than "
             f"contactsym.parse.MAX_LENGTH = {MAX_LENGTH}; split it into named parts, or {_how_to_raise('MAX_LENGTH')}."
         )
     with sp.evaluate(True):
         return _Parser(text, names, source, line, column).parse()
-
-
-def sympy_only(value, what: str):
-    """``value`` as a SymPy object, if it is one or a number; text and other objects are refused.
-
-    The Python API calls this on every expression it receives, so no string reaches
-    ``sympify``. Text formulas go through :func:`parse_expression`, with declared names.
-
-    Examples
-    --------
-    >>> sympy_only(0.5, "eps"), sympy_only(sp.Symbol("x") + 1, "a")
-    (0.500000000000000, x + 1)
-    >>> sympy_only("__import__('os').system('true')", "eps")
-    Traceback (most recent call last):
-    ...
-    contactsym.errors.ParseError: eps is text ("__import__('os').system('true')"); contactsym never evaluates text: pass a SymPy expression or a number, or parse a formula with contactsym.parse_expression(text, names).
-    """
-    if isinstance(value, (str, bytes)):
-        raise ParseError(
-            f"{what} is text ({cut(repr(value))}); contactsym never evaluates text: pass a SymPy expression "
-            "or a number, or parse a formula with contactsym.parse_expression(text, names)."
-        )
-    if isinstance(value, (sp.Basic, sp.MatrixBase)):
-        return value
-    try:
-        return sp.sympify(value, strict=True)
-    except (sp.SympifyError, TypeError, ValueError) as error:
-        raise ParseError(
-            f"{what} = {cut(repr(value))} of type {type(value).__name__} is neither a SymPy object nor a number."
-        ) from error

@@ -7,6 +7,8 @@ cut to :data:`SHOWN` characters, so a huge name cannot flood a terminal.
 
 Text that would have to be parsed is not handled here: no function in this module
 passes anything to ``sympify`` that is not already a number or a SymPy object.
+The text-cutting rule (:func:`cut`, :func:`shorten`) and the checks of flags, paths and
+dataclass fields are defined in :mod:`contactsym.boundary.plain_values`.
 
 Examples
 --------
@@ -23,15 +25,14 @@ contactsym.errors.SignPatternError: sign 0 at position 1 must be +1 or -1; write
 from __future__ import annotations
 
 import math
-import os
 from collections.abc import Iterable, Sequence
-from fractions import Fraction
 
 import numpy as np
 import sympy as sp
 from sympy.physics.vector import Point, ReferenceFrame, Vector
 
-from .errors import ComplianceError, ContactsymError, NumericsError, SceneError, SignPatternError
+from .boundary.plain_values import NUMBER_TYPES, SHOWN, checked_fields, cut, flag, instance_of, path_text, shorten
+from .errors import ComplianceError, NumericsError, SceneError, SignPatternError
 
 __all__ = [
     "SHOWN",
@@ -58,35 +59,7 @@ __all__ = [
     "solver_method",
 ]
 
-#: The most characters of user text that a message repeats.
-SHOWN = 60
-
-_NUMBER_TYPES = (int, float, Fraction, np.integer, np.floating)
 _NOT_FINITE = (sp.nan, sp.zoo, sp.oo, sp.S.NegativeInfinity)
-
-
-def cut(text: str, limit: int = SHOWN, *, count: bool = True) -> str:
-    """``text`` cut to ``limit`` characters: the one text-cutting rule of contactsym.
-
-    With ``count`` (messages) the first ``limit`` characters are kept and the message says how
-    long the text was; without it (tables, summaries) the result, ``...`` included, fits in
-    ``limit`` characters.
-
-    Examples
-    --------
-    >>> cut("x" * 70)
-    'xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx... (70 characters)'
-    >>> cut("mu <= Abs(cot(alpha))", 12, count=False)
-    'mu <= Abs...'
-    """
-    if len(text) <= limit:
-        return text
-    return f"{text[:limit]}... ({len(text)} characters)" if count else text[: limit - 3] + "..."
-
-
-def shorten(value, limit: int = SHOWN) -> str:
-    """``repr`` of a string, ``str`` of anything else, cut to ``limit`` characters."""
-    return cut(repr(value) if isinstance(value, str) else str(value), limit)
 
 
 def _sequence(value, what: str, hint: str, error=SceneError) -> tuple:
@@ -94,86 +67,6 @@ def _sequence(value, what: str, hint: str, error=SceneError) -> tuple:
     if isinstance(value, (str, bytes, dict)) or not isinstance(value, Iterable):
         raise error(f"{what} must be a list, not {type(value).__name__} {shorten(value)}; {hint}.")
     return tuple(value)
-
-
-# --- flags, paths and types ---------------------------------------------------------------------
-
-
-def flag(value, what: str, error=ContactsymError) -> bool:
-    """A flag must be True or False: ``force="no"`` is text, and text is not a flag.
-
-    Examples
-    --------
-    >>> flag(False, "force")
-    False
-    >>> flag("no", "force")
-    Traceback (most recent call last):
-    ...
-    contactsym.errors.ContactsymError: force = 'no' must be True or False (a bool), not str.
-    """
-    if not isinstance(value, (bool, np.bool_)):
-        raise error(f"{what} = {shorten(value)} must be True or False (a bool), not {type(value).__name__}.")
-    return bool(value)
-
-
-def path_text(value, what: str, error=ContactsymError) -> str:
-    """A file or directory name: text or an ``os.PathLike``, not empty, without NUL characters."""
-    if isinstance(value, os.PathLike):
-        value = os.fspath(value)
-    if not isinstance(value, str):
-        raise error(f"{what} = {shorten(value)} must be a path (text or pathlib.Path), not {type(value).__name__}.")
-    if not value.strip() or "\x00" in value:
-        raise error(f"{what} = {shorten(value)} is not a usable path; name a file or directory.")
-    return value
-
-
-def instance_of(value, kinds, what: str, hint: str, error=ContactsymError, optional: bool = False):
-    """``value`` if it is one of ``kinds`` (or None when ``optional``), else a clear error ending with ``hint``."""
-    if (optional and value is None) or (isinstance(value, kinds) and not isinstance(value, bool)):
-        return value
-    raise error(f"{what} = {shorten(value)} ({type(value).__name__}) is not accepted; {hint}.")
-
-
-_PLAIN_TYPES = {"str": str, "bool": bool, "int": int, "float": float, "tuple": tuple, "list": list, "dict": dict}
-
-
-def _fits(value, hint: str) -> bool | None:
-    """Whether ``value`` fits a plain type hint written as text (None: the hint is not a plain one)."""
-    verdicts = []
-    for part in (p.strip() for p in hint.split("|")):
-        base = part.split("[")[0]
-        if base == "None":
-            verdicts.append(value is None)
-        elif base in ("Path", "pathlib.Path"):
-            verdicts.append(isinstance(value, (str, os.PathLike)))
-        elif base in ("sp.Basic", "sp.Expr", "sympy.Basic"):
-            verdicts.append(isinstance(value, (sp.Basic, *_NUMBER_TYPES)) and not isinstance(value, bool))
-        elif base in ("Mapping", "dict"):
-            verdicts.append(isinstance(value, dict) or hasattr(value, "keys") and hasattr(value, "__getitem__"))
-        elif base in _PLAIN_TYPES:
-            kind = _PLAIN_TYPES[base]
-            if kind is bool:
-                verdicts.append(isinstance(value, (bool, np.bool_)))
-            elif kind in (int, float):
-                ok = isinstance(value, (int, np.integer) if kind is int else _NUMBER_TYPES)
-                verdicts.append(ok and not isinstance(value, (bool, np.bool_)))
-            else:
-                verdicts.append(isinstance(value, kind))
-        else:
-            return None
-    return any(verdicts)
-
-
-def checked_fields(record, error=ContactsymError) -> None:
-    """Each field of a dataclass ``record`` whose hint is a plain type (text, number, flag, tuple, dict,
-    SymPy object, path, or a union of these) must hold a value of that type; call it in ``__post_init__``."""
-    for name, spec in getattr(type(record), "__dataclass_fields__", {}).items():
-        hint = spec.type if isinstance(spec.type, str) else getattr(spec.type, "__name__", "")
-        value = getattr(record, name)
-        if _fits(value, hint) is False:
-            raise error(
-                f"{type(record).__name__}: {name} = {shorten(value)} must be {hint}, not {type(value).__name__}."
-            )
 
 
 # --- SymPy objects and numbers ---------------------------------------------------------------
@@ -192,7 +85,7 @@ def finite_expression(expr, what: str, error=SceneError) -> sp.Expr:
     ...
     contactsym.errors.SceneError: the acceleration = oo*N is not finite (it contains oo); write it with finite numbers.
     """
-    if isinstance(expr, _NUMBER_TYPES) and not isinstance(expr, bool):
+    if isinstance(expr, NUMBER_TYPES) and not isinstance(expr, bool):
         expr = sp.sympify(expr)
     if not isinstance(expr, sp.Basic):
         raise error(f"{what} must be a SymPy expression or a number, not {type(expr).__name__} {shorten(expr)}.")
@@ -210,9 +103,9 @@ def positive_parameter(value, what: str, why: str, error=SceneError) -> None:
     """
     if isinstance(value, str):
         return
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (sp.Basic, *_NUMBER_TYPES)):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (sp.Basic, *NUMBER_TYPES)):
         raise error(f"{what} must be a number or a SymPy symbol, not {type(value).__name__} {shorten(value)}.")
-    if isinstance(value, _NUMBER_TYPES):
+    if isinstance(value, NUMBER_TYPES):
         value = sp.sympify(value)
     if value.has(*_NOT_FINITE):
         kind = "not a number" if value.has(sp.nan) else "infinite"
@@ -343,7 +236,7 @@ def _check_accelerations(coordinates: tuple, accelerations) -> tuple:
             f"got {len(accelerations)} accelerations for {len(coordinates)} coordinates; give one per coordinate."
         )
     for q, g in zip(coordinates, accelerations):
-        if not isinstance(g, (str, sp.Basic, *_NUMBER_TYPES)) or isinstance(g, bool):
+        if not isinstance(g, (str, sp.Basic, *NUMBER_TYPES)) or isinstance(g, bool):
             raise SceneError(f"the acceleration of {q} must be a SymPy expression, not {type(g).__name__}.")
     return accelerations
 
@@ -459,7 +352,7 @@ def chunk_size(chunk) -> int:
 
 def finite_number(value, what: str) -> float:
     """A finite float from a real number."""
-    if isinstance(value, _NUMBER_TYPES) and not isinstance(value, (bool, np.bool_)):
+    if isinstance(value, NUMBER_TYPES) and not isinstance(value, (bool, np.bool_)):
         if math.isfinite(float(value)):
             return float(value)
     raise NumericsError(f"{what} = {shorten(value)} must be a finite number.")

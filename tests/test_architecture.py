@@ -21,7 +21,7 @@ PACKAGE = pathlib.Path(contactsym.__file__).parent
 BELOW_THE_SCENE = ("stages", "counts", "algebra", "inequalities", "robustness", "lyapunov", "laws", "printing")
 
 #: What the stages are below: the scene and its registry, output and numerics.
-ABOVE_THE_STAGES = ("mechanism", "scenes", "plotting", "report", "numerics", "atlas", "cli")
+ABOVE_THE_STAGES = ("mechanism", "scenes", "plotting", "report", "numerics", "atlas", "cli", "command_line")
 
 #: At most this many modules at the top level; the rest live in the subpackage of their domain.
 TOP_LEVEL_LIMIT = 14

@@ -3,7 +3,8 @@ r"""Robustness to the contact law for any number of contacts: certificates and w
 An equilibrium with Jacobian A is *stable for every law*, *unstable for every law* (no
 admissible law makes (4.5) asymptotically stable) or *law-dependent* (some law is stable,
 another is not). :func:`decide_robustness` answers this for a numeric A, with evidence;
-:func:`regions` gives closed-form sufficient regions for a symbolic A.
+:func:`regions` gives closed-form sufficient regions for a symbolic A
+(:mod:`contactsym.robustness.closed_form`).
 
 Notation: c_j = -Phi_j > 0, d_j = -Psi_j > 0. The coefficients p_s of (4.6) and the
 Hurwitz minors Delta_m are polynomials in (c, d) (:mod:`contactsym.robustness.law_polynomials`):
@@ -97,14 +98,12 @@ Examples
 
 from __future__ import annotations
 
-import itertools
 from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 from sympy.polys.domains import QQ
 
-from ..algebra.basic import normalize
 from ..arguments import LARGEST, between, checked, require
 from ..deprecation import deprecated_alias, deprecated_names
 from ..errors import ContactsymError
@@ -113,12 +112,12 @@ from .certificates import (
     climbed_laws,
     damped_positivstellensatz_certificate,
     fisher_fuller_laws,
-    generic_vertex_coefficients,
     positivstellensatz_certificate,
     sampled_laws,
     vertex_laws,
     weak_damping_laws,
 )
+from .closed_form import nested_sequences, regions
 from .law_polynomials import LawPolynomials, fast_spectral_abscissa
 
 __all__ = ["WitnessLaw", "Certificate", "Robustness", "decide_robustness", "regions", "nested_sequences"]
@@ -205,32 +204,6 @@ class Robustness:
                     f"  {name} law: Phi = {list(law.Phi)}, Psi = {list(law.Psi)} (max Re lambda = {law.abscissa:.3g})"
                 )
         return "\n".join(lines)
-
-
-# --- nested sequences (P6) ----------------------------------------------------------------
-
-
-@checked
-def nested_sequences(minors: dict) -> list[tuple[int, ...]]:
-    """Orderings i1..ik along which every leading principal minor is positive.
-
-    Examples
-    --------
-    ``minors`` maps index tuples (from 0) to det A_S, as :attr:`LawPolynomials.minors` gives them:
-
-    >>> nested_sequences({(0,): 1, (1,): -1, (0, 1): 2})  # a_11 > 0, det A > 0; a_22 < 0
-    [(0, 1)]
-    >>> nested_sequences({(0,): -1, (1,): -1, (0, 1): 2})
-    []
-    """
-    k = max((len(S) for S in minors if isinstance(S, tuple)), default=0)
-    every = all(S in minors for r in range(1, k + 1) for S in itertools.combinations(range(k), r))
-    require(k > 0 and every, "nested_sequences", "minors", minors, "the principal minors {(0,): det A_0, ...}")
-    found = []
-    for order in itertools.permutations(range(k)):
-        if all(minors[tuple(sorted(order[: r + 1]))] > 0 for r in range(k)):
-            found.append(order)
-    return found
 
 
 # --- witnesses ---------------------------------------------------------------------------
@@ -397,58 +370,6 @@ def decide_robustness(A, laws: int = 300, seed: int = 0) -> Robustness:
         if certificate is not None:
             return Robustness("unstable", certificate, unstable_law=unstable_law)
     return Robustness("undecided", stable_law=stable_law, unstable_law=unstable_law)
-
-
-# --- closed-form regions for a symbolic A -------------------------------------------------
-
-
-def _principal_minors(A: sp.Matrix) -> dict:
-    k = A.rows
-    subsets = [S for r in range(1, k + 1) for S in itertools.combinations(range(k), r)]
-    return {S: normalize(A.extract(list(S), list(S)).det(method="berkowitz")) for S in subsets}
-
-
-@checked
-def regions(A: sp.Matrix, vertices: bool = False) -> dict[str, sp.Basic]:
-    """Closed-form regions, any k, in the entries of A (all sufficient for what they name).
-
-    - ``"unstable for every law"``: some p_s has all coefficients <= 0 (P2): for the weight
-      w = 2k - s, every principal minor of a size in [w/2, min(w, k)] is <= 0;
-    - ``"stable law exists"``: a nested sequence of positive principal minors (P6);
-    - ``"unstable law exists"``: some principal minor is negative (P3); with ``vertices``
-      (k <= 3), or some vertex coefficient of a Hurwitz minor is negative (P3);
-    - ``"law-dependent"``: both of the last two;
-    - ``"stable for every law needs"``: the negation of ``"unstable law exists"``, a necessary
-      condition. For k = 2 with ``vertices`` it is Proposition 6's stable region exactly.
-
-    Examples
-    --------
-    >>> a, b = sp.symbols("a b", real=True)
-    >>> regions(sp.Matrix([[a, 1], [-1, b]]))["unstable law exists"]
-    (a < 0) | (b < 0) | (a*b + 1 < 0)
-    """
-    minors = _principal_minors(A)
-    k = A.rows
-    unstable = []
-    for weight in range(1, 2 * k + 1):
-        sizes = range((weight + 1) // 2, min(weight, k) + 1)
-        unstable.append(sp.And(*[sp.Le(m, 0) for S, m in minors.items() if len(S) in sizes]))
-    nested = []
-    for order in itertools.permutations(range(k)):
-        nested.append(sp.And(*[sp.Gt(minors[tuple(sorted(order[: r + 1]))], 0) for r in range(k)]))
-    stable_law = sp.Or(*nested)
-    unstable_law = sp.Or(*[sp.Lt(m, 0) for m in minors.values()])
-    if vertices and k <= 3:
-        symbols = {sp.Symbol("m_" + "_".join(str(j + 1) for j in S)): m for S, m in minors.items()}
-        coefficients = {c.xreplace(symbols) for _, c in generic_vertex_coefficients(k)}
-        unstable_law = sp.Or(unstable_law, *[sp.Lt(c, 0) for c in coefficients])
-    return {
-        "unstable for every law": sp.Or(*unstable),
-        "stable law exists": stable_law,
-        "unstable law exists": unstable_law,
-        "law-dependent": sp.And(stable_law, unstable_law),
-        "stable for every law needs": sp.Not(unstable_law),
-    }
 
 
 # the names of 0.1, kept: they warn (``Law`` also named the public contact law contactsym.Law)

@@ -5,8 +5,8 @@ the names the file declares; nothing in a file is evaluated as Python. The examp
 ``examples/`` state the paper's four scenes this way. Reading has two steps:
 :func:`read_spec` checks the file against its schema
 (:data:`contactsym.mechanism.files.spec.SCHEMA`) into a frozen
-:class:`~contactsym.mechanism.files.spec.SceneSpec`, and :func:`build_scene` builds the Scene
-from that spec alone. The tables:
+:class:`~contactsym.mechanism.files.spec.SceneSpec`, and :func:`build_scene`
+(:mod:`contactsym.mechanism.files.builder`) builds the Scene from that spec alone. The tables:
 
 ``[scene]``
     ``coordinates = ["x", "y", "theta"]`` (required); ``name``, ``description``,
@@ -65,16 +65,15 @@ from pathlib import Path
 import sympy as sp
 
 from ...arguments import checked
-from ...errors import ContactsymError
-from ...parse import ParseError
 from ...scenes import scene, scene_names
 from ...validate import shorten
 from ..scene import Scene
-from .bodies import Plane, read_motion, read_points
-from .contacts import COMPLIANCE_LAWS, build_contact, read_contacts
+from .bodies import read_motion, read_points
+from .builder import build_scene
+from .contacts import COMPLIANCE_LAWS, read_contacts
 from .declarations import FormulaReader, read_declarations
 from .figures import pipeline_names, read_figures
-from .space import Space, check_orientations
+from .space import check_orientations
 from .spatial import read_space
 from .spec import FigurePlan, Limits, SceneSpec, limits_in_force
 from .toml_source import SceneFileError, TomlSource, shown
@@ -262,58 +261,6 @@ def _read_values(reader: FormulaReader) -> tuple:
             reader.doc.fail("values", key, f"the value of {key} must be a finite real number, not {shown(value)}")
         values.append((reader.names[key], number))
     return tuple(values)
-
-
-def build_scene(spec: SceneSpec) -> Scene:
-    """The Scene of a spec: the mechanics, the contacts and every option, in one constructor call.
-
-    Examples
-    --------
-    >>> spec = read_spec('[scene]\\nname = "drop"\\ncoordinates = ["y"]\\n[accelerations]\\ny = "N - 1"\\n'
-    ...                  '[[contacts]]\\ngap = "y"\\nreaction = "N"\\n', "a.toml")
-    >>> scene = build_scene(spec)
-    >>> scene.name, scene.k, scene.accelerations
-    ('drop', 1, {y(t): N - 1})
-    >>> try:
-    ...     build_scene("drop.toml")
-    ... except SceneFileError as error:
-    ...     print(error)
-    build_scene takes a SceneSpec (from read_spec), not 'drop.toml'.
-    """
-    if not isinstance(spec, SceneSpec):
-        raise SceneFileError(f"build_scene takes a SceneSpec (from read_spec), not {shown(spec)}.")
-    plane = Plane(spec.points) if spec.lagrangian and spec.space is None else None
-    plane = Space(spec.space) if spec.space is not None else plane
-    contacts = [build_contact(c, plane, spec.source, spec.eps) for c in spec.contacts]
-    presentation = dict(spec.presentation)
-    count_presentation = None
-    if spec.count_presentation is not None:
-        count_presentation = {**presentation, **dict(spec.count_presentation)}
-    options = dict(
-        name=spec.name,
-        description=spec.description,
-        at=dict(spec.at),
-        presentation=presentation,
-        positive=spec.positive,
-        solve_for=spec.solve_for,
-        count_presentation=count_presentation,
-        figure_plan=spec.figures,
-        # a parameter called ydot stays a parameter, apart from the frozen rate of y; one printed as a
-        # coordinate (symbol = "theta") is that frozen coordinate, for [at]
-        parameters=[p.symbol for p in spec.parameters if str(p.symbol) not in {c.name for c in spec.coordinates}],
-    )
-    coordinates = [c.symbol for c in spec.coordinates]
-    try:
-        if spec.lagrangian:
-            L, loads = plane.lagrangian(spec)
-            built = Scene.from_lagrangian(L, coordinates, contacts, loads=loads, frame=plane.frame, **options)
-        else:
-            built = Scene.from_accelerations(coordinates, list(spec.accelerations), contacts, **options)
-        return built.with_values(dict(spec.values)) if spec.values else built
-    except (SceneFileError, ParseError):
-        raise
-    except ContactsymError as error:  # the API's own message, from the file
-        raise type(error)(f"{spec.source}: {error}") from None
 
 
 def read_scene(

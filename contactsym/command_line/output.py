@@ -1,0 +1,119 @@
+"""What the commands of :mod:`contactsym.cli` print: a scene's derivation chain as plain text
+(``contactsym show``), and its conditions as text or LaTeX (``contactsym conditions``).
+
+Examples
+--------
+>>> print(derivation_chain("painleve-rod").splitlines()[0])
+scene painleve-rod: classical Painleve rod, one end sliding on a rough floor (one-sided: the end may lift off)
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ..mechanism.files.reader import scene_or_file
+from ..mechanism.scene import Scene
+
+__all__ = ["conditions_latex", "conditions_text", "derivation_chain"]
+
+
+def derivation_chain(name) -> str:
+    """The derivation chain of a scene (a built-in name, a scene file or a Scene), as plain text.
+
+    Examples
+    --------
+    >>> print(derivation_chain("sliding-point").splitlines()[0])
+    scene sliding-point: (1.10)-(1.12): a point sliding on a rough line, Kelvin-Voigt contact
+    """
+    s = name if isinstance(name, Scene) else scene_or_file(name)
+    fast = s.fast_subsystem()
+    lin = s.linearization()
+    st = s.stability()
+    lines = [f"scene {s.name}: {s.description}", "", "accelerations (1.4):"]
+    lines += [f"  {s.plain(q)}'' = {s.plain(g)}" for q, g in s.accelerations.items()]
+    lines += ["", "fast subsystem (2.1), tau = t/eps:"]
+    lines += [f"  {eq.lhs} = {eq.rhs}" for eq in fast.equations]
+    lines += ["", "equilibria f(u*) = 0 (4.2):"]
+    for branch in s.equilibria():
+        lines.append(f"  signs {branch.signs}: u* = {branch.u_star}, exists where {branch.condition}")
+    lines += [
+        "",
+        f"A (4.3) = {lin.A.tolist()}",
+        f"det A = {lin.det_A}",
+        f"characteristic polynomial (4.6): {lin.charpoly.as_expr()}",
+        "",
+        "Hurwitz conditions (4.7), all > 0:",
+    ]
+    lines += [f"  {c}" for c in st.hurwitz]
+    lines += [
+        "",
+        "for every admissible contact law:",
+        f"  stable where   {_verdict_text(st.robustly_stable)}",
+        f"  unstable where {_verdict_text(st.robustly_unstable)}",
+        f"  law-dependent where {_verdict_text(st.law_dependent)}",
+    ]
+    if st.k >= 3 and st.A.free_symbols and st.undecided != sp.false:
+        lines.append(f"  undecided where {st.undecided}")
+    if st.hopf_frequency is not None:
+        lines.append(f"Hopf frequency omega (stretched time) = {st.hopf_frequency}")
+    return "\n".join(lines)
+
+
+def _verdict_text(value) -> str:
+    """A robustness statement as text: its region, or "undecided" where it is neither proved nor disproved."""
+    return "undecided" if value is None else str(value)
+
+
+def conditions_text(data: dict) -> str:
+    """The conditions of :func:`contactsym.report.conditions` as plain text, in full."""
+    lines = [f"{data['scene']}: {data['description']}"]
+    if data.get("signs"):
+        lines.append(f"sign pattern {tuple(data['signs'])}")
+    lines.append("closed-form regions:")
+    for name, entry in data["regions"].items():
+        cite = ", ".join(entry.get("paper", []))
+        lines.append(f"  {name}: {entry['sympy']}" + (f"   {cite}" if cite else ""))
+    if data.get("equilibrium_counts"):
+        lines.append("number of equilibria:")
+        for name, entry in data["equilibrium_counts"].items():
+            cite = ", ".join(entry.get("paper", []))
+            lines.append(f"  {name}: {entry['sympy']}" + (f"   {cite}" if cite else ""))
+    lines.append("Routh-Hurwitz conditions (4.7), all > 0:")
+    for entry in data["hurwitz"]:
+        name = entry["name"].replace("\\", "").replace("{", "").replace("}", "")
+        lines.append(
+            f"  {name} > 0 always: {entry['always']}" if entry.get("always") else f"  {name} = {entry['sympy']}"
+        )
+    if data.get("hopf_frequency"):
+        lines.append(f"Hopf frequency omega (stretched time tau) = {data['hopf_frequency']['sympy']}")
+    return "\n".join(lines)
+
+
+def conditions_latex(data: dict) -> str:
+    r"""The conditions as a LaTeX fragment (amsmath ``align*``), one numbered line each.
+
+    Examples
+    --------
+    >>> from contactsym import scene
+    >>> from contactsym.report import conditions
+    >>> print(conditions_latex(conditions(scene("brake"))).splitlines()[2])
+    \text{stable for every law:} &\quad \mu \leq \left|{\cot{\left(\alpha \right)}}\right| \tag*{(4.4), (6.3)} \\
+    """
+    lines = [f"% contactsym conditions: {data['scene']}", r"\begin{align*}"]
+    rows = []
+    for name, entry in data["regions"].items():
+        rows.append((name, entry))
+    for name, entry in (data.get("equilibrium_counts") or {}).items():
+        rows.append((f"equilibria, {name}", entry))
+    for entry in data["hurwitz"]:
+        rows.append((None, {**entry, "latex": f"{entry['name']} = {entry['latex']}"}))
+    if data.get("hopf_frequency"):
+        rows.append((None, {**data["hopf_frequency"], "latex": r"\omega = " + data["hopf_frequency"]["latex"]}))
+    body = []
+    for name, entry in rows:
+        label = r"\text{" + name.replace("_", r"\_") + r":} " if name else ""
+        tag = r" \tag*{" + ", ".join(entry["paper"]) + "}" if entry.get("paper") else ""
+        body.append(f"{label}&\\quad {entry['latex']}{tag}")
+    lines.append(" \\\\\n".join(body) + " \\\\")
+    lines.append(r"\end{align*}")
+    return "\n".join(lines)
