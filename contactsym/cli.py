@@ -54,7 +54,7 @@ from .errors import ContactsymError, SceneError, SignPatternError
 from .mechanism.files.reader import scene_or_file
 from .mechanism.scene import Scene
 from .parse import ParseError
-from .scenes import DEFAULT_SCENE, scene, scene_names
+from .scenes import DEFAULT_SCENE, scene_description, scene_names
 from .validate import cut, path_text, shorten
 
 __all__ = ["derivation_chain", "main"]
@@ -219,7 +219,7 @@ def _main(argv: list[str] | None) -> int:
 def _run(args) -> int:
     if args.command == "list":
         for name in scene_names():
-            print(f"{name:24s}{scene(name).description}")
+            print(f"{name:24s}{scene_description(name)}")
         return 0
     if args.command == "report":
         return _report(

@@ -34,6 +34,15 @@ def test_list(capsys):
     assert [line.split()[0] for line in out.splitlines()] == cs.scene_names()
 
 
+def test_list_prints_each_built_scene_description_without_building_it(capsys, monkeypatch):
+    from contactsym import scenes
+
+    expected = [f"{name:24s}{cs.scene(name).description}" for name in cs.scene_names()]
+    monkeypatch.setattr(scenes, "_built", {})  # a build during `list` would fill it
+    code, out, _ = run(capsys, "list")
+    assert code == 0 and out.splitlines() == expected and scenes._built == {}
+
+
 def test_help_exits_zero(capsys):
     code, out, _ = run(capsys, "report", "--help")
     assert code == 0 and "--out" in out

@@ -12,7 +12,7 @@ from ..arguments import checked
 from ..errors import SceneError
 from ..validate import scene_name, shorten
 
-__all__ = ["scene", "scene_names", "paper_name", "paper_knowledge", "SpecialCase", "DEFAULT_SCENE"]
+__all__ = ["scene", "scene_names", "scene_description", "paper_name", "paper_knowledge", "SpecialCase", "DEFAULT_SCENE"]
 
 _MODULES = {
     "sliding-point": "sliding_point",
@@ -46,6 +46,32 @@ def scene_names() -> list[str]:
     return list(_MODULES)
 
 
+def scene_description(name: str) -> str:
+    """One line on the built-in scene ``name``, read from its module without building the scene.
+
+    ``contactsym list`` prints these; building every scene for it took seconds (the spatial rod's
+    Lagrange equations alone about two). The text is the built scene's ``description`` (tested).
+
+    Examples
+    --------
+    >>> scene_description("brake")
+    '(6.1)-(6.4): disc braked by two pads at angle alpha'
+    >>> scene_description("brake") == scene("brake").description
+    True
+    """
+    return import_module(f".{_MODULES[_known(name)]}", __name__).DESCRIPTION
+
+
+def _known(name: str) -> str:
+    """``name`` when it is a built-in scene's, else a SceneError that suggests the closest one."""
+    name = scene_name(name)
+    if name not in _MODULES:
+        close = difflib.get_close_matches(name, _MODULES, n=1)
+        hint = f"did you mean '{close[0]}'? " if close else ""
+        raise SceneError(f"unknown scene {shorten(name)}; {hint}Known scenes: {', '.join(_MODULES)}.")
+    return name
+
+
 def scene(name: str):
     """A built-in scene by name (built once, then shared; scenes are immutable).
 
@@ -58,11 +84,7 @@ def scene(name: str):
     ...
     contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, double-pendulum-tip, painleve-rod, two-leg-block, painleve-rod-3d.
     """
-    name = scene_name(name)
-    if name not in _MODULES:
-        close = difflib.get_close_matches(name, _MODULES, n=1)
-        hint = f"did you mean '{close[0]}'? " if close else ""
-        raise SceneError(f"unknown scene {shorten(name)}; {hint}Known scenes: {', '.join(_MODULES)}.")
+    name = _known(name)
     if name not in _built:
         _built[name] = import_module(f".{_MODULES[name]}", __name__).build()
     return _built[name]

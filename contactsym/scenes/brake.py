@@ -35,6 +35,10 @@ EQUATIONS = {
 }
 
 
+#: What ``contactsym list`` prints for the built-in scene (read without building it).
+DESCRIPTION = "(6.1)-(6.4): disc braked by two pads at angle alpha"
+
+
 def build() -> Scene:
     x, y, theta = dynamicsymbols("x y theta")
     m, J, r, mu, alpha = sp.symbols("m J r mu alpha", positive=True)
@@ -63,7 +67,7 @@ def build() -> Scene:
         presentation=presentation,
         positive=(sp.sin(alpha),),  # 0 < alpha < pi
         solve_for=mu,
-        description="(6.1)-(6.4): disc braked by two pads at angle alpha",
+        description=DESCRIPTION,
     )
 
 

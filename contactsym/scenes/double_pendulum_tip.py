@@ -11,6 +11,9 @@ from ..mechanism.files.reader import FigurePlan
 from ..mechanism.scene import Scene
 from .link_chain import build_chain
 
+#: What ``contactsym list`` prints for the built-in scene (read without building it).
+DESCRIPTION = "a 2-link chain whose tip slides on a rough floor"
+
 
 def build() -> Scene:
     # the report's region map: the arm's angles at equal masses, mu = 0.8, the tip pressed (s = sign N = 1)

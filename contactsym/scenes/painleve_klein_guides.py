@@ -33,6 +33,10 @@ EQUATIONS = {
 }
 
 
+#: What ``contactsym list`` prints for the built-in scene (read without building it).
+DESCRIPTION = "(5.1)-(5.10): Painleve-Klein system, rigid rod, deformable guides"
+
+
 def build() -> Scene:
     x, y, phi = dynamicsymbols("x y phi")
     l, h = sp.symbols("l h", positive=True)
@@ -72,7 +76,7 @@ def build() -> Scene:
         equations=EQUATIONS,
         presentation=presentation,
         positive=(sp.sin(phi), sp.cos(phi)),  # 0 < phi < pi/2
-        description="(5.1)-(5.10): Painleve-Klein system, rigid rod, deformable guides",
+        description=DESCRIPTION,
         # counts of (5.3) do not depend on the signs s_j: the paper writes them with mu_j = |v_j|/kappa
         count_presentation={**presentation, mu1: sp.Abs(v1) / kappa, mu2: sp.Abs(v2) / kappa},
     )

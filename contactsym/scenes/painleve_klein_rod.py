@@ -33,6 +33,10 @@ EQUATIONS = {
 }
 
 
+#: What ``contactsym list`` prints for the built-in scene (read without building it).
+DESCRIPTION = "(3.5)-(3.9): Painleve-Klein system, deformable rod, rigid guides"
+
+
 def build() -> Scene:
     x1, delta = dynamicsymbols("x_1 delta")
     phi, l = sp.symbols("phi l", positive=True)
@@ -66,7 +70,7 @@ def build() -> Scene:
         equations=EQUATIONS,
         presentation=presentation,
         positive=(sp.sin(phi), sp.cos(phi)),  # 0 < phi < pi/2
-        description="(3.5)-(3.9): Painleve-Klein system, deformable rod, rigid guides",
+        description=DESCRIPTION,
     )
 
 

@@ -22,6 +22,9 @@ from ..mechanism.scene import Contact, Scene
 from ..plotting.counts import count_map_figure
 from ._planar import planar_body
 
+#: What ``contactsym list`` prints for the built-in scene (read without building it).
+DESCRIPTION = "classical Painleve rod, one end sliding on a rough floor (one-sided: the end may lift off)"
+
 
 def build(unilateral: bool = True) -> Scene:
     x, y, theta = dynamicsymbols("x y theta")

@@ -45,6 +45,10 @@ PLAN = FigurePlan(
 )
 
 
+#: What ``contactsym list`` prints for the built-in scene (read without building it).
+DESCRIPTION = "Painleve rod in space: one end sliding on a rough floor at an angle beta to the rod's vertical plane"
+
+
 def build() -> Scene:
     """The rod in space (see the module's documentation).
 
@@ -81,6 +85,5 @@ def build() -> Scene:
         positive=(sp.sin(beta), sp.cos(beta), sp.sin(plain[theta]), sp.cos(plain[theta])),
         solve_for=mu,
         figure_plan=PLAN,
-        description="Painleve rod in space: one end sliding on a rough floor at an angle beta to the rod's "
-        "vertical plane",
+        description=DESCRIPTION,
     )

@@ -26,6 +26,10 @@ EQUATIONS = {
 }
 
 
+#: What ``contactsym list`` prints for the built-in scene (read without building it).
+DESCRIPTION = "(1.10)-(1.12): a point sliding on a rough line, Kelvin-Voigt contact"
+
+
 def build() -> Scene:
     x, y = dynamicsymbols("x y")
     m, mu, b = sp.symbols("m mu b", positive=True)
@@ -51,7 +55,7 @@ def build() -> Scene:
         frame=frame,
         name="sliding-point",
         equations=EQUATIONS,
-        description="(1.10)-(1.12): a point sliding on a rough line, Kelvin-Voigt contact",
+        description=DESCRIPTION,
     )
 
 

@@ -22,6 +22,9 @@ from ..mechanism.scene import Contact, Scene
 from ..plotting.counts import count_map_figure
 from ._planar import planar_body
 
+#: What ``contactsym list`` prints for the built-in scene (read without building it).
+DESCRIPTION = "a block on two legs sliding on a rough floor"
+
 
 def build(unilateral: bool = False) -> Scene:
     x, y, theta = dynamicsymbols("x y theta")
