@@ -229,7 +229,7 @@ def _atlas_rows(quick: bool) -> list[dict]:
     """The atlas's classification per point against the bare classifier on the same points: in all at the larger
     grid, and per point as the slope between two grids (what a point adds; the fixed cost of a sweep apart)."""
     from contactsym import atlas
-    from contactsym.atlas import quantities
+    from contactsym.atlas import vectorised
 
     law = {"m": 1.0, "Phi_1": -2.0, "Phi_2": -2.0, "Psi_1": -1.0, "Psi_2": -1.0}
     scene = cs.scene("brake")
@@ -249,7 +249,7 @@ def _atlas_rows(quick: bool) -> list[dict]:
         wrong = int(np.sum(result.stable.reshape(A.shape) != ds.stable.values))
         measured.append((A.size, swept_s, bare_s, wrong))
     (n1, s1, b1, w1), (n2, s2, b2, w2) = measured
-    cache = quantities._built_classifier.cache_info()
+    cache = vectorised._built_classifier.cache_info()
     slope_ours, slope_bare = (s2 - s1) / (n2 - n1), (b2 - b1) / (n2 - n1)
     common = (
         "brake, grid (alpha, mu), fixed law; ours = atlas.sweep(classification, scheduler='sync') in all (robust "

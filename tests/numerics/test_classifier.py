@@ -13,7 +13,6 @@ from hypothesis import strategies as st
 
 import contactsym as cs
 from contactsym import numerics as nm
-from contactsym.numerics import classifier
 from contactsym.numerics.buffered import through_tan
 
 a, b, c = sp.symbols("a b c", positive=True)
@@ -40,24 +39,6 @@ def _polynomial(terms) -> sp.Expr:
 def _exact_sign(expr: sp.Expr, point, symbols=SYMBOLS) -> int:
     value = expr.xreplace({s: sp.Rational(Fraction(float(v))) for s, v in zip(symbols, point)})
     return int(sp.sign(value))
-
-
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(st.lists(monomials, min_size=1, max_size=8), st.sampled_from([1, -1]))
-def test_one_signed_form_is_the_same_sum_with_one_signed_sums(terms, sign):
-    total = sign * sp.expand(_polynomial(terms) ** 2)  # mixed signs inside, one sign in all
-    one_signed = sp.Add(*[t for t in sp.Add.make_args(total) if (sign * t).is_nonnegative])
-    form = classifier._one_signed_form(one_signed)
-    assert sp.expand(form - one_signed) == 0
-    assert classifier._one_signed_sums(form)
-    assert sp.count_ops(form) <= sp.count_ops(one_signed)
-
-
-def test_shared_sums_are_pulled_out_once():
-    total = a * p + b * p + c**2 * a * p + c**2 * b * p
-    form = classifier._one_signed_form(-total)
-    assert sp.expand(form + total) == 0
-    assert sp.count_ops(form) < sp.count_ops(total)
 
 
 @settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
