@@ -13,9 +13,9 @@ import numpy as np
 import sympy as sp
 
 from .. import numerics
-from ..numerics.buffered import BufferedCode, through_tan
-from .grid import AtlasError
-from .kernel import Kernel, Setup, setup_for
+from ..numerics.buffered import _FUNCTIONS, BufferedCode, cheapest_trig
+from .grid import AtlasError, Grid
+from .kernel import Kernel, Reasons, Setup, setup_for
 
 __all__: list[str] = []  # kernels, reached through the constructors of contactsym.atlas.quantities
 
@@ -40,12 +40,23 @@ def _built_classifier(conditions: tuple, symbols: tuple) -> numerics.PointClassi
 @lru_cache(maxsize=32)
 def _robust_function(robust: tuple, symbols: tuple):
     """The robust regions' code, once per scene and fixed values (code generation costs more than a chunk):
-    buffered code (truth values as 1.0 and 0.0, even powers of sin and cos through tan), else lambdify."""
+    buffered code (truth values as 1.0 and 0.0), else lambdify; and the functions of one grid symbol in it.
+
+    A function of one grid symbol (``sin(alpha)``) is an argument of the code, not an operation: a sweep
+    computes it once per value of the axis (see ``_Classification.run``), not once per point."""
+    robust = [cheapest_trig(b) for b in robust]
+    found = sorted(
+        {f for b in robust for f in b.atoms(sp.Function) if f.args[0] in symbols and type(f) in _FUNCTIONS},
+        key=sp.default_sort_key,
+    )
+    names = tuple(sp.Dummy(f"f{i}") for i in range(len(found)))
+    robust = [b.xreplace(dict(zip(found, names))) for b in robust]
+    of_axes = tuple((symbols.index(f.args[0]), getattr(np, _FUNCTIONS[type(f)])) for f in found)
     try:
-        return BufferedCode(symbols, [through_tan(b) for b in robust])
+        return BufferedCode(symbols + names, robust), of_axes
     except numerics.NumericsError:
-        function = numerics.lambdify_cse(symbols, list(robust))
-        return lambda columns, buffers: function(*columns)
+        function = numerics.lambdify_cse(symbols + names, list(robust))
+        return (lambda columns, buffers: function(*columns)), of_axes
 
 
 def _strict(condition) -> list:
@@ -97,20 +108,49 @@ class _Classification(Kernel):
 
     def __init__(self, setup: Setup, robust: list, classifier):
         self.setup, self.classifier = setup, classifier
-        self.function = _robust_function(tuple(setup.specialised(b) for b in robust), setup.swept)
+        self.function, self.of_axes = _robust_function(tuple(setup.specialised(b) for b in robust), setup.swept)
 
     def evaluate(self, points):
-        n = len(points)
         columns = self.setup.grid_columns(points)
+        return self._values(columns, [ufunc(columns[j]) for j, ufunc in self.of_axes])
+
+    def run(self, grid: Grid, start: int, stop: int):
+        """The grid's columns as they are made (no matrix of points), each function of an axis once per axis value."""
+        try:
+            with np.errstate(all="ignore"):
+                columns = grid.columns(start, stop)
+                functions = [grid.column(j, start, stop, along=ufunc(grid.axes[j])) for j, ufunc in self.of_axes]
+                given = [self._of_axis(grid, j, ufunc, start, stop) for j, ufunc in self._classifier_functions()]
+                return self._values(columns, functions, given), Reasons.none(stop - start)
+        except Exception:  # noqa: BLE001 - point by point, each failure with its reason (Kernel.__call__)
+            return self(grid.points(start, stop))
+
+    def _classifier_functions(self) -> tuple:
+        return self.classifier.functions if self.classifier is not None else ()
+
+    def _of_axis(self, grid: Grid, j: int, ufunc: str, start: int, stop: int):
+        """The classifier's function of a grid axis, once per axis value; None (computed per point by the classifier)
+        for a fixed argument, or where the axis values under- or overflow (the certificate assumes neither)."""
+        if j >= len(grid.axes):
+            return None
+        try:
+            with np.errstate(all="raise"):
+                along = getattr(np, ufunc)(grid.axes[j])
+        except FloatingPointError:
+            return None
+        return grid.column(j, start, stop, along=along)
+
+    def _values(self, columns: list, functions: list, given: list | None = None) -> np.ndarray:
+        n = len(columns[0]) if columns else 0
         buffers = self.scratch("robust", (getattr(self.function, "buffers", 0), n))
         # truth values as arrays of the points or, where constant, as one value (copyto broadcasts it)
-        stable, unstable, dependent = (np.asarray(m) != 0 for m in self.function(columns, buffers))
+        stable, unstable, dependent = (np.asarray(m) != 0 for m in self.function(columns + functions, buffers))
         out = np.full((2, n), np.nan).T  # column-major: each output's column is contiguous
         region = out[:, 0]
         for value, mask in ((0.0, dependent), (-1.0, unstable), (1.0, stable)):  # the first that holds wins
             np.copyto(region, value, where=mask)
         if self.classifier is not None:
-            out[:, 1] = self.classifier(*columns, *self.setup.fixed_columns(n)).stable
+            out[:, 1] = self.classifier(*columns, *self.setup.fixed_columns(n), function_values=given).stable
         return out
 
 

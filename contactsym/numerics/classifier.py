@@ -16,7 +16,7 @@ from ..arguments import checked
 from ..errors import NumericsError
 from ..parse import sympy_only
 from ..progress import Budget, Progress
-from .buffered import BufferedCode, through_tan
+from .buffered import _FUNCTIONS, BufferedCode, cheapest_trig
 from .certified import _gamma, certified_sign
 from .codegen import lambdify_cse
 from .one_signed import _one_signed_form, _roundings
@@ -91,14 +91,16 @@ class PointClassifier:
         if free - set(self.parameters):
             raise NumericsError(f"the conditions also need values for {sorted(map(str, free - set(self.parameters)))}.")
         self.parts = [self._split(factor) for factor in self.kept]
-        code = [tuple(through_tan(g) for g in p) for p in self.parts]
+        code = [tuple(cheapest_trig(g) for g in p) for p in self.parts]
         self.gammas = [_gamma(max(_roundings(g) for g in p) + 3) for p in code]
         flat = [g for p in code for g in p]
+        arguments, self.functions = _functions_as_arguments(flat, self.parameters)
         try:  # every operation into a reused buffer: the chunk stays in the cache, no temporaries
-            self._buffered: BufferedCode | None = BufferedCode(self.parameters, flat)
+            self._buffered: BufferedCode | None = BufferedCode(self.parameters + arguments[0], arguments[1])
             self._function = None
         except NumericsError:  # a part without a buffered form (e.g. a symbolic exponent)
             self._buffered, self._function = None, lambdify_cse(self.parameters, flat)
+            self.functions = ()
         self._mp_function = self._mp_functions()
         self._workspaces = threading.local()
 
@@ -117,7 +119,7 @@ class PointClassifier:
 
     def _workspace(self, size: int) -> tuple[np.ndarray, np.ndarray]:
         """Float buffers for the generated code (two more for the sign test) and two int8 rows, per thread."""
-        rows = (self._buffered.buffers if self._buffered is not None else 0) + 2
+        rows = (self._buffered.buffers if self._buffered is not None else 0) + 2 + len(self.functions)
         found = getattr(self._workspaces, "arrays", None)
         if found is None or found[0].shape[1] < size:
             found = (np.empty((rows, size)), np.empty((2, size), dtype=np.int8))
@@ -185,7 +187,7 @@ class PointClassifier:
             if symbol.is_negative and not high < 0:
                 raise NumericsError(f"{symbol} is declared negative; some values are >= 0.")
 
-    def _float_stage(self, arrays, out: np.ndarray) -> None:
+    def _float_stage(self, arrays, known, out: np.ndarray) -> None:
         """Per kept factor, into ``out``: its sign where certain (+1/-1) and 0 where not (int8).
 
         An overflow, underflow or invalid operation would void the relative error bounds:
@@ -195,20 +197,25 @@ class PointClassifier:
         size = out.shape[1]
         try:
             with np.errstate(all="raise"):
-                self._signs(arrays, out)
+                self._signs(arrays, known, out)
         except FloatingPointError:
             if size == 1:
                 out[...] = 0
                 return
             half = size // 2
-            self._float_stage([a[:half] for a in arrays], out[:, :half])
-            self._float_stage([a[half:] for a in arrays], out[:, half:])
+            self._float_stage([a[:half] for a in arrays], [k[:half] for k in known], out[:, :half])
+            self._float_stage([a[half:] for a in arrays], [k[half:] for k in known], out[:, half:])
 
-    def _signs(self, arrays, out: np.ndarray) -> None:
+    def _signs(self, arrays, known, out: np.ndarray) -> None:
         size = out.shape[1]
         floats, small = self._workspace(size)
         if self._buffered is not None:
-            values = iter(self._buffered(arrays, floats[:-2]))
+            rows = floats[: self._buffered.buffers + len(self.functions)]
+            functions = [
+                k if k is not None else _function_values(arrays[index], ufunc, rows[-1 - number, :size])
+                for number, ((index, ufunc), k) in enumerate(zip(self.functions, known))
+            ]
+            values = iter(self._buffered([*arrays, *functions], rows))
         else:
             values = iter(_as_array(v, size) for v in self._function(*arrays))
         scratch = (floats[-2, :size], floats[-1, :size], small[0, :size], small[1, :size])
@@ -236,13 +243,23 @@ class PointClassifier:
         return None
 
     def __call__(
-        self, *arrays, chunk: int = 1 << 15, progress: Progress | None = None, max_seconds: float | None = None
+        self,
+        *arrays,
+        chunk: int = 1 << 15,
+        progress: Progress | None = None,
+        max_seconds: float | None = None,
+        function_values: Sequence | None = None,
     ) -> _PointsResult:
         """Classify the points; ``progress(fraction, message)`` follows the exact path, which
-        ``max_seconds`` bounds (a NumericsError then says how many points were decided)."""
+        ``max_seconds`` bounds (a NumericsError then says how many points were decided).
+
+        ``function_values``: per entry ``(index, ufunc)`` of :attr:`functions`, None or the values of
+        ``ufunc`` at the points as NumPy computes them from parameter ``index`` (e.g. once per value of a
+        grid axis, then laid out as the axis is); the certificate assumes exactly these numbers."""
         chunk = validate.chunk_size(chunk)
         budget = Budget(progress, max_seconds)
         arrays = self._check(arrays)
+        given = self._given(function_values, arrays)
         shape = np.broadcast(*arrays).shape if arrays else ()
         # no copies: an array of the points' shape is read in place, one value stays one value (a view of
         # zero stride, checked once), and only an array broadcast along some axes is copied
@@ -262,7 +279,7 @@ class PointClassifier:
             part = factor_signs[:, start:stop]
             pieces = [a[start:stop] for a in arrays]
             self._check_values(pieces)
-            self._float_stage(pieces, part)
+            self._float_stage(pieces, [None if g is None else g[start:stop] for g in given], part)
             self._combine(part, signs[:, start:stop], stable[start:stop])
             np.logical_not(part.all(axis=0), out=in_band[start:stop])
         points = np.nonzero(in_band)[0]
@@ -287,6 +304,18 @@ class PointClassifier:
             max(bands, default=self.band),
         )
 
+    def _given(self, function_values, arrays) -> list:
+        """The caller's values of :attr:`functions` (None: computed here), flat, checked for their length."""
+        if function_values is None:
+            return [None] * len(self.functions)
+        if len(function_values) != len(self.functions):
+            raise NumericsError(f"give {len(self.functions)} function_values (or None), one per {self.functions}.")
+        size = int(np.prod(np.broadcast(*arrays).shape)) if arrays else 0
+        given = [None if v is None else validate.real_array(v, "function_values").reshape(-1) for v in function_values]
+        if any(g is not None and len(g) != size for g in given):
+            raise NumericsError(f"each of function_values needs one value per point ({size}).")
+        return given
+
     def _combine(self, factor_signs, signs, stable) -> None:
         """Signs of the conditions from those of their factors; stable = the least of them."""
         signs[...] = 1
@@ -306,6 +335,28 @@ class PointClassifier:
         if found is not None:
             return found
         return certified_sign(self.kept[position], dict(zip(self.parameters, point)), band=0.0)[0]
+
+
+def _functions_as_arguments(flat: list, parameters: tuple) -> tuple[tuple, tuple]:
+    """((new symbols, ``flat`` with them), per new symbol (index of its parameter, NumPy ufunc name)): each
+    function of one parameter (``sin(alpha)``) becomes an argument of the generated code, computed once per
+    chunk or given by the caller (an atlas computes it once per value of a grid axis)."""
+    found = sorted(
+        {f for e in flat for f in e.atoms(sp.Function) if len(f.args) == 1 and f.args[0] in parameters},
+        key=sp.default_sort_key,
+    )
+    found = [f for f in found if type(f) in _FUNCTIONS]
+    names = tuple(sp.Dummy(f"f{i}") for i in range(len(found)))
+    replaced = [e.xreplace(dict(zip(found, names))) for e in flat]
+    return (names, replaced), tuple((parameters.index(f.args[0]), _FUNCTIONS[type(f)]) for f in found)
+
+
+def _function_values(argument: np.ndarray, ufunc: str, row: np.ndarray) -> np.ndarray:
+    """``ufunc`` of a chunk's argument into ``row``; of one value for every point (stride 0), once."""
+    if argument.strides == (0,) and len(argument) > 1:
+        one = getattr(np, ufunc)(argument[:1])
+        return np.ndarray(argument.shape, dtype=np.float64, buffer=one, strides=(0,))
+    return getattr(np, ufunc)(argument, out=row)
 
 
 def _as_array(value, size: int) -> np.ndarray:

@@ -169,3 +169,42 @@ def test_float64_inputs_are_read_in_place_and_never_written():
     assert converted.dtype == np.float64 and converted.tolist() == [0.0, 1.0, 2.0]
     with pytest.raises(cs.errors.NumericsError, match="complex"):
         validate.real_array(np.array([1j]), "z")
+
+
+def _brake_points(rng, n, on_line):
+    """Random brake points, the first ``on_line`` of them put on the Hopf line of the (6.4) slice in floats."""
+    values = [rng.uniform(0.05, 3.0, n), rng.uniform(0.2, 5, n), rng.uniform(0.05, 3, n)]
+    values += list(-np.exp(rng.normal(0, 1.5, (4, n))))
+    alpha, m_, mu_, phi1, phi2, psi1, psi2 = values
+    alpha[:on_line], psi2[:on_line] = math.pi / 2, psi1[:on_line]
+    phi1[:on_line] = phi2[:on_line] = (
+        -(1 + mu_[:on_line] ** 2) * psi1[:on_line] ** 2 / (m_[:on_line] * mu_[:on_line] ** 2)
+    )
+    return values
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(0, 2**32 - 1), st.integers(1, 300))
+def test_chunks_of_any_size_and_function_values_given_change_no_result(seed, chunk):
+    """The chunked pass, the whole array at once, and sin(alpha) given by the caller: the same verdicts,
+    signs and band, also for points on the Hopf line (decided exactly; their signs: the tests above)."""
+    values = _brake_points(np.random.default_rng(seed), 300, on_line=2)
+    whole = BRAKE_CLASSIFIER(*values, chunk=300)
+    assert whole.exact_points >= 1  # the band is exercised
+    given = [getattr(np, ufunc)(values[index]) for index, ufunc in BRAKE_CLASSIFIER.functions]
+    assert BRAKE_CLASSIFIER.functions == ((0, "sin"),) or BRAKE_CLASSIFIER.functions == ((0, "tan"),)
+    for result in (
+        BRAKE_CLASSIFIER(*values, chunk=chunk),
+        BRAKE_CLASSIFIER(*values, chunk=chunk, function_values=given),
+    ):
+        assert np.array_equal(result.stable, whole.stable)
+        assert np.array_equal(result.signs, whole.signs)
+        assert np.array_equal(result.in_band, whole.in_band)
+
+
+def test_function_values_of_the_wrong_number_or_length_are_refused():
+    values = [np.full(3, v) for v in (1.0, 1.0, 1.0, -1.0, -1.0, -1.0, -1.0)]
+    with pytest.raises(nm.NumericsError, match="function_values"):
+        BRAKE_CLASSIFIER(*values, function_values=[])
+    with pytest.raises(nm.NumericsError, match="one value per point"):
+        BRAKE_CLASSIFIER(*values, function_values=[np.zeros(2)] * len(BRAKE_CLASSIFIER.functions))
