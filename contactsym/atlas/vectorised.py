@@ -13,7 +13,7 @@ import numpy as np
 import sympy as sp
 
 from .. import numerics
-from ..numerics.buffered import _FUNCTIONS, BufferedCode, cheapest_trig
+from ..numerics.buffered import NUMPY_FUNCTIONS, BufferedCode, cheapest_trig
 from .grid import AtlasError, Grid
 from .kernel import Kernel, Reasons, Setup, setup_for
 
@@ -46,12 +46,12 @@ def _robust_function(robust: tuple, symbols: tuple):
     computes it once per value of the axis (see ``_Classification.run``), not once per point."""
     robust = [cheapest_trig(b) for b in robust]
     found = sorted(
-        {f for b in robust for f in b.atoms(sp.Function) if f.args[0] in symbols and type(f) in _FUNCTIONS},
+        {f for b in robust for f in b.atoms(sp.Function) if f.args[0] in symbols and type(f) in NUMPY_FUNCTIONS},
         key=sp.default_sort_key,
     )
     names = tuple(sp.Dummy(f"f{i}") for i in range(len(found)))
     robust = [b.xreplace(dict(zip(found, names))) for b in robust]
-    of_axes = tuple((symbols.index(f.args[0]), getattr(np, _FUNCTIONS[type(f)])) for f in found)
+    of_axes = tuple((symbols.index(f.args[0]), getattr(np, NUMPY_FUNCTIONS[type(f)])) for f in found)
     try:
         return BufferedCode(symbols + names, robust), of_axes
     except numerics.NumericsError:

@@ -22,10 +22,10 @@ import sympy as sp
 
 from ..errors import NumericsError
 
-__all__ = ["BufferedCode", "cheapest_trig", "through_tan"]
+__all__ = ["NUMPY_FUNCTIONS", "BufferedCode", "cheapest_trig", "through_tan"]
 
 #: SymPy functions of one argument and the NumPy ufunc for each.
-_FUNCTIONS = {
+NUMPY_FUNCTIONS = {
     sp.sin: "sin",
     sp.cos: "cos",
     sp.tan: "tan",
@@ -142,7 +142,7 @@ class _Writer:
             return self._product(expr)
         if expr.is_Pow:
             return self._power(expr)
-        ufunc = _FUNCTIONS.get(type(expr))
+        ufunc = NUMPY_FUNCTIONS.get(type(expr))
         if ufunc is not None and len(expr.args) == 1:
             return self.op(ufunc, self.emit(expr.args[0]))
         if expr is sp.true or expr is sp.false:

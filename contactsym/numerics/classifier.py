@@ -16,10 +16,19 @@ from ..arguments import checked
 from ..errors import NumericsError
 from ..parse import sympy_only
 from ..progress import Budget, Progress
-from .buffered import _FUNCTIONS, BufferedCode, cheapest_trig
+from .buffered import BufferedCode, cheapest_trig
 from .certified import _gamma, certified_sign
 from .codegen import lambdify_cse
+from .float_stage import (
+    _CHEAP_ERROR,
+    _as_array,
+    _certain_sign,
+    _function_values,
+    _functions_as_arguments,
+    cheap_functions,
+)
 from .one_signed import _one_signed_form, _roundings
+from .values import _UNIT
 
 
 @checked(conditions="list | tuple | sp.MatrixBase")
@@ -101,6 +110,16 @@ class PointClassifier:
         except NumericsError:  # a part without a buffered form (e.g. a symbolic exponent)
             self._buffered, self._function = None, lambdify_cse(self.parameters, flat)
             self.functions = ()
+        # the float32 pre-pass (see _cheap_functions): its sine or cosine counts as k roundings, k u >= its error
+        self._cheap = self._buffered is not None and bool(self.functions)
+        self._cheap &= all(ufunc in ("sin", "cos") for _, ufunc in self.functions)
+        cost = math.ceil(_CHEAP_ERROR / _UNIT)
+        widths = [max(self.band, 2 * g) for g in self.gammas]
+        self._widths = widths
+        self._cheap_widths = [  # certain there => certain, with the same sign, in float64 (see _cheap_functions)
+            2 * _gamma(max(_roundings(g, cost) for g in p) + 3) + 2 * w + 2 * g
+            for p, w, g in zip(code, widths, self.gammas)
+        ]
         self._mp_function = self._mp_functions()
         self._workspaces = threading.local()
 
@@ -173,9 +192,12 @@ class PointClassifier:
             self._names = [f"the values of {symbol}" for symbol in self.parameters]
         return self._names
 
-    def _check_values(self, arrays) -> None:
+    def _check_values(self, arrays) -> list[float]:
+        """Refuse values that are not finite or break a declared sign; the largest |value| of each array."""
+        reach = []
         for symbol, a in zip(self.parameters, arrays):
             if a.size == 0:
+                reach.append(0.0)
                 continue
             if a.strides == (0,):  # one value for every point
                 a = a[:1]
@@ -186,8 +208,10 @@ class PointClassifier:
                 raise NumericsError(f"{symbol} is declared positive; some values are <= 0.")
             if symbol.is_negative and not high < 0:
                 raise NumericsError(f"{symbol} is declared negative; some values are >= 0.")
+            reach.append(max(-float(low), float(high)))
+        return reach
 
-    def _float_stage(self, arrays, known, out: np.ndarray) -> None:
+    def _float_stage(self, arrays, known, out: np.ndarray, widths: list) -> None:
         """Per kept factor, into ``out``: its sign where certain (+1/-1) and 0 where not (int8).
 
         An overflow, underflow or invalid operation would void the relative error bounds:
@@ -197,16 +221,16 @@ class PointClassifier:
         size = out.shape[1]
         try:
             with np.errstate(all="raise"):
-                self._signs(arrays, known, out)
+                self._signs(arrays, known, out, widths)
         except FloatingPointError:
             if size == 1:
                 out[...] = 0
                 return
             half = size // 2
-            self._float_stage([a[:half] for a in arrays], [k[:half] for k in known], out[:, :half])
-            self._float_stage([a[half:] for a in arrays], [k[half:] for k in known], out[:, half:])
+            self._float_stage([a[:half] for a in arrays], [k[:half] for k in known], out[:, :half], widths)
+            self._float_stage([a[half:] for a in arrays], [k[half:] for k in known], out[:, half:], widths)
 
-    def _signs(self, arrays, known, out: np.ndarray) -> None:
+    def _signs(self, arrays, known, out: np.ndarray, widths: list) -> None:
         size = out.shape[1]
         floats, small = self._workspace(size)
         if self._buffered is not None:
@@ -221,8 +245,7 @@ class PointClassifier:
         scratch = (floats[-2, :size], floats[-1, :size], small[0, :size], small[1, :size])
         for position, part in enumerate(self.parts):
             groups = [next(values) for _ in part]
-            width = max(self.band, 2 * self.gammas[position])
-            _certain_sign(groups, width, self._zero_parts()[position], out[position], scratch)
+            _certain_sign(groups, widths[position], self._zero_parts()[position], out[position], scratch)
 
     def _zero_parts(self) -> list[tuple[bool, bool]]:
         """Per kept factor, (P = 0, M = 0): compared once, not per chunk (a SymPy comparison of large sums)."""
@@ -278,8 +301,9 @@ class PointClassifier:
             stop = min(start + chunk, size)
             part = factor_signs[:, start:stop]
             pieces = [a[start:stop] for a in arrays]
-            self._check_values(pieces)
-            self._float_stage(pieces, [None if g is None else g[start:stop] for g in given], part)
+            reach = self._check_values(pieces)
+            known = [None if g is None else g[start:stop] for g in given]
+            self._chunk_signs(pieces, known, reach, part)
             self._combine(part, signs[:, start:stop], stable[start:stop])
             np.logical_not(part.all(axis=0), out=in_band[start:stop])
         points = np.nonzero(in_band)[0]
@@ -295,7 +319,7 @@ class PointClassifier:
                 factor_signs[position, i] = self._exact_factor_sign(position, point)
             self._combine(factor_signs[:, i : i + 1], signs[:, i : i + 1], stable[i : i + 1])
         budget.report(1.0, f"{size} points, {len(points)} decided exactly")
-        bands = [max(self.band, 2 * g) for g in self.gammas]
+        bands = self._widths
         return _PointsResult(
             stable.reshape(shape),
             signs.reshape((len(self.conditions), *shape)),
@@ -303,6 +327,33 @@ class PointClassifier:
             len(points),
             max(bands, default=self.band),
         )
+
+    def _chunk_signs(self, pieces, known, reach, part) -> None:
+        """Signs of the kept factors on a chunk (0: not certain): a float32 pre-pass for sines and cosines where
+        it applies, then float64 for the points it leaves; the same result as float64 throughout."""
+        cheap = self._cheap_functions(pieces, known, reach)
+        if cheap is None:
+            self._float_stage(pieces, known, part, self._widths)
+            return
+        self._float_stage(pieces, cheap, part, self._cheap_widths)
+        unsure = np.nonzero(~part.all(axis=0))[0]
+        if len(unsure):
+            again = np.empty((len(self.kept), len(unsure)), dtype=np.int8)
+            self._float_stage([a[unsure] for a in pieces], [None] * len(known), again, self._widths)
+            part[:, unsure] = again
+
+    def _cheap_functions(self, pieces, known, reach) -> list | None:
+        """The float32 pre-pass's sines and cosines for a chunk, or None (see :func:`.float_stage.cheap_functions`)."""
+        if not self._cheap or any(k is not None for k in known) or not len(pieces[0]):
+            return None
+        return cheap_functions(self.functions, pieces, reach, *self._cheap_workspace(len(pieces[0])))
+
+    def _cheap_workspace(self, size: int) -> tuple[np.ndarray, np.ndarray]:
+        found = getattr(self._workspaces, "cheap", None)
+        if found is None or found[0].shape[1] < size:
+            found = (np.empty((2, size), dtype=np.float32), np.empty((len(self.functions), size)))
+            self._workspaces.cheap = found
+        return found
 
     def _given(self, function_values, arrays) -> list:
         """The caller's values of :attr:`functions` (None: computed here), flat, checked for their length."""
@@ -335,65 +386,6 @@ class PointClassifier:
         if found is not None:
             return found
         return certified_sign(self.kept[position], dict(zip(self.parameters, point)), band=0.0)[0]
-
-
-def _functions_as_arguments(flat: list, parameters: tuple) -> tuple[tuple, tuple]:
-    """((new symbols, ``flat`` with them), per new symbol (index of its parameter, NumPy ufunc name)): each
-    function of one parameter (``sin(alpha)``) becomes an argument of the generated code, computed once per
-    chunk or given by the caller (an atlas computes it once per value of a grid axis)."""
-    found = sorted(
-        {f for e in flat for f in e.atoms(sp.Function) if len(f.args) == 1 and f.args[0] in parameters},
-        key=sp.default_sort_key,
-    )
-    found = [f for f in found if type(f) in _FUNCTIONS]
-    names = tuple(sp.Dummy(f"f{i}") for i in range(len(found)))
-    replaced = [e.xreplace(dict(zip(found, names))) for e in flat]
-    return (names, replaced), tuple((parameters.index(f.args[0]), _FUNCTIONS[type(f)]) for f in found)
-
-
-def _function_values(argument: np.ndarray, ufunc: str, row: np.ndarray) -> np.ndarray:
-    """``ufunc`` of a chunk's argument into ``row``; of one value for every point (stride 0), once."""
-    if argument.strides == (0,) and len(argument) > 1:
-        one = getattr(np, ufunc)(argument[:1])
-        return np.ndarray(argument.shape, dtype=np.float64, buffer=one, strides=(0,))
-    return getattr(np, ufunc)(argument, out=row)
-
-
-def _as_array(value, size: int) -> np.ndarray:
-    """Generated code returns plain numbers for constant parts (0 for an empty M)."""
-    return value if isinstance(value, np.ndarray) else np.full(size, float(value))
-
-
-def _certain_sign(groups, width: float, zeros: tuple[bool, bool], out: np.ndarray, scratch) -> None:
-    """Into ``out`` (int8): +1/-1 where the sign of P - M (+ U) is certain, 0 elsewhere; valid for
-    values computed without overflow, underflow or invalid operations. ``zeros``: whether
-    P and M are identically 0; ``scratch``: two float64 and two int8 rows of ``out``'s length."""
-    P, M, *rest = groups
-    f0, f1, i0, i1 = scratch
-    b0, b1 = i0.view(np.bool_), i1.view(np.bool_)
-    if rest:  # terms of unknown sign: |F^ - F| <= gamma (P + M + |U|); certain where |F^| > width (P + M + |U|)
-        np.subtract(P, M, out=f0)
-        np.add(f0, rest[0], out=f0)
-        np.add(P, M, out=f1)
-        np.add(f1, rest[1], out=f1)
-        np.multiply(f1, width, out=f1)
-        np.greater(f0, f1, out=b0)
-        np.negative(f1, out=f1)
-        np.less(f0, f1, out=b1)
-        np.subtract(i0, i1, out=out)
-    elif zeros[1]:  # F = P, nonnegative terms: P^ > 0 iff P > 0
-        np.greater(P, 0.0, out=out.view(np.bool_))
-    elif zeros[0]:
-        np.greater(M, 0.0, out=out.view(np.bool_))
-        np.negative(out, out=out)
-    else:  # P - M > width (P + M) iff P (1 - width)/(1 + width) > M: no cancellation in the test; the
-        # few roundings of the ratio and the product are far inside width >= 2 gamma_(r+3)
-        shrink = (1 - width) / (1 + width)
-        np.multiply(P, shrink, out=f0)
-        np.greater(f0, M, out=b0)
-        np.multiply(M, shrink, out=f0)
-        np.greater(f0, P, out=b1)
-        np.subtract(i0, i1, out=out)
 
 
 @dataclass(frozen=True, eq=False)

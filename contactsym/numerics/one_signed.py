@@ -62,10 +62,11 @@ def _one_signed_sums(expr: sp.Expr) -> bool:
     return True
 
 
-def _roundings(expr: sp.Expr) -> int:
+def _roundings(expr: sp.Expr, function: int = 4) -> int:
     """Roundings along the longest path of the evaluation of ``expr`` in floating point:
     its computed value is within gamma_r relative of the exact one when every sum of
-    ``expr`` has terms of one sign."""
+    ``expr`` has terms of one sign. ``function``: the roundings a function of an exact argument counts for
+    (4: NumPy's float64 ones; a value with relative error at most k u counts for k, as gamma_k >= k u)."""
     if expr.is_Symbol:
         return 0
     if expr.is_Number or expr.is_NumberSymbol:
@@ -73,22 +74,22 @@ def _roundings(expr: sp.Expr) -> int:
             return 0
         return 1
     if expr.is_Add:
-        return max(_roundings(a) for a in expr.args) + len(expr.args) - 1
+        return max(_roundings(a, function) for a in expr.args) + len(expr.args) - 1
     if expr.is_Mul:  # a product of k factors: k - 1 roundings, none for a power of two
         exact = sum(1 for f in expr.args if f.is_Integer and f != 0 and abs(int(f)).bit_count() == 1)
-        return sum(_roundings(f) for f in expr.args) + len(expr.args) - 1 - exact
+        return sum(_roundings(f, function) for f in expr.args) + len(expr.args) - 1 - exact
     if expr.is_Pow:
         base, exponent = expr.args
         if exponent.is_Integer:
             n = abs(int(exponent))
-            return n * _roundings(base) + n + (1 if exponent < 0 else 0)
+            return n * _roundings(base, function) + n + (1 if exponent < 0 else 0)
         if exponent.is_Rational:
-            return _roundings(base) + 2
+            return _roundings(base, function) + 2
     if isinstance(expr, sp.Abs):
-        return _roundings(expr.args[0])
+        return _roundings(expr.args[0], function)
     if isinstance(expr, sp.Function) and len(expr.args) == 1:
-        if _roundings(expr.args[0]) == 0:
-            return 4  # NumPy's elementary functions: at most 4 units in the last place (its SIMD ones)
+        if _roundings(expr.args[0], function) == 0:
+            return function  # NumPy's elementary functions: at most 4 units in the last place (its SIMD ones)
         raise NumericsError(
             f"cannot bound the rounding of {expr}: its argument is rounded; introduce a parameter for the argument."
         )

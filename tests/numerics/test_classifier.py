@@ -208,3 +208,34 @@ def test_function_values_of_the_wrong_number_or_length_are_refused():
         BRAKE_CLASSIFIER(*values, function_values=[])
     with pytest.raises(nm.NumericsError, match="one value per point"):
         BRAKE_CLASSIFIER(*values, function_values=[np.zeros(2)] * len(BRAKE_CLASSIFIER.functions))
+
+
+def test_numpys_float32_sine_and_cosine_are_within_the_prepass_bound():
+    from contactsym.numerics.float_stage import _CHEAP_ABSOLUTE, _CHEAP_RANGE
+
+    rng = np.random.default_rng(5)
+    x = np.concatenate([np.linspace(-_CHEAP_RANGE, _CHEAP_RANGE, 400_001), rng.uniform(-4, 4, 200_000)])
+    x32 = x.astype(np.float32)
+    for function in (np.sin, np.cos):
+        assert np.max(np.abs(function(x32).astype(float) - function(x32.astype(float)))) <= _CHEAP_ABSOLUTE / 4
+
+
+def test_the_float32_prepass_gives_the_float64_result_and_leaves_the_close_points_to_it():
+    import copy
+
+    values = _brake_points(np.random.default_rng(8), 3000, on_line=3000)
+    phi1 = values[3]
+    phi1 *= 1 + 10.0 ** np.random.default_rng(9).uniform(-9, -1, 3000) * np.resize([1, -1], 3000)  # both sides
+    float64 = copy.copy(BRAKE_CLASSIFIER)
+    float64._cheap = False
+    prepass = copy.copy(BRAKE_CLASSIFIER)
+    assert prepass._cheap
+    widths = []
+    stage = prepass._float_stage
+    prepass._float_stage = lambda *args: (widths.append(args[3]), stage(*args))
+    for chunk in (3000, 256):
+        widths.clear()
+        ours, theirs = prepass(*values, chunk=chunk), float64(*values, chunk=chunk)
+        assert np.array_equal(ours.stable, theirs.stable) and np.array_equal(ours.signs, theirs.signs)
+        assert np.array_equal(ours.in_band, theirs.in_band)
+        assert any(w is prepass._cheap_widths for w in widths) and any(w is prepass._widths for w in widths)
