@@ -46,6 +46,9 @@ class PointClassifier:
     certain wherever P^ > 0. The bounds assume no overflow, underflow or invalid
     operation: the float stage runs with these trapped, in chunks that stay in the
     cache, and a chunk that traps is halved until the points that cause it are found.
+    A function of one parameter (``sin(alpha)``) is computed once per chunk (or given:
+    ``function_values``); sines and cosines come from a float32 pre-pass with their own
+    certified bound where it applies, and the points it leaves undecided from float64.
     Those points and the points inside ``max(band, 2 gamma)`` relative are decided
     exactly: the binary inputs are exact rationals, F is evaluated in 256-bit
     arithmetic, and where even that leaves |F| < 2^-200 (P + M + |U|) the point is

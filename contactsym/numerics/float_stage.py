@@ -23,7 +23,8 @@ def cheap_functions(functions, pieces, reach, singles: np.ndarray, cheap: np.nda
     _CHEAP_ABSOLUTE of sin(x32), the value v is within e = 2^-24 |x| + _CHEAP_ABSOLUTE of sin(x); relative
     to |sin(x)| >= min |v| - e, at most _CHEAP_ERROR when checked here (else None: float64 throughout).
     A point certain with the widths of the classifier's ``_cheap_widths`` is certain with the same sign in
-    float64, so the result is the same as float64 throughout. ``singles``: two float32 rows, ``cheap`` one
+    float64, so the result is the same as float64 throughout (the band too, but for a point whose float64
+    evaluation would underflow or overflow where this one does not: its sign is certain either way). ``singles``: two float32 rows, ``cheap`` one
     float64 row per function, each at least as long as the chunk."""
     size, values = len(pieces[0]), []
     with np.errstate(all="ignore"):
