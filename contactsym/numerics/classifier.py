@@ -25,6 +25,7 @@ from .float_stage import (
     _certain_sign,
     _function_values,
     _functions_as_arguments,
+    _undecided,
     cheap_functions,
 )
 from .one_signed import _one_signed_form, _roundings
@@ -308,7 +309,7 @@ class PointClassifier:
             known = [None if g is None else g[start:stop] for g in given]
             self._chunk_signs(pieces, known, reach, part)
             self._combine(part, signs[:, start:stop], stable[start:stop])
-            np.logical_not(part.all(axis=0), out=in_band[start:stop])
+            _undecided(part, in_band[start:stop])
         points = np.nonzero(in_band)[0]
         for done, i in enumerate(points):
             if budget.report(done / len(points), f"{done} of {len(points)} points decided exactly"):
@@ -339,7 +340,7 @@ class PointClassifier:
             self._float_stage(pieces, known, part, self._widths)
             return
         self._float_stage(pieces, cheap, part, self._cheap_widths)
-        unsure = np.nonzero(~part.all(axis=0))[0]
+        unsure = np.nonzero(_undecided(part, np.empty(part.shape[1], dtype=bool)))[0]
         if len(unsure):
             again = np.empty((len(self.kept), len(unsure)), dtype=np.int8)
             self._float_stage([a[unsure] for a in pieces], [None] * len(known), again, self._widths)
@@ -378,10 +379,9 @@ class PointClassifier:
             if sign < 0:
                 np.negative(signs[index], out=signs[index])
         signs[self.always_false] = 0
-        if len(signs):
-            np.min(signs, axis=0, out=stable)
-        else:
-            stable[...] = 1
+        stable[...] = 1
+        for row in signs:  # a chain of minimum: a third of the time of np.min over axis 0 (int8 rows)
+            np.minimum(stable, row, out=stable)
 
     def _exact_factor_sign(self, position: int, point: list[float]) -> int:
         """The exact sign of one kept factor at one point: 256-bit first, then rationals."""

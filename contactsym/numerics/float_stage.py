@@ -104,3 +104,16 @@ def _certain_sign(groups, width: float, zeros: tuple[bool, bool], out: np.ndarra
         np.multiply(M, shrink, out=f0)
         np.greater(f0, P, out=b1)
         np.subtract(i0, i1, out=out)
+
+
+def _undecided(factor_signs: np.ndarray, out: np.ndarray) -> np.ndarray:
+    """Into ``out`` (bool): where some factor's sign (int8 rows of +1, -1, 0) is 0, i.e. their product is 0."""
+    if not len(factor_signs):
+        out[...] = False
+        return out
+    product = factor_signs[0]
+    if len(factor_signs) > 1:
+        product = np.multiply(factor_signs[0], factor_signs[1])
+        for row in factor_signs[2:]:
+            np.multiply(product, row, out=product)
+    return np.equal(product, 0, out=out)
