@@ -25,6 +25,7 @@ from .float_stage import (
     _certain_sign,
     _function_values,
     _functions_as_arguments,
+    _given,
     _undecided,
     cheap_functions,
 )
@@ -286,7 +287,7 @@ class PointClassifier:
         chunk = validate.chunk_size(chunk)
         budget = Budget(progress, max_seconds)
         arrays = self._check(arrays)
-        given = self._given(function_values, arrays)
+        given = _given(function_values, self.functions, arrays)
         shape = np.broadcast(*arrays).shape if arrays else ()
         # no copies: an array of the points' shape is read in place, one value stays one value (a view of
         # zero stride, checked once), and only an array broadcast along some axes is copied
@@ -301,15 +302,20 @@ class PointClassifier:
         signs = np.empty((len(self.conditions), size), dtype=np.int8)
         stable = np.empty(size, dtype=np.int8)
         in_band = np.empty(size, dtype=bool)
+        left: list[np.ndarray] = []  # points the float32 pre-pass leaves to float64, all chunks in one go
         for start in range(0, size, chunk):  # one pass per chunk: checks, generated code, signs, all in the cache
             stop = min(start + chunk, size)
             part = factor_signs[:, start:stop]
             pieces = [a[start:stop] for a in arrays]
             reach = self._check_values(pieces)
             known = [None if g is None else g[start:stop] for g in given]
-            self._chunk_signs(pieces, known, reach, part)
+            prepass = self._chunk_signs(pieces, known, reach, part)
             self._combine(part, signs[:, start:stop], stable[start:stop])
-            _undecided(part, in_band[start:stop])
+            undecided = _undecided(part, in_band[start:stop])
+            if prepass:
+                left.append(start + np.nonzero(undecided)[0])
+        if left:
+            self._in_float64(np.concatenate(left), arrays, chunk, (factor_signs, signs, stable, in_band))
         points = np.nonzero(in_band)[0]
         for done, i in enumerate(points):
             if budget.report(done / len(points), f"{done} of {len(points)} points decided exactly"):
@@ -332,19 +338,29 @@ class PointClassifier:
             max(bands, default=self.band),
         )
 
-    def _chunk_signs(self, pieces, known, reach, part) -> None:
-        """Signs of the kept factors on a chunk (0: not certain): a float32 pre-pass for sines and cosines where
-        it applies, then float64 for the points it leaves; the same result as float64 throughout."""
+    def _chunk_signs(self, pieces, known, reach, part) -> bool:
+        """Signs of the kept factors on a chunk (0: not certain), in float64 or by the float32 pre-pass for sines
+        and cosines where it applies (then True: the points it leaves undecided go to :meth:`_in_float64`)."""
         cheap = self._cheap_functions(pieces, known, reach)
         if cheap is None:
             self._float_stage(pieces, known, part, self._widths)
-            return
+            return False
         self._float_stage(pieces, cheap, part, self._cheap_widths)
-        unsure = np.nonzero(_undecided(part, np.empty(part.shape[1], dtype=bool)))[0]
-        if len(unsure):
-            again = np.empty((len(self.kept), len(unsure)), dtype=np.int8)
-            self._float_stage([a[unsure] for a in pieces], [None] * len(known), again, self._widths)
-            part[:, unsure] = again
+        return True
+
+    def _in_float64(self, index: np.ndarray, arrays, chunk: int, results: tuple) -> None:
+        """The points ``index`` that the pre-pass left undecided, in float64 (a chunk at a time), into ``results``
+        (factor signs, signs, stable, in_band): the same as float64 throughout (:func:`.float_stage.cheap_functions`)."""
+        factor_signs, signs, stable, in_band = results
+        for start in range(0, len(index), chunk):
+            some = index[start : start + chunk]
+            again = np.empty((len(self.kept), len(some)), dtype=np.int8)
+            self._float_stage([a[some] for a in arrays], [None] * len(self.functions), again, self._widths)
+            verdicts = np.empty((len(self.conditions), len(some)), dtype=np.int8)
+            least = np.empty(len(some), dtype=np.int8)
+            self._combine(again, verdicts, least)
+            factor_signs[:, some], signs[:, some], stable[some] = again, verdicts, least
+            in_band[some] = _undecided(again, np.empty(len(some), dtype=bool))
 
     def _cheap_functions(self, pieces, known, reach) -> list | None:
         """The float32 pre-pass's sines and cosines for a chunk, or None (see :func:`.float_stage.cheap_functions`)."""
@@ -358,18 +374,6 @@ class PointClassifier:
             found = (np.empty((2, size), dtype=np.float32), np.empty((len(self.functions), size)))
             self._workspaces.cheap = found
         return found
-
-    def _given(self, function_values, arrays) -> list:
-        """The caller's values of :attr:`functions` (None: computed here), flat, checked for their length."""
-        if function_values is None:
-            return [None] * len(self.functions)
-        if len(function_values) != len(self.functions):
-            raise NumericsError(f"give {len(self.functions)} function_values (or None), one per {self.functions}.")
-        size = int(np.prod(np.broadcast(*arrays).shape)) if arrays else 0
-        given = [None if v is None else validate.real_array(v, "function_values").reshape(-1) for v in function_values]
-        if any(g is not None and len(g) != size for g in given):
-            raise NumericsError(f"each of function_values needs one value per point ({size}).")
-        return given
 
     def _combine(self, factor_signs, signs, stable) -> None:
         """Signs of the conditions from those of their factors; stable = the least of them."""

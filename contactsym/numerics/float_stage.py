@@ -6,6 +6,8 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from .. import validate
+from ..errors import NumericsError
 from .buffered import NUMPY_FUNCTIONS
 
 __all__: list[str] = []  # helpers of contactsym.numerics.classifier
@@ -117,3 +119,16 @@ def _undecided(factor_signs: np.ndarray, out: np.ndarray) -> np.ndarray:
         for row in factor_signs[2:]:
             np.multiply(product, row, out=product)
     return np.equal(product, 0, out=out)
+
+
+def _given(function_values, functions: tuple, arrays) -> list:
+    """The caller's values of the classifier's ``functions`` (None: computed per chunk), flat, checked."""
+    if function_values is None:
+        return [None] * len(functions)
+    if len(function_values) != len(functions):
+        raise NumericsError(f"give {len(functions)} function_values (or None), one per {functions}.")
+    size = int(np.prod(np.broadcast(*arrays).shape)) if arrays else 0
+    given = [None if v is None else validate.real_array(v, "function_values").reshape(-1) for v in function_values]
+    if any(g is not None and len(g) != size for g in given):
+        raise NumericsError(f"each of function_values needs one value per point ({size}).")
+    return given
