@@ -76,26 +76,33 @@ class Grid:
         >>> [c.tolist() for c in as_grid({"mu": [0.5, 1.0], "alpha": [1.0, 2.0, 3.0]}).columns(1, 5)]
         [[0.5, 0.5, 1.0, 1.0], [2.0, 3.0, 1.0, 2.0]]
         """
-        out, inner = [], self.size
-        for axis in self.axes:
-            inner //= len(axis)  # points per step along this axis
-            if stop <= start:
-                out.append(np.empty(0))
-                continue
-            period, count = inner * len(axis), stop - start
-            offset = start % period
-            if period <= count:  # whole periods, repeated: copies, no index arithmetic
-                out.append(np.tile(np.repeat(axis, inner), -(-(offset + count) // period))[offset : offset + count])
-                continue
-            if inner == 1:  # a window of the axis, wrapping around at most once
-                out.append(np.concatenate([axis[offset : offset + count], axis[: max(0, offset + count - period)]]))
-                continue
-            first, last = start // inner, (stop - 1) // inner
-            runs = np.full(last - first + 1, inner)
-            runs[0] -= start - first * inner
-            runs[-1] -= (last + 1) * inner - stop
-            out.append(np.repeat(axis[np.arange(first, last + 1) % len(axis)], runs))
-        return out
+        return [self.column(j, start, stop) for j in range(len(self.axes))]
+
+    def column(self, j: int, start: int, stop: int, along: np.ndarray | None = None) -> np.ndarray:
+        """Axis ``j``'s value at the points ``start:stop``, or ``along`` (one value per value of the axis, e.g.
+        a function of it computed once per value) laid out the same way.
+
+        Examples
+        --------
+        >>> g = as_grid({"mu": [0.5, 1.0], "alpha": [1.0, 2.0, 3.0]})
+        >>> g.column(1, 1, 5, along=np.array([10.0, 20.0, 30.0])).tolist()
+        [20.0, 30.0, 10.0, 20.0]
+        """
+        axis = self.axes[j] if along is None else along
+        inner = math.prod(self.shape[j + 1 :])  # points per step along this axis
+        if stop <= start:
+            return np.empty(0)
+        period, count = inner * len(axis), stop - start
+        offset = start % period
+        if period <= count:  # whole periods, repeated: copies, no index arithmetic
+            return np.tile(np.repeat(axis, inner), -(-(offset + count) // period))[offset : offset + count]
+        if inner == 1:  # a window of the axis, wrapping around at most once
+            return np.concatenate([axis[offset : offset + count], axis[: max(0, offset + count - period)]])
+        first, last = start // inner, (stop - 1) // inner
+        runs = np.full(last - first + 1, inner)
+        runs[0] -= start - first * inner
+        runs[-1] -= (last + 1) * inner - stop
+        return np.repeat(axis[np.arange(first, last + 1) % len(axis)], runs)
 
     def token(self) -> bytes:
         """The grid's identity, for a checkpoint's fingerprint."""

@@ -120,6 +120,11 @@ class Kernel:
     def evaluate(self, points: np.ndarray) -> np.ndarray:
         raise NotImplementedError
 
+    def run(self, grid: Grid, start: int, stop: int) -> tuple[np.ndarray, Reasons | list[str]]:
+        """The points ``start:stop`` of ``grid``: ``self(grid.points(start, stop))`` unless a kernel reads
+        the grid's columns (and functions of its axes, once per axis value) itself."""
+        return self(grid.points(start, stop))
+
     def __call__(self, points: np.ndarray) -> tuple[np.ndarray, Reasons | list[str]]:
         n = len(points)
         if self.vectorised:

@@ -14,18 +14,18 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from functools import lru_cache
 
-import numpy as np
-import sympy as sp
-
-from .. import numerics
-from ..numerics.buffered import BufferedCode, through_tan
 from ..validate import shorten
 from .grid import AtlasError, Grid
-from .kernel import Kernel, Setup, once_per_scene, setup_for
+from .kernel import Kernel, once_per_scene
 from .options import check_options
 from .pointwise import SQUEAL_METHODS, PointFailure, build_catastrophe, build_cycle, build_function, build_squeal
+from .vectorised import (
+    _build_classification,
+    _build_equilibrium_count,
+    _build_leading_eigenvalue,
+    _build_stable_fraction,
+)
 
 __all__ = [
     "PointFailure",
@@ -74,164 +74,6 @@ class Quantity:
         """Identity for a checkpoint: the name and the options (functions by qualified name)."""
         items = sorted((k, getattr(v, "__qualname__", repr(v))) for k, v in self.options.items())
         return f"{self.name}{items}"
-
-
-def _classifier(setup: Setup, conditions, what: str, extra=()) -> numerics.PointClassifier:
-    """A classifier of the grid's and the fixed symbols (then ``extra``): one per scene and quantity, whatever
-    the fixed numbers (they are arguments of its code, read once per chunk: see ``Setup.columns``)."""
-    conditions = tuple(setup.prepare(c, what, extra) for c in conditions)
-    try:
-        return _built_classifier(conditions, setup.symbols + tuple(extra))
-    except numerics.NumericsError as error:
-        raise AtlasError(f"{what}: {error}") from None
-
-
-@lru_cache(maxsize=32)
-def _built_classifier(conditions: tuple, symbols: tuple) -> numerics.PointClassifier:
-    """One classifier per scene and quantity: building one factors every condition (``sp.factor``),
-    which costs far more than a sweep's chunk; the classifier is read-only once built."""
-    return numerics.PointClassifier(conditions, symbols)
-
-
-@lru_cache(maxsize=32)
-def _robust_function(robust: tuple, symbols: tuple):
-    """The robust regions' code, once per scene and fixed values (code generation costs more than a chunk):
-    buffered code (truth values as 1.0 and 0.0, even powers of sin and cos through tan), else lambdify."""
-    try:
-        return BufferedCode(symbols, [through_tan(b) for b in robust])
-    except numerics.NumericsError:
-        function = numerics.lambdify_cse(symbols, list(robust))
-        return lambda columns, buffers: function(*columns)
-
-
-def _strict(condition) -> list:
-    """``expr > 0`` parts of an equilibrium's existence condition (an And of strict inequalities)."""
-    parts = []
-    for atom in sp.And.make_args(condition):
-        if atom is sp.true:
-            continue
-        if isinstance(atom, sp.StrictGreaterThan):
-            parts.append(atom.lhs - atom.rhs)
-        elif isinstance(atom, sp.StrictLessThan):
-            parts.append(atom.rhs - atom.lhs)
-        else:
-            raise AtlasError(
-                f"cannot count equilibria: the existence condition {condition} is not strict inequalities."
-            )
-    return parts or [sp.S.One]
-
-
-# --- vectorised quantities ---------------------------------------------------------------------
-
-
-class _LeadingEigenvalue(Kernel):
-    outputs = ("leading_eigenvalue", "frequency")
-    vectorised = True
-
-    def __init__(self, setup: Setup, matrix: sp.Matrix):
-        self.setup, self.size = setup, matrix.rows
-        self.function = numerics.lambdify_cse(setup.symbols, list(matrix))
-
-    def evaluate(self, points):
-        n = len(points)
-        entries = self.function(*self.setup.columns(points))
-        M = np.stack([np.broadcast_to(np.asarray(e, dtype=float), (n,)) for e in entries], axis=-1)
-        eigenvalues = np.linalg.eigvals(M.reshape(n, self.size, self.size))
-        leading = np.take_along_axis(eigenvalues, np.argmax(eigenvalues.real, axis=1)[:, None], axis=1)[:, 0]
-        return np.column_stack([leading.real, np.abs(leading.imag)])
-
-
-def _build_leading_eigenvalue(scene, grid, values, signs=None):
-    setup = setup_for(scene, grid, values)
-    matrix = setup.prepare(scene.linearization(signs).jacobian, "the matrix (4.5)")
-    return _LeadingEigenvalue(setup, matrix)
-
-
-class _Classification(Kernel):
-    outputs = ("region", "stable")
-    vectorised = True
-
-    def __init__(self, setup: Setup, robust: list, classifier):
-        self.setup, self.classifier = setup, classifier
-        self.function = _robust_function(tuple(setup.specialised(b) for b in robust), setup.swept)
-
-    def evaluate(self, points):
-        n = len(points)
-        columns = self.setup.grid_columns(points)
-        buffers = self.scratch("robust", (getattr(self.function, "buffers", 0), n))
-        # truth values as arrays of the points or, where constant, as one value (copyto broadcasts it)
-        stable, unstable, dependent = (np.asarray(m) != 0 for m in self.function(columns, buffers))
-        out = np.full((2, n), np.nan).T  # column-major: each output's column is contiguous
-        region = out[:, 0]
-        for value, mask in ((0.0, dependent), (-1.0, unstable), (1.0, stable)):  # the first that holds wins
-            np.copyto(region, value, where=mask)
-        if self.classifier is not None:
-            out[:, 1] = self.classifier(*columns, *self.setup.fixed_columns(n)).stable
-        return out
-
-
-def _build_classification(scene, grid, values, signs=None):
-    setup = setup_for(scene, grid, values)
-    st = scene.stability(signs)
-    # None (undecided at a numeric A) proves nothing: such points get no region (NaN)
-    robust = [sp.false if b is None else b for b in (st.robustly_stable, st.robustly_unstable, st.law_dependent)]
-    robust = [setup.prepare(b, "the robust classification (Propositions 3-8)") for b in robust]
-    try:
-        classifier = _classifier(setup, st.hurwitz, "the Hurwitz conditions (4.7)")
-    except AtlasError:
-        classifier = None  # no law given: only the law-independent region
-    return _Classification(setup, robust, classifier)
-
-
-class _StableFraction(Kernel):
-    outputs = ("stable_fraction",)
-    vectorised = True
-
-    def __init__(self, setup: Setup, classifier, laws: np.ndarray):
-        self.setup, self.classifier, self.laws = setup, classifier, laws
-
-    def evaluate(self, points):
-        n, count = len(points), len(self.laws)
-        columns = [np.repeat(c, count) for c in self.setup.grid_columns(points)] + self.setup.fixed_columns(n * count)
-        columns += [np.tile(self.laws[:, j], n) for j in range(self.laws.shape[1])]
-        stable = self.classifier(*columns).stable.reshape(n, count)
-        return (stable == 1).mean(axis=1)
-
-
-def _build_stable_fraction(scene, grid, values, laws=256, magnitudes=(0.1, 10.0), seed=0, signs=None):
-    setup = setup_for(scene, grid, values)
-    lin = scene.linearization(signs)
-    law_symbols = tuple(lin.Phi) + tuple(lin.Psi)
-    if not all(isinstance(s, sp.Symbol) and s.is_negative for s in law_symbols):
-        raise AtlasError(
-            f"the laws of '{scene.name}' are fixed (Phi, Psi = {law_symbols}); sampling laws needs generic contacts."
-        )
-    taken = sorted(str(s) for s in set(law_symbols) & set(setup.symbols))
-    if taken:
-        raise AtlasError(f"{taken} are sampled by stable_fraction; do not give them in the grid or values.")
-    low, high = np.log10(magnitudes[0]), np.log10(magnitudes[1])
-    samples = -(10.0 ** np.random.default_rng(seed).uniform(low, high, size=(int(laws), len(law_symbols))))
-    return _StableFraction(
-        setup, _classifier(setup, scene.stability(signs).hurwitz, "the Hurwitz conditions (4.7)", law_symbols), samples
-    )
-
-
-class _EquilibriumCount(Kernel):
-    outputs = ("equilibrium_count",)
-    vectorised = True
-
-    def __init__(self, setup: Setup, classifiers: list):
-        self.setup, self.classifiers = setup, classifiers
-
-    def evaluate(self, points):
-        columns = self.setup.columns(points)
-        return sum((c(*columns).stable == 1).astype(float) for c in self.classifiers)
-
-
-def _build_equilibrium_count(scene, grid, values):
-    setup = setup_for(scene, grid, values)
-    what = "the existence conditions of the equilibria (4.2)"
-    return _EquilibriumCount(setup, [_classifier(setup, _strict(b.condition), what) for b in scene.equilibria()])
 
 
 # --- the public constructors ------------------------------------------------------------------

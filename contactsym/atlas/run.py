@@ -47,7 +47,7 @@ def _require(module: str):
 def _chunk(kernel: Kernel, grid: Grid, chunk: int, index: int) -> tuple:
     """One task: the kernel on one chunk of the grid; a NaN always comes with its reason."""
     start = index * chunk
-    values, reasons = kernel(grid.points(start, min(start + chunk, grid.size)))
+    values, reasons = kernel.run(grid, start, min(start + chunk, grid.size))
     reasons = reasons if isinstance(reasons, Reasons) else Reasons.from_texts(reasons)
     values = np.asarray(values, dtype=float).reshape(len(reasons), len(kernel.outputs))
     return index, values, _explained(kernel, values, reasons)

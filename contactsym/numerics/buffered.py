@@ -22,10 +22,10 @@ import sympy as sp
 
 from ..errors import NumericsError
 
-__all__ = ["BufferedCode", "through_tan"]
+__all__ = ["NUMPY_FUNCTIONS", "BufferedCode", "cheapest_trig", "through_tan"]
 
 #: SymPy functions of one argument and the NumPy ufunc for each.
-_FUNCTIONS = {
+NUMPY_FUNCTIONS = {
     sp.sin: "sin",
     sp.cos: "cos",
     sp.tan: "tan",
@@ -51,12 +51,45 @@ _RELATIONS = {
 _CONNECTIVES = {sp.And: "logical_and", sp.Or: "logical_or", sp.Not: "logical_not"}
 
 
+def _tan_is_vectorised() -> bool:
+    """Whether this NumPy runs a SIMD loop for float64 tan (SVML, on AVX-512 machines).
+
+    Elsewhere tan, sin and cos are all scalar loops, and tan the dearest of the three (17, 12 and
+    14 ns per value on an AVX2 AMD EPYC, NumPy 2.4)."""
+    try:
+        from numpy.lib.introspect import opt_func_info  # NumPy >= 2.0
+    except ImportError:
+        return False
+    loop = opt_func_info(func_name="^tan$", signature="^dd$").get("tan", {}).get("dd", {}).get("current", "baseline")
+    return not loop.startswith("baseline")
+
+
+#: Whether :func:`cheapest_trig` writes even powers of sin and cos through tan on this machine.
+TAN_IS_VECTORISED = _tan_is_vectorised()
+
+
+def cheapest_trig(expr: sp.Basic) -> sp.Basic:
+    """``expr`` in the form of its trigonometric functions that NumPy evaluates fastest here:
+    :func:`through_tan` where float64 tan is vectorised (one SIMD tan, a square, a sum and a
+    quotient per angle), else unchanged (sin or cos, then a square: one scalar call per angle).
+    Both forms keep a relative error bound; the classifier's verdicts are the same either way.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> a = sp.Symbol("a")
+    >>> cheapest_trig(sp.sin(a)**2) in (sp.sin(a)**2, through_tan(sp.sin(a)**2))
+    True
+    """
+    return through_tan(expr) if TAN_IS_VECTORISED else expr
+
+
 def through_tan(expr: sp.Basic) -> sp.Basic:
     """Even powers of sin and cos written with t = tan: sin^2 = t^2/(1 + t^2), cos^2 = 1/(1 + t^2).
 
-    NumPy vectorises float64 tan (within 4 units in the last place) but not sin and cos,
-    which cost several times more; the new sums have terms of one sign, so a relative
-    error bound still holds.
+    Where NumPy vectorises float64 tan (SVML on AVX-512, within 4 units in the last place) and not
+    sin and cos, this costs several times less; the new sums have terms of one sign, so a relative
+    error bound still holds. See :func:`cheapest_trig`.
 
     Examples
     --------
@@ -109,7 +142,7 @@ class _Writer:
             return self._product(expr)
         if expr.is_Pow:
             return self._power(expr)
-        ufunc = _FUNCTIONS.get(type(expr))
+        ufunc = NUMPY_FUNCTIONS.get(type(expr))
         if ufunc is not None and len(expr.args) == 1:
             return self.op(ufunc, self.emit(expr.args[0]))
         if expr is sp.true or expr is sp.false:

@@ -6,7 +6,6 @@ import math
 import threading
 from collections.abc import Sequence
 from dataclasses import dataclass
-from fractions import Fraction
 
 import mpmath
 import numpy as np
@@ -17,9 +16,21 @@ from ..arguments import checked
 from ..errors import NumericsError
 from ..parse import sympy_only
 from ..progress import Budget, Progress
-from .buffered import BufferedCode, through_tan
-from .certified import _exact_float, _gamma, certified_sign
+from .buffered import BufferedCode, cheapest_trig
+from .certified import _gamma, certified_sign
 from .codegen import lambdify_cse
+from .float_stage import (
+    _CHEAP_ERROR,
+    _as_array,
+    _certain_sign,
+    _function_values,
+    _functions_as_arguments,
+    _given,
+    _undecided,
+    cheap_functions,
+)
+from .one_signed import _one_signed_form, _roundings
+from .values import _UNIT
 
 
 @checked(conditions="list | tuple | sp.MatrixBase")
@@ -37,6 +48,9 @@ class PointClassifier:
     certain wherever P^ > 0. The bounds assume no overflow, underflow or invalid
     operation: the float stage runs with these trapped, in chunks that stay in the
     cache, and a chunk that traps is halved until the points that cause it are found.
+    A function of one parameter (``sin(alpha)``) is computed once per chunk (or given:
+    ``function_values``); sines and cosines come from a float32 pre-pass with their own
+    certified bound where it applies, and the points it leaves undecided from float64.
     Those points and the points inside ``max(band, 2 gamma)`` relative are decided
     exactly: the binary inputs are exact rationals, F is evaluated in 256-bit
     arithmetic, and where even that leaves |F| < 2^-200 (P + M + |U|) the point is
@@ -91,14 +105,26 @@ class PointClassifier:
         if free - set(self.parameters):
             raise NumericsError(f"the conditions also need values for {sorted(map(str, free - set(self.parameters)))}.")
         self.parts = [self._split(factor) for factor in self.kept]
-        code = [tuple(through_tan(g) for g in p) for p in self.parts]
+        code = [tuple(cheapest_trig(g) for g in p) for p in self.parts]
         self.gammas = [_gamma(max(_roundings(g) for g in p) + 3) for p in code]
         flat = [g for p in code for g in p]
+        arguments, self.functions = _functions_as_arguments(flat, self.parameters)
         try:  # every operation into a reused buffer: the chunk stays in the cache, no temporaries
-            self._buffered: BufferedCode | None = BufferedCode(self.parameters, flat)
+            self._buffered: BufferedCode | None = BufferedCode(self.parameters + arguments[0], arguments[1])
             self._function = None
         except NumericsError:  # a part without a buffered form (e.g. a symbolic exponent)
             self._buffered, self._function = None, lambdify_cse(self.parameters, flat)
+            self.functions = ()
+        # the float32 pre-pass (see _cheap_functions): its sine or cosine counts as k roundings, k u >= its error
+        self._cheap = self._buffered is not None and bool(self.functions)
+        self._cheap &= all(ufunc in ("sin", "cos") for _, ufunc in self.functions)
+        cost = math.ceil(_CHEAP_ERROR / _UNIT)
+        widths = [max(self.band, 2 * g) for g in self.gammas]
+        self._widths = widths
+        self._cheap_widths = [  # certain there => certain, with the same sign, in float64 (see _cheap_functions)
+            2 * _gamma(max(_roundings(g, cost) for g in p) + 3) + 2 * w + 2 * g
+            for p, w, g in zip(code, widths, self.gammas)
+        ]
         self._mp_function = self._mp_functions()
         self._workspaces = threading.local()
 
@@ -117,7 +143,7 @@ class PointClassifier:
 
     def _workspace(self, size: int) -> tuple[np.ndarray, np.ndarray]:
         """Float buffers for the generated code (two more for the sign test) and two int8 rows, per thread."""
-        rows = (self._buffered.buffers if self._buffered is not None else 0) + 2
+        rows = (self._buffered.buffers if self._buffered is not None else 0) + 2 + len(self.functions)
         found = getattr(self._workspaces, "arrays", None)
         if found is None or found[0].shape[1] < size:
             found = (np.empty((rows, size)), np.empty((2, size), dtype=np.int8))
@@ -171,9 +197,12 @@ class PointClassifier:
             self._names = [f"the values of {symbol}" for symbol in self.parameters]
         return self._names
 
-    def _check_values(self, arrays) -> None:
+    def _check_values(self, arrays) -> list[float]:
+        """Refuse values that are not finite or break a declared sign; the largest |value| of each array."""
+        reach = []
         for symbol, a in zip(self.parameters, arrays):
             if a.size == 0:
+                reach.append(0.0)
                 continue
             if a.strides == (0,):  # one value for every point
                 a = a[:1]
@@ -184,8 +213,10 @@ class PointClassifier:
                 raise NumericsError(f"{symbol} is declared positive; some values are <= 0.")
             if symbol.is_negative and not high < 0:
                 raise NumericsError(f"{symbol} is declared negative; some values are >= 0.")
+            reach.append(max(-float(low), float(high)))
+        return reach
 
-    def _float_stage(self, arrays, out: np.ndarray) -> None:
+    def _float_stage(self, arrays, known, out: np.ndarray, widths: list) -> None:
         """Per kept factor, into ``out``: its sign where certain (+1/-1) and 0 where not (int8).
 
         An overflow, underflow or invalid operation would void the relative error bounds:
@@ -195,27 +226,31 @@ class PointClassifier:
         size = out.shape[1]
         try:
             with np.errstate(all="raise"):
-                self._signs(arrays, out)
+                self._signs(arrays, known, out, widths)
         except FloatingPointError:
             if size == 1:
                 out[...] = 0
                 return
             half = size // 2
-            self._float_stage([a[:half] for a in arrays], out[:, :half])
-            self._float_stage([a[half:] for a in arrays], out[:, half:])
+            self._float_stage([a[:half] for a in arrays], [k[:half] for k in known], out[:, :half], widths)
+            self._float_stage([a[half:] for a in arrays], [k[half:] for k in known], out[:, half:], widths)
 
-    def _signs(self, arrays, out: np.ndarray) -> None:
+    def _signs(self, arrays, known, out: np.ndarray, widths: list) -> None:
         size = out.shape[1]
         floats, small = self._workspace(size)
         if self._buffered is not None:
-            values = iter(self._buffered(arrays, floats[:-2]))
+            rows = floats[: self._buffered.buffers + len(self.functions)]
+            functions = [
+                k if k is not None else _function_values(arrays[index], ufunc, rows[-1 - number, :size])
+                for number, ((index, ufunc), k) in enumerate(zip(self.functions, known))
+            ]
+            values = iter(self._buffered([*arrays, *functions], rows))
         else:
             values = iter(_as_array(v, size) for v in self._function(*arrays))
         scratch = (floats[-2, :size], floats[-1, :size], small[0, :size], small[1, :size])
         for position, part in enumerate(self.parts):
             groups = [next(values) for _ in part]
-            width = max(self.band, 2 * self.gammas[position])
-            _certain_sign(groups, width, self._zero_parts()[position], out[position], scratch)
+            _certain_sign(groups, widths[position], self._zero_parts()[position], out[position], scratch)
 
     def _zero_parts(self) -> list[tuple[bool, bool]]:
         """Per kept factor, (P = 0, M = 0): compared once, not per chunk (a SymPy comparison of large sums)."""
@@ -236,13 +271,23 @@ class PointClassifier:
         return None
 
     def __call__(
-        self, *arrays, chunk: int = 1 << 15, progress: Progress | None = None, max_seconds: float | None = None
+        self,
+        *arrays,
+        chunk: int = 1 << 15,
+        progress: Progress | None = None,
+        max_seconds: float | None = None,
+        function_values: Sequence | None = None,
     ) -> _PointsResult:
         """Classify the points; ``progress(fraction, message)`` follows the exact path, which
-        ``max_seconds`` bounds (a NumericsError then says how many points were decided)."""
+        ``max_seconds`` bounds (a NumericsError then says how many points were decided).
+
+        ``function_values``: per entry ``(index, ufunc)`` of :attr:`functions`, None or the values of
+        ``ufunc`` at the points as NumPy computes them from parameter ``index`` (e.g. once per value of a
+        grid axis, then laid out as the axis is); the certificate assumes exactly these numbers."""
         chunk = validate.chunk_size(chunk)
         budget = Budget(progress, max_seconds)
         arrays = self._check(arrays)
+        given = _given(function_values, self.functions, arrays)
         shape = np.broadcast(*arrays).shape if arrays else ()
         # no copies: an array of the points' shape is read in place, one value stays one value (a view of
         # zero stride, checked once), and only an array broadcast along some axes is copied
@@ -257,14 +302,20 @@ class PointClassifier:
         signs = np.empty((len(self.conditions), size), dtype=np.int8)
         stable = np.empty(size, dtype=np.int8)
         in_band = np.empty(size, dtype=bool)
+        left: list[np.ndarray] = []  # points the float32 pre-pass leaves to float64, all chunks in one go
         for start in range(0, size, chunk):  # one pass per chunk: checks, generated code, signs, all in the cache
             stop = min(start + chunk, size)
             part = factor_signs[:, start:stop]
             pieces = [a[start:stop] for a in arrays]
-            self._check_values(pieces)
-            self._float_stage(pieces, part)
+            reach = self._check_values(pieces)
+            known = [None if g is None else g[start:stop] for g in given]
+            prepass = self._chunk_signs(pieces, known, reach, part)
             self._combine(part, signs[:, start:stop], stable[start:stop])
-            np.logical_not(part.all(axis=0), out=in_band[start:stop])
+            undecided = _undecided(part, in_band[start:stop])
+            if prepass:
+                left.append(start + np.nonzero(undecided)[0])
+        if left:
+            self._in_float64(np.concatenate(left), arrays, chunk, (factor_signs, signs, stable, in_band))
         points = np.nonzero(in_band)[0]
         for done, i in enumerate(points):
             if budget.report(done / len(points), f"{done} of {len(points)} points decided exactly"):
@@ -278,7 +329,7 @@ class PointClassifier:
                 factor_signs[position, i] = self._exact_factor_sign(position, point)
             self._combine(factor_signs[:, i : i + 1], signs[:, i : i + 1], stable[i : i + 1])
         budget.report(1.0, f"{size} points, {len(points)} decided exactly")
-        bands = [max(self.band, 2 * g) for g in self.gammas]
+        bands = self._widths
         return _PointsResult(
             stable.reshape(shape),
             signs.reshape((len(self.conditions), *shape)),
@@ -286,6 +337,43 @@ class PointClassifier:
             len(points),
             max(bands, default=self.band),
         )
+
+    def _chunk_signs(self, pieces, known, reach, part) -> bool:
+        """Signs of the kept factors on a chunk (0: not certain), in float64 or by the float32 pre-pass for sines
+        and cosines where it applies (then True: the points it leaves undecided go to :meth:`_in_float64`)."""
+        cheap = self._cheap_functions(pieces, known, reach)
+        if cheap is None:
+            self._float_stage(pieces, known, part, self._widths)
+            return False
+        self._float_stage(pieces, cheap, part, self._cheap_widths)
+        return True
+
+    def _in_float64(self, index: np.ndarray, arrays, chunk: int, results: tuple) -> None:
+        """The points ``index`` that the pre-pass left undecided, in float64 (a chunk at a time), into ``results``
+        (factor signs, signs, stable, in_band): the same as float64 throughout (:func:`.float_stage.cheap_functions`)."""
+        factor_signs, signs, stable, in_band = results
+        for start in range(0, len(index), chunk):
+            some = index[start : start + chunk]
+            again = np.empty((len(self.kept), len(some)), dtype=np.int8)
+            self._float_stage([a[some] for a in arrays], [None] * len(self.functions), again, self._widths)
+            verdicts = np.empty((len(self.conditions), len(some)), dtype=np.int8)
+            least = np.empty(len(some), dtype=np.int8)
+            self._combine(again, verdicts, least)
+            factor_signs[:, some], signs[:, some], stable[some] = again, verdicts, least
+            in_band[some] = _undecided(again, np.empty(len(some), dtype=bool))
+
+    def _cheap_functions(self, pieces, known, reach) -> list | None:
+        """The float32 pre-pass's sines and cosines for a chunk, or None (see :func:`.float_stage.cheap_functions`)."""
+        if not self._cheap or any(k is not None for k in known) or not len(pieces[0]):
+            return None
+        return cheap_functions(self.functions, pieces, reach, *self._cheap_workspace(len(pieces[0])))
+
+    def _cheap_workspace(self, size: int) -> tuple[np.ndarray, np.ndarray]:
+        found = getattr(self._workspaces, "cheap", None)
+        if found is None or found[0].shape[1] < size:
+            found = (np.empty((2, size), dtype=np.float32), np.empty((len(self.functions), size)))
+            self._workspaces.cheap = found
+        return found
 
     def _combine(self, factor_signs, signs, stable) -> None:
         """Signs of the conditions from those of their factors; stable = the least of them."""
@@ -295,10 +383,9 @@ class PointClassifier:
             if sign < 0:
                 np.negative(signs[index], out=signs[index])
         signs[self.always_false] = 0
-        if len(signs):
-            np.min(signs, axis=0, out=stable)
-        else:
-            stable[...] = 1
+        stable[...] = 1
+        for row in signs:  # a chain of minimum: a third of the time of np.min over axis 0 (int8 rows)
+            np.minimum(stable, row, out=stable)
 
     def _exact_factor_sign(self, position: int, point: list[float]) -> int:
         """The exact sign of one kept factor at one point: 256-bit first, then rationals."""
@@ -306,118 +393,6 @@ class PointClassifier:
         if found is not None:
             return found
         return certified_sign(self.kept[position], dict(zip(self.parameters, point)), band=0.0)[0]
-
-
-def _as_array(value, size: int) -> np.ndarray:
-    """Generated code returns plain numbers for constant parts (0 for an empty M)."""
-    return value if isinstance(value, np.ndarray) else np.full(size, float(value))
-
-
-def _certain_sign(groups, width: float, zeros: tuple[bool, bool], out: np.ndarray, scratch) -> None:
-    """Into ``out`` (int8): +1/-1 where the sign of P - M (+ U) is certain, 0 elsewhere; valid for
-    values computed without overflow, underflow or invalid operations. ``zeros``: whether
-    P and M are identically 0; ``scratch``: two float64 and two int8 rows of ``out``'s length."""
-    P, M, *rest = groups
-    f0, f1, i0, i1 = scratch
-    b0, b1 = i0.view(np.bool_), i1.view(np.bool_)
-    if rest:  # terms of unknown sign: |F^ - F| <= gamma (P + M + |U|); certain where |F^| > width (P + M + |U|)
-        np.subtract(P, M, out=f0)
-        np.add(f0, rest[0], out=f0)
-        np.add(P, M, out=f1)
-        np.add(f1, rest[1], out=f1)
-        np.multiply(f1, width, out=f1)
-        np.greater(f0, f1, out=b0)
-        np.negative(f1, out=f1)
-        np.less(f0, f1, out=b1)
-        np.subtract(i0, i1, out=out)
-    elif zeros[1]:  # F = P, nonnegative terms: P^ > 0 iff P > 0
-        np.greater(P, 0.0, out=out.view(np.bool_))
-    elif zeros[0]:
-        np.greater(M, 0.0, out=out.view(np.bool_))
-        np.negative(out, out=out)
-    else:  # P - M > width (P + M) iff P (1 - width)/(1 + width) > M: no cancellation in the test; the
-        # few roundings of the ratio and the product are far inside width >= 2 gamma_(r+3)
-        shrink = (1 - width) / (1 + width)
-        np.multiply(P, shrink, out=f0)
-        np.greater(f0, M, out=b0)
-        np.multiply(M, shrink, out=f0)
-        np.greater(f0, P, out=b1)
-        np.subtract(i0, i1, out=out)
-
-
-def _one_signed_form(total: sp.Expr) -> sp.Expr:
-    """A cheap form of ``total``, a sum of terms of one sign, in which every sum still has
-    terms of one sign (so floating point keeps a relative error bound): the sum or its
-    factored form, with shared powers pulled out of sums."""
-    if total.is_Number or len(sp.Add.make_args(total)) < 2:
-        return total
-    candidates = [_pulled_out(total), sp.Mul(*[_pulled_out(f) for f in sp.Mul.make_args(sp.factor(total))])]
-    valid = [c for c in candidates if _one_signed_sums(c)]
-    return min(valid, key=sp.count_ops) if valid else total
-
-
-def _pulled_out(expr: sp.Expr) -> sp.Expr:
-    """``expr`` with, recursively, the power shared by most terms pulled out of each sum:
-    a + b x + c x y becomes a + x (b + c y), and a + b + x (a + b) becomes (x + 1)(a + b)."""
-    if expr.is_Pow and expr.exp.is_Integer:
-        return _pulled_out(expr.base) ** expr.exp
-    terms = sp.Add.make_args(expr)
-    if len(terms) < 2:
-        return expr
-    counts: dict = {}
-    for term in terms:
-        for base, exponent in term.as_powers_dict().items():
-            if not base.is_Number and exponent.is_Integer and exponent > 0:
-                counts.setdefault(base, []).append(int(exponent))
-    shared = [(len(e), b) for b, e in counts.items() if len(e) > 1]
-    if not shared:
-        return expr
-    _, base = max(shared, key=lambda item: (item[0], sp.default_sort_key(item[1])))
-    power = base ** min(counts[base])
-    inside = [t for t in terms if base in t.as_powers_dict()]
-    outside = [t for t in terms if base not in t.as_powers_dict()]
-    inner, rest = _pulled_out(sp.Add(*[t / power for t in inside])), _pulled_out(sp.Add(*outside))
-    return (power + 1) * inner if inner == rest else power * inner + rest
-
-
-def _one_signed_sums(expr: sp.Expr) -> bool:
-    for node in sp.preorder_traversal(expr):
-        if node.is_Add and not (all(a.is_nonnegative for a in node.args) or all(a.is_nonpositive for a in node.args)):
-            return False
-    return True
-
-
-def _roundings(expr: sp.Expr) -> int:
-    """Roundings along the longest path of the evaluation of ``expr`` in floating point:
-    its computed value is within gamma_r relative of the exact one when every sum of
-    ``expr`` has terms of one sign."""
-    if expr.is_Symbol:
-        return 0
-    if expr.is_Number or expr.is_NumberSymbol:
-        if expr.is_Rational and _exact_float(float(expr), Fraction(int(expr.p), int(expr.q))):
-            return 0
-        return 1
-    if expr.is_Add:
-        return max(_roundings(a) for a in expr.args) + len(expr.args) - 1
-    if expr.is_Mul:  # a product of k factors: k - 1 roundings, none for a power of two
-        exact = sum(1 for f in expr.args if f.is_Integer and f != 0 and abs(int(f)).bit_count() == 1)
-        return sum(_roundings(f) for f in expr.args) + len(expr.args) - 1 - exact
-    if expr.is_Pow:
-        base, exponent = expr.args
-        if exponent.is_Integer:
-            n = abs(int(exponent))
-            return n * _roundings(base) + n + (1 if exponent < 0 else 0)
-        if exponent.is_Rational:
-            return _roundings(base) + 2
-    if isinstance(expr, sp.Abs):
-        return _roundings(expr.args[0])
-    if isinstance(expr, sp.Function) and len(expr.args) == 1:
-        if _roundings(expr.args[0]) == 0:
-            return 4  # NumPy's elementary functions: at most 4 units in the last place (its SIMD ones)
-        raise NumericsError(
-            f"cannot bound the rounding of {expr}: its argument is rounded; introduce a parameter for the argument."
-        )
-    raise NumericsError(f"cannot bound the rounding of {expr}; rewrite it with +, *, powers and functions.")
 
 
 @dataclass(frozen=True, eq=False)

@@ -514,9 +514,9 @@ def test_the_classifier_is_built_once_per_scene_and_quantity(monkeypatch):
     """A second sweep of the same scene and quantity reuses the classifier (building one factors
     every Hurwitz condition), also with other fixed values (they are arguments of its code);
     the verdicts agree with the first sweep's; another quantity builds its own."""
-    from contactsym.atlas import quantities
+    from contactsym.atlas import vectorised
 
-    quantities._built_classifier.cache_clear()
+    vectorised._built_classifier.cache_clear()
     built = []
     original = numerics.PointClassifier.__init__
 

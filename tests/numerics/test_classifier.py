@@ -13,7 +13,6 @@ from hypothesis import strategies as st
 
 import contactsym as cs
 from contactsym import numerics as nm
-from contactsym.numerics import classifier
 from contactsym.numerics.buffered import through_tan
 
 a, b, c = sp.symbols("a b c", positive=True)
@@ -40,24 +39,6 @@ def _polynomial(terms) -> sp.Expr:
 def _exact_sign(expr: sp.Expr, point, symbols=SYMBOLS) -> int:
     value = expr.xreplace({s: sp.Rational(Fraction(float(v))) for s, v in zip(symbols, point)})
     return int(sp.sign(value))
-
-
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(st.lists(monomials, min_size=1, max_size=8), st.sampled_from([1, -1]))
-def test_one_signed_form_is_the_same_sum_with_one_signed_sums(terms, sign):
-    total = sign * sp.expand(_polynomial(terms) ** 2)  # mixed signs inside, one sign in all
-    one_signed = sp.Add(*[t for t in sp.Add.make_args(total) if (sign * t).is_nonnegative])
-    form = classifier._one_signed_form(one_signed)
-    assert sp.expand(form - one_signed) == 0
-    assert classifier._one_signed_sums(form)
-    assert sp.count_ops(form) <= sp.count_ops(one_signed)
-
-
-def test_shared_sums_are_pulled_out_once():
-    total = a * p + b * p + c**2 * a * p + c**2 * b * p
-    form = classifier._one_signed_form(-total)
-    assert sp.expand(form + total) == 0
-    assert sp.count_ops(form) < sp.count_ops(total)
 
 
 @settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -188,3 +169,73 @@ def test_float64_inputs_are_read_in_place_and_never_written():
     assert converted.dtype == np.float64 and converted.tolist() == [0.0, 1.0, 2.0]
     with pytest.raises(cs.errors.NumericsError, match="complex"):
         validate.real_array(np.array([1j]), "z")
+
+
+def _brake_points(rng, n, on_line):
+    """Random brake points, the first ``on_line`` of them put on the Hopf line of the (6.4) slice in floats."""
+    values = [rng.uniform(0.05, 3.0, n), rng.uniform(0.2, 5, n), rng.uniform(0.05, 3, n)]
+    values += list(-np.exp(rng.normal(0, 1.5, (4, n))))
+    alpha, m_, mu_, phi1, phi2, psi1, psi2 = values
+    alpha[:on_line], psi2[:on_line] = math.pi / 2, psi1[:on_line]
+    phi1[:on_line] = phi2[:on_line] = (
+        -(1 + mu_[:on_line] ** 2) * psi1[:on_line] ** 2 / (m_[:on_line] * mu_[:on_line] ** 2)
+    )
+    return values
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(0, 2**32 - 1), st.integers(1, 300))
+def test_chunks_of_any_size_and_function_values_given_change_no_result(seed, chunk):
+    """The chunked pass, the whole array at once, and sin(alpha) given by the caller: the same verdicts,
+    signs and band, also for points on the Hopf line (decided exactly; their signs: the tests above)."""
+    values = _brake_points(np.random.default_rng(seed), 300, on_line=2)
+    whole = BRAKE_CLASSIFIER(*values, chunk=300)
+    assert whole.exact_points >= 1  # the band is exercised
+    given = [getattr(np, ufunc)(values[index]) for index, ufunc in BRAKE_CLASSIFIER.functions]
+    assert BRAKE_CLASSIFIER.functions == ((0, "sin"),) or BRAKE_CLASSIFIER.functions == ((0, "tan"),)
+    for result in (
+        BRAKE_CLASSIFIER(*values, chunk=chunk),
+        BRAKE_CLASSIFIER(*values, chunk=chunk, function_values=given),
+    ):
+        assert np.array_equal(result.stable, whole.stable)
+        assert np.array_equal(result.signs, whole.signs)
+        assert np.array_equal(result.in_band, whole.in_band)
+
+
+def test_function_values_of_the_wrong_number_or_length_are_refused():
+    values = [np.full(3, v) for v in (1.0, 1.0, 1.0, -1.0, -1.0, -1.0, -1.0)]
+    with pytest.raises(nm.NumericsError, match="function_values"):
+        BRAKE_CLASSIFIER(*values, function_values=[])
+    with pytest.raises(nm.NumericsError, match="one value per point"):
+        BRAKE_CLASSIFIER(*values, function_values=[np.zeros(2)] * len(BRAKE_CLASSIFIER.functions))
+
+
+def test_numpys_float32_sine_and_cosine_are_within_the_prepass_bound():
+    from contactsym.numerics.float_stage import _CHEAP_ABSOLUTE, _CHEAP_RANGE
+
+    rng = np.random.default_rng(5)
+    x = np.concatenate([np.linspace(-_CHEAP_RANGE, _CHEAP_RANGE, 400_001), rng.uniform(-4, 4, 200_000)])
+    x32 = x.astype(np.float32)
+    for function in (np.sin, np.cos):
+        assert np.max(np.abs(function(x32).astype(float) - function(x32.astype(float)))) <= _CHEAP_ABSOLUTE / 4
+
+
+def test_the_float32_prepass_gives_the_float64_result_and_leaves_the_close_points_to_it():
+    import copy
+
+    values = _brake_points(np.random.default_rng(8), 3000, on_line=3000)
+    phi1 = values[3]
+    phi1 *= 1 + 10.0 ** np.random.default_rng(9).uniform(-9, -1, 3000) * np.resize([1, -1], 3000)  # both sides
+    float64 = copy.copy(BRAKE_CLASSIFIER)
+    float64._cheap = False
+    prepass = copy.copy(BRAKE_CLASSIFIER)
+    assert prepass._cheap
+    widths = []
+    stage = prepass._float_stage
+    prepass._float_stage = lambda *args: (widths.append(args[3]), stage(*args))
+    for chunk in (3000, 256):
+        widths.clear()
+        ours, theirs = prepass(*values, chunk=chunk), float64(*values, chunk=chunk)
+        assert np.array_equal(ours.stable, theirs.stable) and np.array_equal(ours.signs, theirs.signs)
+        assert np.array_equal(ours.in_band, theirs.in_band)
+        assert any(w is prepass._cheap_widths for w in widths) and any(w is prepass._widths for w in widths)

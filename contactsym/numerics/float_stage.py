@@ -1,0 +1,134 @@
+"""The classifier's float stage, piece by piece: functions of a parameter as arguments of the generated
+code, the float32 pre-pass for sines and cosines, and the certified sign test."""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from .. import validate
+from ..errors import NumericsError
+from .buffered import NUMPY_FUNCTIONS
+
+__all__: list[str] = []  # helpers of contactsym.numerics.classifier
+
+#: The float32 pre-pass: the relative error it allows a sine or cosine (checked per chunk), the largest |argument|,
+#: and the absolute error of NumPy's float32 sin and cos there (its SIMD loops claim 1.49 units in the last place,
+#: under 2^-23; tests/numerics/test_classifier.py checks 2^-21 on a dense sample).
+_CHEAP_ERROR, _CHEAP_RANGE, _CHEAP_ABSOLUTE = 2.0**-14, 2.0**10, 2.0**-21
+
+
+def cheap_functions(functions, pieces, reach, singles: np.ndarray, cheap: np.ndarray) -> list | None:
+    """The sines and cosines from NumPy's float32 SIMD loops (7x faster than float64's scalar ones), or None.
+
+    With x32 the argument x rounded to float32 (|x32 - x| <= 2^-24 |x|) and NumPy's float32 sine within
+    _CHEAP_ABSOLUTE of sin(x32), the value v is within e = 2^-24 |x| + _CHEAP_ABSOLUTE of sin(x); relative
+    to |sin(x)| >= min |v| - e, at most _CHEAP_ERROR when checked here (else None: float64 throughout).
+    A point certain with the widths of the classifier's ``_cheap_widths`` is certain with the same sign in
+    float64, so the result is the same as float64 throughout (the band too, but for a point whose float64
+    evaluation would underflow or overflow where this one does not: its sign is certain either way). ``singles``: two float32 rows, ``cheap`` one
+    float64 row per function, each at least as long as the chunk."""
+    size, values = len(pieces[0]), []
+    with np.errstate(all="ignore"):
+        for number, (index, ufunc) in enumerate(functions):
+            argument = pieces[index]
+            if argument.strides == (0,):  # one value: float64, once
+                values.append(_function_values(argument, ufunc, cheap[number, :size]))
+                continue
+            if not reach[index] <= _CHEAP_RANGE:
+                return None
+            x32, v32 = singles[0, :size], singles[1, :size]
+            np.copyto(x32, argument, casting="same_kind")
+            getattr(np, ufunc)(x32, out=v32)
+            error = reach[index] * 2.0**-24 + _CHEAP_ABSOLUTE
+            smallest = float(np.minimum.reduce(np.absolute(v32, out=x32)))
+            if not (smallest > error and error / (smallest - error) <= _CHEAP_ERROR):
+                return None
+            np.copyto(cheap[number, :size], v32)
+            values.append(cheap[number, :size])
+    return values
+
+
+def _functions_as_arguments(flat: list, parameters: tuple) -> tuple[tuple, tuple]:
+    """((new symbols, ``flat`` with them), per new symbol (index of its parameter, NumPy ufunc name)): each
+    function of one parameter (``sin(alpha)``) becomes an argument of the generated code, computed once per
+    chunk or given by the caller (an atlas computes it once per value of a grid axis)."""
+    found = sorted(
+        {f for e in flat for f in e.atoms(sp.Function) if len(f.args) == 1 and f.args[0] in parameters},
+        key=sp.default_sort_key,
+    )
+    found = [f for f in found if type(f) in NUMPY_FUNCTIONS]
+    names = tuple(sp.Dummy(f"f{i}") for i in range(len(found)))
+    replaced = [e.xreplace(dict(zip(found, names))) for e in flat]
+    return (names, replaced), tuple((parameters.index(f.args[0]), NUMPY_FUNCTIONS[type(f)]) for f in found)
+
+
+def _function_values(argument: np.ndarray, ufunc: str, row: np.ndarray) -> np.ndarray:
+    """``ufunc`` of a chunk's argument into ``row``; of one value for every point (stride 0), once."""
+    if argument.strides == (0,) and len(argument) > 1:
+        one = getattr(np, ufunc)(argument[:1])
+        return np.ndarray(argument.shape, dtype=np.float64, buffer=one, strides=(0,))
+    return getattr(np, ufunc)(argument, out=row)
+
+
+def _as_array(value, size: int) -> np.ndarray:
+    """Generated code returns plain numbers for constant parts (0 for an empty M)."""
+    return value if isinstance(value, np.ndarray) else np.full(size, float(value))
+
+
+def _certain_sign(groups, width: float, zeros: tuple[bool, bool], out: np.ndarray, scratch) -> None:
+    """Into ``out`` (int8): +1/-1 where the sign of P - M (+ U) is certain, 0 elsewhere; valid for
+    values computed without overflow, underflow or invalid operations. ``zeros``: whether
+    P and M are identically 0; ``scratch``: two float64 and two int8 rows of ``out``'s length."""
+    P, M, *rest = groups
+    f0, f1, i0, i1 = scratch
+    b0, b1 = i0.view(np.bool_), i1.view(np.bool_)
+    if rest:  # terms of unknown sign: |F^ - F| <= gamma (P + M + |U|); certain where |F^| > width (P + M + |U|)
+        np.subtract(P, M, out=f0)
+        np.add(f0, rest[0], out=f0)
+        np.add(P, M, out=f1)
+        np.add(f1, rest[1], out=f1)
+        np.multiply(f1, width, out=f1)
+        np.greater(f0, f1, out=b0)
+        np.negative(f1, out=f1)
+        np.less(f0, f1, out=b1)
+        np.subtract(i0, i1, out=out)
+    elif zeros[1]:  # F = P, nonnegative terms: P^ > 0 iff P > 0
+        np.greater(P, 0.0, out=out.view(np.bool_))
+    elif zeros[0]:
+        np.greater(M, 0.0, out=out.view(np.bool_))
+        np.negative(out, out=out)
+    else:  # P - M > width (P + M) iff P (1 - width)/(1 + width) > M: no cancellation in the test; the
+        # few roundings of the ratio and the product are far inside width >= 2 gamma_(r+3)
+        shrink = (1 - width) / (1 + width)
+        np.multiply(P, shrink, out=f0)
+        np.greater(f0, M, out=b0)
+        np.multiply(M, shrink, out=f0)
+        np.greater(f0, P, out=b1)
+        np.subtract(i0, i1, out=out)
+
+
+def _undecided(factor_signs: np.ndarray, out: np.ndarray) -> np.ndarray:
+    """Into ``out`` (bool): where some factor's sign (int8 rows of +1, -1, 0) is 0, i.e. their product is 0."""
+    if not len(factor_signs):
+        out[...] = False
+        return out
+    product = factor_signs[0]
+    if len(factor_signs) > 1:
+        product = np.multiply(factor_signs[0], factor_signs[1])
+        for row in factor_signs[2:]:
+            np.multiply(product, row, out=product)
+    return np.equal(product, 0, out=out)
+
+
+def _given(function_values, functions: tuple, arrays) -> list:
+    """The caller's values of the classifier's ``functions`` (None: computed per chunk), flat, checked."""
+    if function_values is None:
+        return [None] * len(functions)
+    if len(function_values) != len(functions):
+        raise NumericsError(f"give {len(functions)} function_values (or None), one per {functions}.")
+    size = int(np.prod(np.broadcast(*arrays).shape)) if arrays else 0
+    given = [None if v is None else validate.real_array(v, "function_values").reshape(-1) for v in function_values]
+    if any(g is not None and len(g) != size for g in given):
+        raise NumericsError(f"each of function_values needs one value per point ({size}).")
+    return given
