@@ -1,6 +1,7 @@
-"""The fast subsystem (2.1) in the scaled deformations (Q, V) as generated code of the state and
-the parameters (:class:`FastField`), for :mod:`contactsym.numerics.continuation` to shoot batches of
-grid points through.
+"""The fast subsystem (2.1) in scaled deformations (Q, V), generated once for batches of points.
+
+:class:`FastField` is generated code of the state and the parameters, for
+:mod:`contactsym.numerics.continuation` to shoot batches of grid points through.
 
 The field is generated once per scene and laws with the parameters as arguments (unilateral
 contacts cut to N = 0 where they open); the Jacobian is generated analytically.
