@@ -143,12 +143,17 @@ def _direction_records(name, h, laws, distances, ours, curves, quick) -> list[di
     return records
 
 
-def _symbolic_records() -> list[dict]:
+# --quick: the closed form in the derivatives that Hertz and the weakening damper have (notebook 06's
+# subset, a few seconds); all ten (LAW_DERIVATIVES, 15-30 s) in the full bench
+QUICK_DERIVATIVES = ("Phi_u", "Phi_v", "Phi_uu", "Phi_uv", "Phi_vv", "Psi_vv")
+
+
+def _symbolic_records(quick: bool = False) -> list[dict]:
     """Stability.first_lyapunov with Hertz pads (symbolic k, d), and the brake's closed form."""
     import sympy as sp
 
     from contactsym.laws.library import with_laws
-    from contactsym.scenes.brake import squeal_direction
+    from contactsym.scenes.brake import LAW_DERIVATIVES, squeal_direction
 
     k, d = sp.symbols("k d", positive=True)
     st = with_laws(cs.scene("brake"), Hertz(k, d)).stability()
@@ -165,8 +170,9 @@ def _symbolic_records() -> list[dict]:
     value = complex(l1.subs(point)).real
     evaluation = time.perf_counter() - t0
     size = sp.count_ops(l1)
+    derivatives = QUICK_DERIVATIVES if quick else LAW_DERIVATIVES
     t0 = time.perf_counter()
-    Phi_line, closed = squeal_direction(cs.scene("brake"))
+    Phi_line, closed = squeal_direction(cs.scene("brake"), derivatives)
     closed_s = time.perf_counter() - t0
     return [
         record(
@@ -186,7 +192,9 @@ def _symbolic_records() -> list[dict]:
             0.0,
             len(sp.Add.make_args(closed)),
             f"squeal_direction(): Phi* = {Phi_line}, l1 with {len(sp.Add.make_args(closed))} terms in the "
-            "law's derivatives, checked in tests/test_lyapunov_form.py",
+            f"law's derivatives {', '.join(derivatives)}"
+            + (" (--quick: the stiffness's and Psi_vv; all ten in the full bench)" if quick else "")
+            + ", checked in tests/lyapunov/test_polynomial.py",
         ),
     ]
 
@@ -209,7 +217,7 @@ def run(quick: bool, out) -> list[dict]:
         h = numerics.hopf_point(cs.scene("brake"), {**BRAKE, "mu": mu0}, "mu", laws=laws)
         records += _direction_records(name, h, laws, distances, time.perf_counter() - t0, curves, quick)
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    records += _symbolic_records()
+    records += _symbolic_records(quick)
     color = None
     for (name, full), (h, rows) in curves.items():
         data = hopf_amplitude_data(h, [r[0] for r in rows], [(r[2] + r[3]) / 2 for r in rows])
