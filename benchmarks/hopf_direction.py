@@ -51,9 +51,14 @@ LAWS = {
 
 
 EPS = 1e-3  # the full system (1.9) at this eps, in t = eps tau
+RTOL = {
+    False: 1e-8,
+    True: 1e-6,
+}  # by --quick: the amplitudes are compared to 1e-3, DOP853 at 1e-6 takes ~0.6x the steps
+FULL_QUICK = ("Hertz", "weakening damping")  # --quick: the full system for one law of each direction
 
 
-def _amplitude(values, laws, start, duration, period) -> np.ndarray:
+def _amplitude(values, laws, start, duration, period, rtol) -> np.ndarray:
     """The fast subsystem (2.1) from ``start`` (Q, V) over ``duration`` in tau: half the reactions' range."""
     run = numerics.simulate_fast(
         cs.scene("brake"),
@@ -62,13 +67,13 @@ def _amplitude(values, laws, start, duration, period) -> np.ndarray:
         initial=start,
         laws=laws,
         method="DOP853",
-        rtol=1e-8,
+        rtol=rtol,
         t_eval=np.linspace(duration - 2 * period, duration, 2000),
     )
     return (run.reactions.max(axis=1) - run.reactions.min(axis=1)) / 2
 
 
-def _full_amplitude(h, mu, factor, laws, duration, period) -> np.ndarray:
+def _full_amplitude(h, mu, factor, laws, duration, period, rtol) -> np.ndarray:
     """The full system (1.9) at EPS from the predicted cycle (times ``factor``), the disc turning."""
     values = {**BRAKE, "mu": mu}
     start = full_cycle_start(cs.scene("brake"), h, values, EPS, mu, factor=factor, base={"thetadot": -1})
@@ -80,46 +85,46 @@ def _full_amplitude(h, mu, factor, laws, duration, period) -> np.ndarray:
         start,
         laws=laws,
         method="DOP853",
-        rtol=1e-8,
+        rtol=rtol,
         t_eval=EPS * np.linspace(duration - 2 * period, duration, 2000),
         dense_output=False,
     )
     return (run.reactions.max(axis=1) - run.reactions.min(axis=1)) / 2
 
 
-def _runs(h, laws, mu, factors, full: bool) -> list[float]:
+def _runs(h, laws, mu, factors, full: bool, rtol: float = RTOL[False]) -> list[float]:
     """Reaction 1's amplitude after ~1.5/alpha from each factor times the predicted cycle."""
     duration = 1.5 / abs(h.dalpha * (mu - h.value))
     period = 2 * np.pi / h.omega
     if full:
-        return [_full_amplitude(h, mu, f, laws, duration, period)[0] for f in factors]
-    return [_amplitude({**BRAKE, "mu": mu}, laws, h.cycle_start(mu, f), duration, period)[0] for f in factors]
+        return [_full_amplitude(h, mu, f, laws, duration, period, rtol)[0] for f in factors]
+    return [_amplitude({**BRAKE, "mu": mu}, laws, h.cycle_start(mu, f), duration, period, rtol)[0] for f in factors]
 
 
-def _supercritical(h, laws, distances, full=False):
+def _supercritical(h, laws, distances, full=False, rtol=RTOL[False]):
     rows = []
     for d in distances:
         mu = h.value * (1 + d * np.sign(h.dalpha))
-        rows.append((d, h.amplitude(mu)[0], *_runs(h, laws, mu, (0.8, 1.2), full)))
+        rows.append((d, h.amplitude(mu)[0], *_runs(h, laws, mu, (0.8, 1.2), full, rtol)))
     return rows
 
 
-def _subcritical(h, laws, d, full=False):
+def _subcritical(h, laws, d, full=False, rtol=RTOL[False]):
     mu = h.value * (1 - d * np.sign(h.dalpha))
-    return (h.amplitude(mu)[0], *_runs(h, laws, mu, (0.7, 1.3), full))
+    return (h.amplitude(mu)[0], *_runs(h, laws, mu, (0.7, 1.3), full, rtol))
 
 
 def _direction_records(name, h, laws, distances, ours, curves, quick) -> list[dict]:
     """Fast subsystem and full system at EPS: simulated against predicted, one record each (quick:
-    the full system at the largest small distance only)."""
+    the full system at the largest small distance only, for the laws of FULL_QUICK, at rtol 1e-6)."""
     records = []
-    for full in (False, True):
+    for full in (False, True) if not quick or name in FULL_QUICK else (False,):
         label = f"hopf-direction/{name}" + (f" (full, eps={EPS:g})" if full else "")
         t0 = time.perf_counter()
         if h.direction == "supercritical":
             # weakly nonlinear theory holds while the cycle keeps the pads in contact (amplitude < u*)
             small = [d for d in distances if h.amplitude(h.value * (1 + d * np.sign(h.dalpha)))[0] < h.u_star[0]]
-            rows = _supercritical(h, laws, small[-1:] if full and quick else small, full)
+            rows = _supercritical(h, laws, small[-1:] if full and quick else small, full, RTOL[quick])
             curves[name, full] = (h, rows)
             error = max(max(abs(lo - p), abs(hi - p)) / p for _, p, lo, hi in rows)
             slope = (
@@ -133,12 +138,17 @@ def _direction_records(name, h, laws, distances, ours, curves, quick) -> list[di
                 f"; at {lost} the predicted amplitude exceeds N* = {h.u_star[0]:.3g}: contact loss" if lost else ""
             )
         else:
-            predicted, low, high = _subcritical(h, laws, 0.03, full)
+            predicted, low, high = _subcritical(h, laws, 0.03, full, RTOL[quick])
             error = 0.0 if (low < 0.7 * predicted and high > 1.3 * predicted) else 1.0
             notes = (
                 f"l1 = {h.l1:.3g} > 0 at mu* = {h.value:.6g}; 3% before the line the unstable cycle "
                 f"{predicted:.3g}: 0.7x -> {low:.3g}, 1.3x -> {high:.3g} (jump: hysteresis)"
             )
+        notes += f"; DOP853 rtol {RTOL[quick]:g}" + (
+            f"; --quick: distances {distances}, the full system at the largest and for {' and '.join(FULL_QUICK)} only"
+            if quick
+            else ""
+        )
         records.append(record(label, ours, time.perf_counter() - t0, error, len(distances), notes))
     return records
 
