@@ -17,7 +17,7 @@ Each law is checked twice: on the fast subsystem in tau, and on the full system 
 eps = 1e-3 in t (the disc turning, the pads' gaps as coordinates, started on the predicted
 cycle by ``contactsym.numerics.hopf.full_cycle_start``). ours_s: one l1 evaluation (a point on the
 line, k = 2); baseline_s: the simulations that confirm it. Also timed: ``Stability.first_lyapunov``
-with Hertz pads (symbolic stiffness and damping) against evaluating it at a point, and the
+with Hertz pads (symbolic stiffness and damping) against evaluating it at a point (full bench only), and the
 brake's closed form ``contactsym.scenes.brake.squeal_direction(scene)``. Plot: ``hopf_direction.png``.
 """
 
@@ -168,12 +168,12 @@ def _direction_records(name, h, laws, distances, ours, curves, quick) -> list[di
 QUICK_DERIVATIVES = ("Phi_u", "Phi_v", "Phi_uu", "Phi_uv", "Phi_vv", "Psi_vv")
 
 
-def _symbolic_records(quick: bool = False) -> list[dict]:
-    """Stability.first_lyapunov with Hertz pads (symbolic k, d), and the brake's closed form."""
+def _symbolic_l1_record() -> dict:
+    """Stability.first_lyapunov with Hertz pads (symbolic k, d), against evaluating it at a point (full bench
+    only: the subs of its ~180000 operations costs ~10 CPU s)."""
     import sympy as sp
 
     from contactsym.laws.library import with_laws
-    from contactsym.scenes.brake import LAW_DERIVATIVES, squeal_direction
 
     k, d = sp.symbols("k d", positive=True)
     st = with_laws(cs.scene("brake"), Hertz(k, d)).stability()
@@ -190,33 +190,41 @@ def _symbolic_records(quick: bool = False) -> list[dict]:
     value = complex(l1.subs(point)).real
     evaluation = time.perf_counter() - t0
     size = sp.count_ops(l1)
+    error = 0.0 if value * h.l1 > 0 else 1.0
+    return record(
+        "hopf-direction/symbolic l1, Hertz pads",
+        ours,
+        evaluation,
+        error,
+        size,
+        f"Stability.first_lyapunov built in {ours:.2f} s ({size} operations; by hand on one machine: 0.67 s "
+        "with <q, q> and <p, q> expanded, 0.39 s without); baseline: evaluating it at mu* by subs "
+        f"({evaluation:.2f} s, l1 = {value:.3g}, {'same sign as' if not error else 'other sign than'} numerics: "
+        f"error {error:g})",
+    )
+
+
+def _closed_form_record(quick: bool = False) -> dict:
+    """The brake's closed form squeal_direction(): the six derivatives of notebook 06 in --quick, all ten else."""
+    import sympy as sp
+
+    from contactsym.scenes.brake import LAW_DERIVATIVES, squeal_direction
+
     derivatives = QUICK_DERIVATIVES if quick else LAW_DERIVATIVES
     t0 = time.perf_counter()
     Phi_line, closed = squeal_direction(cs.scene("brake"), derivatives)
     closed_s = time.perf_counter() - t0
-    return [
-        record(
-            "hopf-direction/symbolic l1, Hertz pads",
-            ours,
-            evaluation,
-            0.0 if value * h.l1 > 0 else 1.0,
-            size,
-            f"Stability.first_lyapunov built in {ours:.2f} s ({size} operations; by hand on one machine: 0.67 s "
-            "with <q, q> and <p, q> expanded, 0.39 s without); baseline: evaluating it at mu* by subs "
-            f"({evaluation:.2f} s, l1 = {value:.3g}, same sign as numerics: error 0)",
-        ),
-        record(
-            "hopf-direction/closed form, brake alpha = 90 deg",
-            closed_s,
-            None,
-            0.0,
-            len(sp.Add.make_args(closed)),
-            f"squeal_direction(): Phi* = {Phi_line}, l1 with {len(sp.Add.make_args(closed))} terms in the "
-            f"law's derivatives {', '.join(derivatives)}"
-            + (" (--quick: the stiffness's and Psi_vv; all ten in the full bench)" if quick else "")
-            + ", checked in tests/lyapunov/test_polynomial.py",
-        ),
-    ]
+    return record(
+        "hopf-direction/closed form, brake alpha = 90 deg",
+        closed_s,
+        None,
+        0.0,
+        len(sp.Add.make_args(closed)),
+        f"squeal_direction(): Phi* = {Phi_line}, l1 with {len(sp.Add.make_args(closed))} terms in the "
+        f"law's derivatives {', '.join(derivatives)}"
+        + (" (--quick: the stiffness's and Psi_vv; all ten in the full bench)" if quick else "")
+        + ", checked in tests/lyapunov/test_polynomial.py",
+    )
 
 
 def run(quick: bool, out) -> list[dict]:
@@ -238,7 +246,8 @@ def run(quick: bool, out) -> list[dict]:
         h = numerics.hopf_point(cs.scene("brake"), {**BRAKE, "mu": mu0}, "mu", laws=laws)
         records += _direction_records(name, h, laws, distances, time.perf_counter() - t0, curves, quick)
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    records += _symbolic_records(quick)
+    # --quick: the symbolic l1's row (its evaluation by subs ~10 CPU s) in the full bench only
+    records += ([] if quick else [_symbolic_l1_record()]) + [_closed_form_record(quick)]
     color = None
     for (name, full), (h, rows) in curves.items():
         data = hopf_amplitude_data(h, [r[0] for r in rows], [(r[2] + r[3]) / 2 for r in rows])
