@@ -17,7 +17,7 @@ Each law is checked twice: on the fast subsystem in tau, and on the full system 
 eps = 1e-3 in t (the disc turning, the pads' gaps as coordinates, started on the predicted
 cycle by ``contactsym.numerics.hopf.full_cycle_start``). ours_s: one l1 evaluation (a point on the
 line, k = 2); baseline_s: the simulations that confirm it. Also timed: ``Stability.first_lyapunov``
-with Hertz pads (symbolic stiffness and damping) against evaluating it at a point, and the
+with Hertz pads (symbolic stiffness and damping) against evaluating it at a point (full bench only), and the
 brake's closed form ``contactsym.scenes.brake.squeal_direction(scene)``. Plot: ``hopf_direction.png``.
 """
 
@@ -51,9 +51,14 @@ LAWS = {
 
 
 EPS = 1e-3  # the full system (1.9) at this eps, in t = eps tau
+RTOL = {
+    False: 1e-8,
+    True: 1e-6,
+}  # by --quick: the amplitudes are compared to 1e-3, DOP853 at 1e-6 takes ~0.6x the steps
+FULL_QUICK = ("Hertz", "weakening damping")  # --quick: the full system for one law of each direction
 
 
-def _amplitude(values, laws, start, duration, period) -> np.ndarray:
+def _amplitude(values, laws, start, duration, period, rtol) -> np.ndarray:
     """The fast subsystem (2.1) from ``start`` (Q, V) over ``duration`` in tau: half the reactions' range."""
     run = numerics.simulate_fast(
         cs.scene("brake"),
@@ -62,13 +67,13 @@ def _amplitude(values, laws, start, duration, period) -> np.ndarray:
         initial=start,
         laws=laws,
         method="DOP853",
-        rtol=1e-8,
+        rtol=rtol,
         t_eval=np.linspace(duration - 2 * period, duration, 2000),
     )
     return (run.reactions.max(axis=1) - run.reactions.min(axis=1)) / 2
 
 
-def _full_amplitude(h, mu, factor, laws, duration, period) -> np.ndarray:
+def _full_amplitude(h, mu, factor, laws, duration, period, rtol) -> np.ndarray:
     """The full system (1.9) at EPS from the predicted cycle (times ``factor``), the disc turning."""
     values = {**BRAKE, "mu": mu}
     start = full_cycle_start(cs.scene("brake"), h, values, EPS, mu, factor=factor, base={"thetadot": -1})
@@ -80,46 +85,54 @@ def _full_amplitude(h, mu, factor, laws, duration, period) -> np.ndarray:
         start,
         laws=laws,
         method="DOP853",
-        rtol=1e-8,
+        rtol=rtol,
         t_eval=EPS * np.linspace(duration - 2 * period, duration, 2000),
         dense_output=False,
     )
     return (run.reactions.max(axis=1) - run.reactions.min(axis=1)) / 2
 
 
-def _runs(h, laws, mu, factors, full: bool) -> list[float]:
-    """Reaction 1's amplitude after ~1.5/alpha from each factor times the predicted cycle."""
-    duration = 1.5 / abs(h.dalpha * (mu - h.value))
+def _runs(h, laws, mu, factors, full: bool, quick: bool = False) -> list[float]:
+    """Reaction 1's amplitude after 1.5/alpha (--quick: 1/alpha) from each factor times the predicted cycle."""
+    rtol = RTOL[quick]
+    duration = (1.0 if quick else 1.5) / abs(h.dalpha * (mu - h.value))
     period = 2 * np.pi / h.omega
     if full:
-        return [_full_amplitude(h, mu, f, laws, duration, period)[0] for f in factors]
-    return [_amplitude({**BRAKE, "mu": mu}, laws, h.cycle_start(mu, f), duration, period)[0] for f in factors]
+        return [_full_amplitude(h, mu, f, laws, duration, period, rtol)[0] for f in factors]
+    return [_amplitude({**BRAKE, "mu": mu}, laws, h.cycle_start(mu, f), duration, period, rtol)[0] for f in factors]
 
 
-def _supercritical(h, laws, distances, full=False):
+def _supercritical(h, laws, distances, full=False, quick=False):
+    # from 0.8x and 1.2x over 1.5/alpha the gap to the cycle shrinks to 20% e^-3 = 1%; --quick: 0.9x and 1.1x
+    # over 1/alpha, 10% e^-2 = 1.4%, at 2/3 of the cost
+    factors = (0.9, 1.1) if quick else (0.8, 1.2)
     rows = []
     for d in distances:
         mu = h.value * (1 + d * np.sign(h.dalpha))
-        rows.append((d, h.amplitude(mu)[0], *_runs(h, laws, mu, (0.8, 1.2), full)))
+        rows.append((d, h.amplitude(mu)[0], *_runs(h, laws, mu, factors, full, quick)))
     return rows
 
 
-def _subcritical(h, laws, d, full=False):
+def _subcritical(h, laws, d, full=False, quick=False):
     mu = h.value * (1 - d * np.sign(h.dalpha))
-    return (h.amplitude(mu)[0], *_runs(h, laws, mu, (0.7, 1.3), full))
+    return (h.amplitude(mu)[0], *_runs(h, laws, mu, (0.7, 1.3), full, quick))
 
 
 def _direction_records(name, h, laws, distances, ours, curves, quick) -> list[dict]:
     """Fast subsystem and full system at EPS: simulated against predicted, one record each (quick:
-    the full system at the largest small distance only)."""
+    the full system at the largest small distance only, for the laws of FULL_QUICK, at rtol 1e-6)."""
     records = []
-    for full in (False, True):
+    for full in (False, True) if not quick or name in FULL_QUICK else (False,):
         label = f"hopf-direction/{name}" + (f" (full, eps={EPS:g})" if full else "")
         t0 = time.perf_counter()
         if h.direction == "supercritical":
             # weakly nonlinear theory holds while the cycle keeps the pads in contact (amplitude < u*)
             small = [d for d in distances if h.amplitude(h.value * (1 + d * np.sign(h.dalpha)))[0] < h.u_star[0]]
-            rows = _supercritical(h, laws, small[-1:] if full and quick else small, full)
+            lost = [d for d in distances if d not in small]
+            if quick:  # the two largest where a 1.2x start keeps contact (a margin): the closest take longest
+                small = [d for d in small if 1.2 * h.amplitude(h.value * (1 + d * np.sign(h.dalpha)))[0] < h.u_star[0]]
+                small = small[-2:]
+            rows = _supercritical(h, laws, small[-1:] if full and quick else small, full, quick)
             curves[name, full] = (h, rows)
             error = max(max(abs(lo - p), abs(hi - p)) / p for _, p, lo, hi in rows)
             slope = (
@@ -127,28 +140,40 @@ def _direction_records(name, h, laws, distances, ours, curves, quick) -> list[di
                 if len(rows) > 1
                 else float("nan")
             )
-            lost = [d for d in distances if d not in small]
             fit = f"amplitude ~ distance^{slope:.3f} over {small}" if len(rows) > 1 else f"at {rows[0][0]} only"
             notes = f"l1 = {h.l1:.3g} < 0 at mu* = {h.value:.6g}; {fit}" + (
                 f"; at {lost} the predicted amplitude exceeds N* = {h.u_star[0]:.3g}: contact loss" if lost else ""
             )
         else:
-            predicted, low, high = _subcritical(h, laws, 0.03, full)
+            predicted, low, high = _subcritical(h, laws, 0.03, full, quick)
             error = 0.0 if (low < 0.7 * predicted and high > 1.3 * predicted) else 1.0
             notes = (
                 f"l1 = {h.l1:.3g} > 0 at mu* = {h.value:.6g}; 3% before the line the unstable cycle "
                 f"{predicted:.3g}: 0.7x -> {low:.3g}, 1.3x -> {high:.3g} (jump: hysteresis)"
             )
-        records.append(record(label, ours, time.perf_counter() - t0, error, len(distances), notes))
+        notes += f"; DOP853 rtol {RTOL[quick]:g}" + (
+            f"; --quick: runs of 1/alpha (not 1.5/alpha) from 0.9x and 1.1x (not 0.8x and 1.2x) the predicted cycle, "
+            f"at the two largest of {distances} where 1.2x keeps contact, the full system at the largest and for "
+            f"{' and '.join(FULL_QUICK)} only"
+            if quick
+            else ""
+        )
+        simulated = len(rows) if h.direction == "supercritical" else 1
+        records.append(record(label, ours, time.perf_counter() - t0, error, simulated, notes))
     return records
 
 
-def _symbolic_records() -> list[dict]:
-    """Stability.first_lyapunov with Hertz pads (symbolic k, d), and the brake's closed form."""
+# --quick: the closed form in the derivatives that Hertz and the weakening damper have (notebook 06's
+# subset, a few seconds); all ten (LAW_DERIVATIVES, 15-30 s) in the full bench
+QUICK_DERIVATIVES = ("Phi_u", "Phi_v", "Phi_uu", "Phi_uv", "Phi_vv", "Psi_vv")
+
+
+def _symbolic_l1_record() -> dict:
+    """Stability.first_lyapunov with Hertz pads (symbolic k, d), against evaluating it at a point (full bench
+    only: the subs of its ~180000 operations costs ~10 CPU s)."""
     import sympy as sp
 
     from contactsym.laws.library import with_laws
-    from contactsym.scenes.brake import squeal_direction
 
     k, d = sp.symbols("k d", positive=True)
     st = with_laws(cs.scene("brake"), Hertz(k, d)).stability()
@@ -165,30 +190,41 @@ def _symbolic_records() -> list[dict]:
     value = complex(l1.subs(point)).real
     evaluation = time.perf_counter() - t0
     size = sp.count_ops(l1)
+    error = 0.0 if value * h.l1 > 0 else 1.0
+    return record(
+        "hopf-direction/symbolic l1, Hertz pads",
+        ours,
+        evaluation,
+        error,
+        size,
+        f"Stability.first_lyapunov built in {ours:.2f} s ({size} operations; by hand on one machine: 0.67 s "
+        "with <q, q> and <p, q> expanded, 0.39 s without); baseline: evaluating it at mu* by subs "
+        f"({evaluation:.2f} s, l1 = {value:.3g}, {'same sign as' if not error else 'other sign than'} numerics: "
+        f"error {error:g})",
+    )
+
+
+def _closed_form_record(quick: bool = False) -> dict:
+    """The brake's closed form squeal_direction(): the six derivatives of notebook 06 in --quick, all ten else."""
+    import sympy as sp
+
+    from contactsym.scenes.brake import LAW_DERIVATIVES, squeal_direction
+
+    derivatives = QUICK_DERIVATIVES if quick else LAW_DERIVATIVES
     t0 = time.perf_counter()
-    Phi_line, closed = squeal_direction(cs.scene("brake"))
+    Phi_line, closed = squeal_direction(cs.scene("brake"), derivatives)
     closed_s = time.perf_counter() - t0
-    return [
-        record(
-            "hopf-direction/symbolic l1, Hertz pads",
-            ours,
-            evaluation,
-            0.0 if value * h.l1 > 0 else 1.0,
-            size,
-            f"Stability.first_lyapunov built in {ours:.2f} s ({size} operations; by hand on one machine: 0.67 s "
-            "with <q, q> and <p, q> expanded, 0.39 s without); baseline: evaluating it at mu* by subs "
-            f"({evaluation:.2f} s, l1 = {value:.3g}, same sign as numerics: error 0)",
-        ),
-        record(
-            "hopf-direction/closed form, brake alpha = 90 deg",
-            closed_s,
-            None,
-            0.0,
-            len(sp.Add.make_args(closed)),
-            f"squeal_direction(): Phi* = {Phi_line}, l1 with {len(sp.Add.make_args(closed))} terms in the "
-            "law's derivatives, checked in tests/test_lyapunov_form.py",
-        ),
-    ]
+    return record(
+        "hopf-direction/closed form, brake alpha = 90 deg",
+        closed_s,
+        None,
+        0.0,
+        len(sp.Add.make_args(closed)),
+        f"squeal_direction(): Phi* = {Phi_line}, l1 with {len(sp.Add.make_args(closed))} terms in the "
+        f"law's derivatives {', '.join(derivatives)}"
+        + (" (--quick: the stiffness's and Psi_vv; all ten in the full bench)" if quick else "")
+        + ", checked in tests/lyapunov/test_polynomial.py",
+    )
 
 
 def run(quick: bool, out) -> list[dict]:
@@ -199,8 +235,9 @@ def run(quick: bool, out) -> list[dict]:
 
     from contactsym.plotting.hopf import hopf_amplitude_data, hopf_amplitude_plot
 
-    # --quick: two distances (the exponent still fitted); 0.001, the slowest to settle, in the full bench
-    distances = (0.003, 0.01) if quick else (0.001, 0.003, 0.01, 0.02)
+    # --quick: per law the two largest distances where the runs keep contact (the exponent still fitted: Hertz
+    # 0.5-1%, cubic stiffening 1-2%, Hunt-Crossley 0.2-0.3%); 0.001, the slowest to settle, in the full bench
+    distances = (0.002, 0.003, 0.005, 0.01, 0.02) if quick else (0.001, 0.003, 0.01, 0.02)
     records, curves = [], {}
     for name, (law, mu0) in LAWS.items():
         laws = {0: law, 1: law}
@@ -209,7 +246,8 @@ def run(quick: bool, out) -> list[dict]:
         h = numerics.hopf_point(cs.scene("brake"), {**BRAKE, "mu": mu0}, "mu", laws=laws)
         records += _direction_records(name, h, laws, distances, time.perf_counter() - t0, curves, quick)
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    records += _symbolic_records()
+    # --quick: the symbolic l1's row (its evaluation by subs ~10 CPU s) in the full bench only
+    records += ([] if quick else [_symbolic_l1_record()]) + [_closed_form_record(quick)]
     color = None
     for (name, full), (h, rows) in curves.items():
         data = hopf_amplitude_data(h, [r[0] for r in rows], [(r[2] + r[3]) / 2 for r in rows])

@@ -20,13 +20,19 @@ def _worker(stage: str, timeout: float) -> dict | None:
 
 
 def run(quick: bool, out_dir) -> list[dict]:
-    limit = 15 if quick else 600  # --quick: the old way's time-out cut at 15 s (a lower bound on the ratio)
-    ours, old = _worker("regions", limit), _worker("regions-unlimited", limit)
-    ours_s = ours["seconds"] if ours else float(limit)
+    limit = 8 if quick else 600  # --quick: the old way's time-out cut at 8 s (a lower bound on the ratio)
+    # the cut is for the old way: ours gets time on a loaded machine
+    ours, old = _worker("regions", 600), _worker("regions-unlimited", limit)
+    ours_s = ours["seconds"] if ours else 600.0
     old_s = old["seconds"] if old else float(limit)
-    notes = f"cold, fresh process, scene build, stability and regions included; time limit {limit} s; target < {TARGET_S:.0f} s"
+    notes = (
+        f"cold, fresh process, scene build, stability and regions included; time limit of the old way {limit} s; "
+        f"target < {TARGET_S:.0f} s"
+    )
     if ours:
         notes += f"; {ours['parts']} regions, CPU {ours['cpu_s']:.3g} s; within target: {ours_s < TARGET_S}"
+    else:
+        notes += "; ours timed out at 600 s: ours_s is that bound"
     if old is None:
         notes += "; the old way timed out: baseline_s is the limit and the ratio a lower bound"
     return [record("regions k=3 symbolic", ours_s, old_s, None, 1, notes)]

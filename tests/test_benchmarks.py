@@ -11,3 +11,15 @@ def test_benchmark_record_format_smoke():
     assert r["ratio"] == 4.0
     table = markdown([r, record("missing", 1.0, None, None, 1, "")], quick=True, seconds=1.0)
     assert "| demo | 0.5 | 2 | 4 | 0 | 10 | a / note |" in table and "| missing | 1 | - | - | - | 1 |  |" in table
+
+
+def test_benchmark_table_header_says_wall_cpu_load_and_modules():
+    from benchmarks import record
+    from benchmarks.run import markdown
+
+    table = markdown(
+        [record("demo", 0.5, 2.0, 0, 10, "")], True, 170.0, 151.0, [("squeal", 30.4, 25.6)], ("1.5", "2.0")
+    )
+    header = table.splitlines()[2]
+    assert "170 s wall in all (151 CPU s)" in header and "load average 1.5 at the start, 2.0 at the end" in header
+    assert "Per module, wall / CPU s: squeal 30 / 26." in table

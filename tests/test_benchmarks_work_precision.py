@@ -38,3 +38,27 @@ def test_rhs_summary_leaves_out_failed_pairs_and_reports_them():
     assert s["failed"] == [("Radau", 1e-9)]
     assert s["per_solver"] == {"Radau": 1.1, "BDF": 3.0, "LSODA": 1.0}
     assert "not reached (1.73x)" in wp._rhs_notes("demo", s, [1e-3])
+
+
+def test_quick_retimes_only_the_full_runs_that_can_decide_the_ratio():
+    eps0 = 1e-4
+    reduced = [(eps0, 1e-8, 3e-4, 5e-9, 38)]  # target 1e-8
+    rows = [
+        (eps0, "LSODA", True, 1e-9, 0.008, 3e-9, 500, True, 1),  # the cheapest reaching the target
+        (eps0, "Radau", True, 1e-9, 0.015, 2e-9, 500, True, 1),  # within 2x: timed again
+        (eps0, "BDF", True, 1e-9, 0.020, 2e-9, 500, True, 1),  # beyond 2x: kept as timed once
+        (eps0, "BDF", False, 1e-6, 0.001, 1e-6, 500, True, 1),  # misses the target
+    ]
+    timed = []
+
+    class Run:
+        cpu_s = 0.004
+
+    def simulate(method, analytic, rtol, budget):
+        timed.append((method, analytic, rtol))
+        return Run()
+
+    assert wp._retime_candidates(rows, reduced, simulate, 1000) == 2
+    assert set(timed) == {("LSODA", True, 1e-9), ("Radau", True, 1e-9)} and len(timed) == 2 * wp.DECISIVE_REPEAT
+    assert [r[4] for r in rows] == [0.004, 0.004, 0.020, 0.001]
+    assert rows[0][5:] == (3e-9, 500, True, 1)  # error, counts and success untouched
