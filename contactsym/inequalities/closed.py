@@ -90,9 +90,9 @@ def _reduce(condition, facts: Facts, symbol, limits) -> sp.Basic:
         args = [_reduce(arg, facts, symbol, limits) for arg in condition.args]
         if isinstance(condition, sp.And):
             flat = [c for arg in args for c in sp.And.make_args(arg)]
-            return sp.And(*_drop_implied_conjuncts(merge_abs(flat), facts))
+            return sp.And(*_drop_implied_conjuncts(merge_abs(flat), facts, limits[0]))
         if isinstance(condition, sp.Or):
-            return sp.Or(*_drop_implied_disjuncts(args, facts))
+            return sp.Or(*_drop_implied_disjuncts(args, facts, limits[0]))
         return condition.func(*args)
     return condition
 
@@ -123,12 +123,19 @@ def _conditions(relations) -> list[Condition] | None:
     return None if any(c is None for c in conditions) else conditions
 
 
-def _drop_implied_conjuncts(conjuncts: list[sp.Basic], facts: Facts) -> list[sp.Basic]:
+def _small(condition: sp.Basic, raw_ops: float) -> bool:
+    """Every relation of ``condition`` within ``raw_ops`` operations: one past it is kept as given,
+    and no implication is tried with it either (proving one expands it)."""
+    relations = [condition] if isinstance(condition, Relational) else condition.atoms(Relational)
+    return all(sp.count_ops(r.lhs - r.rhs) <= raw_ops for r in relations)
+
+
+def _drop_implied_conjuncts(conjuncts: list[sp.Basic], facts: Facts, raw_ops: float = RAW_OPS) -> list[sp.Basic]:
     """Remove an Or of relationals that the relational conjuncts imply (premises and its negation clash)."""
-    premises = [c for c in conjuncts if isinstance(c, Relational)]
+    premises = [c for c in conjuncts if isinstance(c, Relational) and _small(c, raw_ops)]
     kept = []
     for c in conjuncts:
-        if isinstance(c, sp.Or) and all(isinstance(d, Relational) for d in c.args):
+        if isinstance(c, sp.Or) and all(isinstance(d, Relational) for d in c.args) and _small(c, raw_ops):
             clash = _conditions(premises + [sp.Not(d) for d in c.args])
             if clash is not None and facts.infeasible(clash):
                 continue
@@ -136,12 +143,14 @@ def _drop_implied_conjuncts(conjuncts: list[sp.Basic], facts: Facts) -> list[sp.
     return kept
 
 
-def _drop_implied_disjuncts(disjuncts: list[sp.Basic], facts: Facts) -> list[sp.Basic]:
+def _drop_implied_disjuncts(disjuncts: list[sp.Basic], facts: Facts, raw_ops: float = RAW_OPS) -> list[sp.Basic]:
     """Remove a disjunct that implies another one (it adds nothing to the Or)."""
     kept = list(disjuncts)
     for d in disjuncts:
+        if not _small(d, raw_ops):
+            continue
         premises = _conditions(sp.And.make_args(d))
-        others = [Condition.of(o) for o in kept if o is not d and isinstance(o, Relational)]
+        others = [Condition.of(o) for o in kept if o is not d and isinstance(o, Relational) and _small(o, raw_ops)]
         if premises is not None and any(o is not None and facts.implied(premises, o) for o in others):
             kept.remove(d)
     return kept

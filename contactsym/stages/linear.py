@@ -23,7 +23,7 @@ from ..arguments import checked
 from ..deprecation import deprecated_property
 from ..errors import ContactsymError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering
-from .minors import _cancelled_in, _integral_fraction, minors_of, product_of
+from .minors import _cancelled_in, _integral_fraction, minors_of, polynomial_factors, product_of
 
 __all__ = ["lam", "charpoly", "principal_minors", "Linearization", "linearization_of"]
 
@@ -209,8 +209,8 @@ class Linearization(LatexReprMixin):
     @cached_property
     def det_A(self) -> sp.Expr:
         """det A in the canonical form, by fraction-free expansion in a polynomial ring."""
-        minors = minors_of(self.A, self.factors)
-        return minors.field.present(minors.minor(tuple(range(self.A.rows))))
+        minors = minors_of(self._minors_source, self.factors)
+        return minors.field.present(minors.minor(tuple(range(self.fast.k))))
 
     @cached_property
     def factors(self) -> tuple | None:
@@ -252,8 +252,14 @@ class Linearization(LatexReprMixin):
 
     @cached_property
     def charpoly(self) -> sp.Poly:
-        log.info("scene '%s': characteristic polynomial (4.6) from %d principal minors", self.fast.name, 2**self.A.rows)
-        return charpoly(self.A, self.Phi, self.Psi, self.fast.positive, self.factors)
+        log.info("scene '%s': characteristic polynomial (4.6) from %d principal minors", self.fast.name, 2**self.fast.k)
+        return charpoly(self._minors_source, self.Phi, self.Psi, self.fast.positive, self.factors)
+
+    @cached_property
+    def _minors_source(self) -> sp.Matrix:
+        """A for its minors; with polynomial factors a zero matrix of A's shape: the minors are then read
+        off the factors alone, so det A and (4.6) do not wait for A's entries in the canonical form."""
+        return sp.zeros(self.fast.k) if polynomial_factors(self.factors) else self.A
 
     @checked
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:

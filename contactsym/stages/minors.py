@@ -3,17 +3,20 @@
 Two ways: from A = P / D itself (:class:`MinorsInRing`: the minors of P over D^|S|), or, for a
 scene in contact space, from its factors A = W^T M^-1 V (:class:`FactoredMinors`: by the Schur
 complement each minor is one polynomial over det M). Used by :mod:`contactsym.stages.linear`.
+The same bordered determinants give the entries' numerators W_i^T adj(M) V_j, hence the positive
+multiple |det M| A (:func:`positive_multiple`) whose signs the propositions of
+:mod:`contactsym.stages.classification` read without a division.
 """
 
 from __future__ import annotations
 
 import sympy as sp
 
-from ..algebra.basic import normalize
+from ..algebra.basic import known_sign, normalize
 from ..algebra.canonical_form import TrigField, TrigFraction
 from ..algebra.fraction_free import adjugate_and_det_in_field
 
-__all__ = ["MinorsInRing", "FactoredMinors", "minors_of", "product_of"]
+__all__ = ["MinorsInRing", "FactoredMinors", "minors_of", "polynomial_factors", "positive_multiple", "product_of"]
 
 
 class MinorsInRing:
@@ -130,7 +133,8 @@ class FactoredMinors(MinorsInRing):
         return self._m_cache[key]
 
     def _bordered(self, S: tuple, level: int, columns: tuple):
-        """det of [[W_S^T, 0], [M, V_S]] from the W-row ``level`` on, on ``columns``."""
+        """det of [[W_S^T, 0], [M, V_C]] from the W-row ``level`` on, on ``columns`` (those of M and of
+        the V_j, j in C, as ``columns`` names them: C = S for a principal minor)."""
         if level == len(S):
             return self._m_det(0, columns)
         key = (S, level, columns)
@@ -150,6 +154,13 @@ class FactoredMinors(MinorsInRing):
         # [[M, V_S], [W_S^T, 0]] is [[W_S^T, 0], [M, V_S]] with its p rows moved past n: (-1)^(n p)
         value = self._bordered(S, 0, tuple(range(self.n)) + tuple(self.n + j for j in S))
         return value if (len(S) + self.n * len(S)) % 2 == 0 else -value
+
+    def entry_numerator(self, i: int, j: int):
+        """a_ij det M = W_i^T adj(M) V_j = -det([[M, V_j], [W_i^T, 0]]) (the Schur complement, as for
+        :meth:`numerator` with S = (i,) when i = j): a polynomial, the bordered determinant's
+        sub-determinants shared with the principal minors."""
+        value = self._bordered((i,), 0, tuple(range(self.n)) + (self.n + j,))
+        return value if self.n % 2 else -value
 
     def power(self, S: tuple) -> int:
         return 1 if S else 0
@@ -191,6 +202,56 @@ def product_of(M: sp.Matrix, W: sp.Matrix, V: sp.Matrix) -> sp.Matrix | None:
         return normalize(field.present(field.field.new(numerator, det)))
 
     return sp.Matrix(W.cols, V.cols, entry)
+
+
+def polynomial_factors(factors) -> bool:
+    """True when ``factors`` = (M, W, V) are polynomial, so that :func:`minors_of` takes every minor of
+    A = W^T M^-1 V from them (:class:`FactoredMinors`) and reads of A its shape only.
+
+    Examples
+    --------
+    >>> a = sp.Symbol("a")
+    >>> polynomial_factors((sp.eye(1), sp.eye(1), sp.Matrix([[a]]))), polynomial_factors((sp.eye(1), sp.eye(1), sp.Matrix([[1 / a]])))
+    (True, False)
+    """
+    if factors is None:
+        return False
+    field = TrigField([x for X in factors for x in X])
+    return all(_polynomial_rows(field, X) is not None for X in factors)
+
+
+def positive_multiple(factors, positive=()) -> tuple[sp.Matrix, int, bool] | None:
+    """(|det M| A, the most terms of an entry's numerator, whether A is a number matrix) for A = W^T M^-1 V with polynomial factors
+    ``factors`` = (M, W, V): the entries sign(det M) W_i^T adj(M) V_j, polynomials read off the bordered
+    determinants of :class:`FactoredMinors` (no division, no gcd). None where a factor is not
+    polynomial or the sign of det M is not proved (``positive``: expressions known to be positive,
+    as :func:`contactsym.algebra.basic.known_sign` takes them; det M of a mass matrix is listed by its scene).
+
+    Examples
+    --------
+    >>> a = sp.Symbol("a", real=True)
+    >>> m = sp.Symbol("m", positive=True)
+    >>> M, W, V = sp.Matrix([[m, 0], [0, 2]]), sp.eye(2), sp.Matrix([[a, 1], [0, 1]])
+    >>> positive_multiple((M, W, V))  # |det M| W^T M^-1 V = 2 m A
+    (Matrix([
+    [2*a, 2],
+    [  0, m]]), 1, False)
+    """
+    try:
+        minors = FactoredMinors(*factors)
+    except ValueError:
+        return None
+    sign = known_sign(minors.field.present(minors.field.field.new(minors.denominator)), positive)
+    if sign is None:
+        return None
+    k = minors.k
+    numerators = [[minors.entry_numerator(i, j) for j in range(k)] for i in range(k)]
+    terms = max(len(x) for row in numerators for x in row)
+    scaled = sp.Matrix(k, k, lambda i, j: sign * minors.field.present(minors.field.field.new(numerators[i][j])))
+    # a_ij = N_ij / det M is a number c exactly when N_ij = c det M (both reduced: the normal form is unique)
+    det = minors.denominator
+    numeric = all(x * det.LC == det * x.LC for row in numerators for x in row)
+    return scaled, terms, numeric
 
 
 def _polynomial_rows(field, X: sp.Matrix) -> list[list] | None:

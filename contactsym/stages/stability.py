@@ -15,6 +15,12 @@ paper:
   principal minors gives a stable law and a negative principal minor an unstable one).
   For a numeric A, ``robustness`` holds the point decision with its certificate or
   witness laws, and ``undecided`` is True only where neither decides.
+
+The regions are built in :mod:`contactsym.stages.classification`. For a mechanism with k = 2 and
+large entries they are read off |det M| A (:func:`contactsym.stages.minors.positive_multiple`),
+and the Hurwitz conditions off the factors of A (:class:`~contactsym.stages.minors.FactoredMinors`):
+neither waits for A's entries in the canonical form (the four-link, two-contact arm: Hurwitz
+conditions and classification 18.8 s CPU, against 29 s and about 500 s before).
 """
 
 from __future__ import annotations
@@ -27,14 +33,16 @@ from typing import TYPE_CHECKING
 import sympy as sp
 
 from ..algebra.basic import normalize
-from ..algebra.hurwitz import EXPAND_TERMS, Hurwitz, expansion_bound, hurwitz_minors
-from ..arguments import between, checked
+from ..algebra.hurwitz import EXPAND_TERMS, Hurwitz, expansion_bound
+from ..arguments import checked
 from ..deprecation import deprecated_property
 from ..errors import SingularJacobianError
-from ..inequalities import factor_list
 from ..lyapunov.coefficient import first_lyapunov_symbolic
-from ..printing.latex_output import Formula, LatexReprMixin, Numbering, tex
-from .linear import lam, linearization_of
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering
+from .classification import proved_regions
+from .linear import linearization_of
+from .minors import polynomial_factors, positive_multiple
+from .stability_formulas import generic_minors, robustness_formulas, shortest_form
 from .verdicts import NAMES as VERDICT_NAMES
 from .verdicts import Verdict, classification_verdicts, with_point_decision
 
@@ -129,7 +137,7 @@ class Stability(LatexReprMixin):
 
     @cached_property
     def k(self) -> int:
-        return self.A.rows
+        return self.linearization.fast.k
 
     @cached_property
     def routh_hurwitz(self) -> Hurwitz:
@@ -157,24 +165,31 @@ class Stability(LatexReprMixin):
 
     @cached_property
     def _classification(self) -> tuple:
-        """The regions where each statement is proved (Propositions 3-8 and the closed forms)."""
-        A, det = self.A, self.linearization.det_A
-        diagonal = [A[i, i] for i in range(self.k)]
-        if self.k == 1:
-            return _gt(A[0]), sp.Lt(A[0], 0), sp.false
-        if self.k == 2:
-            # Prop. 6, with its boundary: a11, a22 <= 0 (not both 0 when det A > 0) makes p_3 <= 0
-            unstable = sp.Or(sp.Lt(det, 0), sp.And(*[sp.Le(a, 0) for a in diagonal]))
-            coupling = normalize(A[0, 1] * A[1, 0])
-            stable = sp.And(*[_gt(a) for a in diagonal], _gt(det), sp.Ge(coupling, 0))
-            not_unstable = sp.Or(*[_gt(a) for a in diagonal])
-            not_stable = sp.Or(*[sp.Le(a, 0) for a in diagonal], sp.Lt(coupling, 0))
-            return stable, unstable, sp.And(_gt(det), not_unstable, not_stable)
-        closed = self._closed
-        unstable = sp.Or(sp.Lt(det, 0), sp.And(*[sp.Lt(a, 0) for a in diagonal]), closed["unstable for every law"])
-        symmetric = [sp.Eq(A[i, j], A[j, i]) for i in range(self.k) for j in range(i) if sp.expand(A[i, j] - A[j, i])]
-        leading = [_gt(normalize(A[:m, :m].det(method="berkowitz"))) for m in range(1, self.k + 1)]
-        return sp.And(*symmetric, *leading), unstable, closed["law-dependent"]
+        """The regions where each statement is proved (Propositions 3-8 and the closed forms):
+        :func:`contactsym.stages.classification.proved_regions`."""
+        positive = self.linearization.fast.positive
+        return proved_regions(self._sign_matrix, self.linearization.det_A, self._closed, positive)
+
+    @cached_property
+    def _multiple(self) -> tuple | None:
+        """For k = 2 with large polynomial factors (entries whose product may pass :data:`EXPAND_TERMS`
+        terms): :func:`~contactsym.stages.minors.positive_multiple`, (|det M| A, terms, A numeric); else None."""
+        if self.k != 2 or not polynomial_factors(self.linearization.factors):
+            return None
+        found = positive_multiple(self.linearization.factors, self.linearization.fast.positive)
+        return found if found is not None and found[1] ** 2 > EXPAND_TERMS else None
+
+    @cached_property
+    def _sign_matrix(self) -> sp.Matrix:
+        """A, or the positive multiple |det M| A of :attr:`_multiple`, with no division. The regions of
+        Proposition 6 are those of any positive multiple c A: the signs of a_ii, of det(c A) =
+        c^2 det A (det A itself is given) and of c^2 a_12 a_21 are A's."""
+        return self.A if self._multiple is None else self._multiple[0]
+
+    @cached_property
+    def _symbolic(self) -> bool:
+        """A has free symbols (read off the factors where A is not needed otherwise)."""
+        return bool(self.A.free_symbols) if self._multiple is None else not self._multiple[2]
 
     @cached_property
     def verdicts(self) -> dict[str, Verdict]:
@@ -185,13 +200,13 @@ class Stability(LatexReprMixin):
         """
         proved = dict(zip(VERDICT_NAMES, self._classification))
         verdicts = classification_verdicts(self.k, proved, self._closed)
-        if self.A.free_symbols or all(v.at() is not None for v in verdicts.values()):
+        if self.k < 3 or self._symbolic or all(v.at() is not None for v in verdicts.values()):
             return verdicts
         return with_point_decision(verdicts, self.robustness)
 
     def _verdict(self, name: str) -> sp.Basic | None:
         verdict = self.verdicts[name]
-        return verdict.proved if self.A.free_symbols else verdict.at()
+        return verdict.proved if self._symbolic else verdict.at()
 
     @cached_property
     def robustly_stable(self) -> sp.Basic | None:
@@ -208,7 +223,7 @@ class Stability(LatexReprMixin):
     @cached_property
     def robustness(self) -> Robustness | None:
         """The point decision of :func:`contactsym.robustness.classify.decide_robustness` for a numeric A (k >= 3), else None."""
-        if self.k < 3 or self.A.free_symbols or self.linearization.det_A == 0:
+        if self.k < 3 or self._symbolic or self.linearization.det_A == 0:
             return None
         from ..robustness.classify import decide_robustness  # see robustness_regions: imported for k >= 3 only
 
@@ -342,55 +357,11 @@ class Stability(LatexReprMixin):
         for key, attribute in _STATEMENTS:
             value = self.hopf_printed if attribute == "hopf" else getattr(self, attribute)
             rows.append(row(key, r"\text{" + key + "}", UNDECIDED_TEX if value is None else show(value), ":"))
-        if self.k >= 3 and self.A.free_symbols and self.undecided != sp.false:
+        if self.k >= 3 and self._symbolic and self.undecided != sp.false:
             rows.append(row("undecided", r"\text{undecided}", show(self.undecided), ":"))
         if self.hopf_frequency is not None:
             rows.append(row("hopf frequency", r"\omega", show(self.hopf_frequency_printed)))
         return tuple(rows) + robustness_formulas(self.robustness)
-
-
-def shortest_form(polynomial: sp.Expr, outer=()) -> sp.Expr:
-    """The shortest of: ``polynomial`` as it is, factored, and grouped by the monomials in ``outer``
-    (e.g. the law's Phi_j, Psi_j) with each group's coefficient factored. Exact: the same polynomial.
-
-    Only a polynomial in symbols (of at most 400 terms; factored whole up to 100) is rewritten; the factoring is
-    :func:`contactsym.inequalities.factor_list` (cheap where variables of degree 1 split it).
-
-    Examples
-    --------
-    >>> a, b, c, d, P, Q = sp.symbols("a b c d Phi Psi")
-    >>> shortest_form(P * Q * a * d - P * Q * b * c + P * a + Q * d, (P, Q))
-    Phi*Psi*(a*d - b*c) + Phi*a + Psi*d
-    >>> shortest_form(a * c + a * d + b * c + b * d)
-    (a + b)*(c + d)
-    """
-    if not isinstance(polynomial, sp.Add) or len(polynomial.args) > 400:
-        return polynomial
-    symbols = polynomial.free_symbols
-    if not polynomial.is_polynomial(*symbols):
-        return polynomial
-    # factoring a long irreducible sum costs a second and finds nothing: the whole is factored up to 100 terms
-    candidates = [polynomial, _factored(polynomial) if len(polynomial.args) <= 100 else polynomial]
-    inner = sorted(symbols - set(outer), key=str)
-    if inner and symbols & set(outer):
-        groups = sp.Poly(polynomial, *sorted(symbols & set(outer), key=str)).as_dict()
-        gens = sorted(symbols & set(outer), key=str)
-        candidates.append(
-            sp.Add(
-                *[
-                    sp.Mul(*[g**e for g, e in zip(gens, powers)]) * _factored(sp.expand(c))
-                    for powers, c in groups.items()
-                ]
-            )
-        )
-    return min(candidates, key=sp.count_ops)
-
-
-def _factored(polynomial: sp.Expr) -> sp.Expr:
-    if not isinstance(polynomial, sp.Add):
-        return polynomial
-    coefficient, factors = factor_list(polynomial)
-    return sp.Mul(coefficient, *[base**power for base, power in factors])
 
 
 def stability_of(fast, signs=None) -> Stability:
@@ -419,45 +390,3 @@ def hurwitz_names(stability) -> list[str]:
     """
     letters = {"p": "p", "Delta": r"\Delta"}
     return [f"{letters[kind]}_{{{index}}}" for kind, index in stability.routh_hurwitz.labels]
-
-
-@checked(n=between(1, 12))
-def generic_minors(n: int) -> dict[int, sp.Expr]:
-    """Delta_m in the coefficients p_n, ..., p_0 (symbols) of a degree-n polynomial, for m = 1..n.
-
-    Examples
-    --------
-    >>> generic_minors(2)[2]
-    p_0*p_1
-    """
-    p = [sp.Symbol(f"p_{s}") for s in range(n + 1)]
-    minors = hurwitz_minors(sp.Poly(sum(p[s] * lam**s for s in range(n + 1)), lam))
-    return {m: sp.expand(minor) for m, minor in enumerate(minors, 1)}
-
-
-@checked(robustness="Robustness | None")
-def robustness_formulas(robustness) -> tuple[Formula, ...]:
-    """The point decision of :func:`contactsym.robustness.classify.decide_robustness`: verdict, certificate, witness laws.
-
-    Examples
-    --------
-    >>> from contactsym.robustness import decide_robustness
-    >>> rows = robustness_formulas(decide_robustness(sp.Matrix([[1, 0, 0], [0, -1, 0], [0, 0, 1]])))
-    >>> [row.key for row in rows]
-    ['robustness', 'certificate']
-    >>> print(rows[0].rhs)
-    \\text{unstable}
-    >>> robustness_formulas(None)
-    ()
-    """
-    if robustness is None:
-        return ()
-    rows = [Formula("robustness", r"\text{robustness}", r"\text{" + robustness.verdict + "}", ":")]
-    if robustness.certificate is not None:
-        statement = robustness.certificate.statement.replace("_", r"\_")
-        rows.append(Formula("certificate", r"\text{certificate}", r"\text{" + statement + "}", ":"))
-    for name, law in (("stable", robustness.stable_law), ("unstable", robustness.unstable_law)):
-        if law is not None:
-            values = r",\ ".join([tex(sp.Tuple(*law.Phi)), tex(sp.Tuple(*law.Psi))])
-            rows.append(Formula("witness", r"(\Phi, \Psi)_{\text{" + name + "}}", values))
-    return tuple(rows)

@@ -299,3 +299,15 @@ def test_closed_conjuncts_present_and_merge():
     facts = Facts((), present=lambda e: sp.sympify(e).xreplace({m: kappa**2}))
     parts = closed_conjuncts([facts.condition(m - x), facts.condition(m + x)], [sp.Eq(y, m)], facts)
     assert parts == frozenset({sp.Abs(x) < kappa**2, sp.Eq(y - kappa**2, 0)})
+
+
+def test_no_implication_is_tried_with_a_relation_past_the_size_limit():
+    """Past raw_ops a relation is kept as given and not used to drop another (proving it would expand it):
+    the same set, less reduced."""
+    x, y = sp.symbols("x y", real=True)
+    implied_disjunct = sp.Or(x > y, x > y + 1)
+    implied_conjunct = sp.And(x > y + 1, sp.Or(x > y, x < y - 2))
+    assert closed_form(implied_disjunct) == (x - y > 0)
+    assert closed_form(implied_disjunct, raw_ops=0) == implied_disjunct
+    assert closed_form(implied_conjunct) == (x - y > 1)
+    assert closed_form(implied_conjunct, raw_ops=0) == implied_conjunct

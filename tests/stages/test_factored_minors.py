@@ -14,6 +14,7 @@ import sympy as sp
 import contactsym as cs
 from contactsym.algebra.basic import SignSymbol, normalize
 from contactsym.stages.linear import charpoly, lam, principal_minors
+from contactsym.stages.minors import polynomial_factors, positive_multiple
 
 q1, q2, m, a = sp.symbols("q1 q2 m a", positive=True)
 s = SignSymbol("s")
@@ -96,3 +97,31 @@ def test_a_lagrangian_scene_linearizes_from_its_factors():
     assert (W.T * M.inv() * V - lin.A).applyfunc(sp.simplify) == sp.zeros(2, 2)
     jacobian = scene.fast_subsystem().jacobian(lin.sign_values).applyfunc(normalize)
     assert lin.A == jacobian
+
+
+@pytest.mark.parametrize("seed, n, k", [(2, 2, 2), (3, 3, 2)])
+def test_the_positive_multiple_is_det_m_times_a(seed, n, k):
+    """|det M| A from the bordered determinants, against W^T M^-1 V and det M in numpy (det M > 0 here)."""
+    M, W, V = random_factors(seed, n, k)
+    assert polynomial_factors((M, W, V))
+    scaled, terms, numeric = positive_multiple((M, W, V), [M.det(method="berkowitz")])
+    assert terms >= 1 and not numeric
+    rng = random.Random(seed)
+    functions = sp.lambdify([q1, q2, m, a, s], [M, W, V, scaled], "numpy")
+    for _ in range(3):
+        point = random_point(rng)
+        Mn, Wn, Vn, Sn = (np.array(x, dtype=float) for x in functions(*point.values()))
+        expected = np.linalg.det(Mn) * (Wn.T @ np.linalg.solve(Mn, Vn))
+        assert Sn == pytest.approx(expected, rel=1e-9, abs=1e-9)
+
+
+def test_the_positive_multiple_needs_the_sign_of_det_m_and_polynomial_factors():
+    W = V = sp.eye(2)
+    scaled, _, _ = positive_multiple((sp.Matrix([[-a, 0], [0, 1]]), W, V))  # det M = -a < 0: proved
+    assert scaled == sp.diag(-1, a)  # |det M| M^-1 = a diag(-1/a, 1)
+    x = sp.Symbol("x", real=True)
+    assert positive_multiple((sp.Matrix([[x, 0], [0, 1]]), W, V)) is None  # sign of det M = x unknown
+    assert not polynomial_factors((sp.Matrix([[1 / x, 0], [0, 1]]), W, V))
+    assert positive_multiple((sp.Matrix([[1 / x, 0], [0, 1]]), W, V)) is None
+    scaled, _, numeric = positive_multiple((2 * sp.eye(2), sp.eye(2), 4 * sp.eye(2)))
+    assert numeric and scaled == 8 * sp.eye(2)

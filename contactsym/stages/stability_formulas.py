@@ -1,0 +1,109 @@
+"""The printed forms of the stability conditions: generic Hurwitz minors, shortest forms, point-decision rows.
+
+The generic Hurwitz minors, the shortest exact form of a coefficient, and the rows of a point decision.
+
+Split from :mod:`contactsym.stages.stability` (which re-exports these names): none of them is a stage.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import sympy as sp
+
+from ..algebra.hurwitz import hurwitz_minors
+from ..arguments import between, checked
+from ..inequalities import factor_list
+from ..printing.latex_output import Formula, tex
+from .linear import lam
+
+if TYPE_CHECKING:
+    from ..robustness.classify import Robustness  # noqa: F401 - the hint of robustness_formulas
+
+__all__ = ["generic_minors", "robustness_formulas", "shortest_form"]
+
+
+def shortest_form(polynomial: sp.Expr, outer=()) -> sp.Expr:
+    """The shortest of: ``polynomial`` as it is, factored, and grouped by the monomials in ``outer``
+    (e.g. the law's Phi_j, Psi_j) with each group's coefficient factored. Exact: the same polynomial.
+
+    Only a polynomial in symbols (of at most 400 terms; factored whole up to 100) is rewritten; the factoring is
+    :func:`contactsym.inequalities.factor_list` (cheap where variables of degree 1 split it).
+
+    Examples
+    --------
+    >>> a, b, c, d, P, Q = sp.symbols("a b c d Phi Psi")
+    >>> shortest_form(P * Q * a * d - P * Q * b * c + P * a + Q * d, (P, Q))
+    Phi*Psi*(a*d - b*c) + Phi*a + Psi*d
+    >>> shortest_form(a * c + a * d + b * c + b * d)
+    (a + b)*(c + d)
+    """
+    if not isinstance(polynomial, sp.Add) or len(polynomial.args) > 400:
+        return polynomial
+    symbols = polynomial.free_symbols
+    if not polynomial.is_polynomial(*symbols):
+        return polynomial
+    # factoring a long irreducible sum costs a second and finds nothing: the whole is factored up to 100 terms
+    candidates = [polynomial, _factored(polynomial) if len(polynomial.args) <= 100 else polynomial]
+    inner = sorted(symbols - set(outer), key=str)
+    if inner and symbols & set(outer):
+        groups = sp.Poly(polynomial, *sorted(symbols & set(outer), key=str)).as_dict()
+        gens = sorted(symbols & set(outer), key=str)
+        candidates.append(
+            sp.Add(
+                *[
+                    sp.Mul(*[g**e for g, e in zip(gens, powers)]) * _factored(sp.expand(c))
+                    for powers, c in groups.items()
+                ]
+            )
+        )
+    return min(candidates, key=sp.count_ops)
+
+
+def _factored(polynomial: sp.Expr) -> sp.Expr:
+    if not isinstance(polynomial, sp.Add):
+        return polynomial
+    coefficient, factors = factor_list(polynomial)
+    return sp.Mul(coefficient, *[base**power for base, power in factors])
+
+
+@checked(n=between(1, 12))
+def generic_minors(n: int) -> dict[int, sp.Expr]:
+    """Delta_m in the coefficients p_n, ..., p_0 (symbols) of a degree-n polynomial, for m = 1..n.
+
+    Examples
+    --------
+    >>> generic_minors(2)[2]
+    p_0*p_1
+    """
+    p = [sp.Symbol(f"p_{s}") for s in range(n + 1)]
+    minors = hurwitz_minors(sp.Poly(sum(p[s] * lam**s for s in range(n + 1)), lam))
+    return {m: sp.expand(minor) for m, minor in enumerate(minors, 1)}
+
+
+@checked(robustness="Robustness | None")
+def robustness_formulas(robustness) -> tuple[Formula, ...]:
+    """The point decision of :func:`contactsym.robustness.classify.decide_robustness`: verdict, certificate, witness laws.
+
+    Examples
+    --------
+    >>> from contactsym.robustness import decide_robustness
+    >>> rows = robustness_formulas(decide_robustness(sp.Matrix([[1, 0, 0], [0, -1, 0], [0, 0, 1]])))
+    >>> [row.key for row in rows]
+    ['robustness', 'certificate']
+    >>> print(rows[0].rhs)
+    \\text{unstable}
+    >>> robustness_formulas(None)
+    ()
+    """
+    if robustness is None:
+        return ()
+    rows = [Formula("robustness", r"\text{robustness}", r"\text{" + robustness.verdict + "}", ":")]
+    if robustness.certificate is not None:
+        statement = robustness.certificate.statement.replace("_", r"\_")
+        rows.append(Formula("certificate", r"\text{certificate}", r"\text{" + statement + "}", ":"))
+    for name, law in (("stable", robustness.stable_law), ("unstable", robustness.unstable_law)):
+        if law is not None:
+            values = r",\ ".join([tex(sp.Tuple(*law.Phi)), tex(sp.Tuple(*law.Psi))])
+            rows.append(Formula("witness", r"(\Phi, \Psi)_{\text{" + name + "}}", values))
+    return tuple(rows)
