@@ -45,7 +45,7 @@ def markdown(records: list[dict], quick: bool, seconds: float, cpu: float | None
         "",
         f"`contactsym bench{' --quick' if quick else ''}` on {platform.machine()}, Python "
         f"{platform.python_version()}, {seconds:.0f} s in all{used}. ratio = baseline_s / ours_s. "
-        "Plots: `classification.png`, `work_precision.png`, `derivation.png`, `robustness.png`, `counts.png`, `scaling.png`, `atlas.png`, `closed_forms_k3.png` (not committed; rerun to make them).",
+        "Plots: `classification.png`, `work_precision.png`, `derivation.png`, `robustness.png`, `counts.png`, `scaling.png`, `atlas.png`, `closed_forms_k3.png`, `flint.png` (not committed; rerun to make them).",
         "",
         "| name | ours_s | baseline_s | ratio | error | n | notes |",
         "|---|---|---|---|---|---|---|",
