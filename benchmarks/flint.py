@@ -24,10 +24,12 @@ Rows:
   to ``fmpq_mpoly`` (a benchmark-local routing, the what-if of an implementation); and SymPy on
   flint ground types alone.
 
-Measured (2026-11-28, python-flint 0.9.0, SymPy 1.14, 2 cores at load 8-20, CPU s): the arm's
-10503/3889-term cofactors 10.3 s (SymPy) against 0.26 s (flint, of which the gcd 0.006 s and the
-conversion the rest); its half-angle cofactors 1.04 s against 0.065 s; the chain's cancel 0.51 s
-against 0.021 s. End to end the four-link arm to its Hurwitz conditions took 31.8 s against 20.3 s
+Measured (2026-11-28, python-flint 0.9.0, SymPy 1.14 on python ground types, 2 cores at load
+3-20, CPU s, one run): the arm's 10503/3889-term cofactors 9.9 s (SymPy) against 0.32 s (flint,
+the gcd itself 0.006 s, the rest conversion), 31x; its cancel 10.3 against 0.31; its half-angle
+cofactors 0.91 against 0.065 (14x); the chain's cancel 0.43 against 0.024 (18x); evaluation 4-5x;
+an exact division whose quotient is trivial 0.5x (conversion alone). All results identical.
+End to end the four-link arm to its Hurwitz conditions took 31.8 s against 20.3 s
 (1.56x; today's code measured 26.6 s in another run, 1.3x: the CPU time of one run varies by
 ~20 % at this load), the same conditions; the stool 6.0 s against 5.7 s; SymPy on flint ground
 types alone 27.2 s for the arm (no gain). Whether the robust classification, whose largest cancel
