@@ -21,6 +21,7 @@ BENCHMARKS = (
     "hopf_direction",
     "squeal",
     "spatial",
+    "flint",
 )
 
 

@@ -65,7 +65,7 @@ def markdown(
         f"`contactsym bench{' --quick' if quick else ''}` on {platform.machine()}, {os.cpu_count()} cores, Python "
         f"{platform.python_version()}, {seconds:.0f} s wall in all{used}{loaded}, the modules one after the other. "
         "ratio = baseline_s / ours_s. "
-        "Plots: `classification.png`, `work_precision.png`, `derivation.png`, `robustness.png`, `counts.png`, `scaling.png`, `atlas.png`, `closed_forms_k3.png` (not committed; rerun to make them).",
+        "Plots: `classification.png`, `work_precision.png`, `derivation.png`, `robustness.png`, `counts.png`, `scaling.png`, `atlas.png`, `closed_forms_k3.png`, `flint.png` (not committed; rerun to make them).",
         "",
     ]
     if modules:
