@@ -110,6 +110,9 @@ class Scene(LatexReprMixin):
     figure_plan : FigurePlan, optional
         What the report draws (a scene file's ``[figures]``,
         :class:`contactsym.mechanism.files.FigurePlan`).
+    inertia : 'proved', optional
+        The masses and inertias are already proved positive for every admissible value (as
+        :meth:`with_values` knows of a scene proved so): the check is not repeated.
 
     Examples
     --------
@@ -142,6 +145,7 @@ class Scene(LatexReprMixin):
         equations: dict | None = None,
         count_presentation: dict | None = None,
         figure_plan=None,
+        inertia: str | None = None,
     ):
         derived = contact_space is not None
         coordinates, accelerations, contacts = scene_parts(coordinates, accelerations, contacts, derived=derived)
@@ -189,7 +193,7 @@ class Scene(LatexReprMixin):
         self._stage_cache: dict = {}
         check_scene(self, parameters)
         #: How the masses and inertias were found positive: 'proved', 'sampled' or 'unchecked'.
-        self.inertia = check_inertia(self)
+        self.inertia = "proved" if inertia == "proved" else check_inertia(self)
         #: The parameters fixed at numbers by :meth:`with_values`, {Symbol: number} (empty: none).
         self.fixed_values: dict = {}
 
@@ -218,7 +222,8 @@ class Scene(LatexReprMixin):
         'x' is not a parameter of the scene 'brake'
         """
         fixed = checked_values(self, values)
-        scene = Scene(**substituted(self, fixed))
+        # proved positive for every admissible value: so for the admissible values left (a slice)
+        scene = Scene(**substituted(self, fixed), inertia=self.inertia if self.inertia == "proved" else None)
         scene.fixed_values = {**self.fixed_values, **fixed}
         return scene
 
