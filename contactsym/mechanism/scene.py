@@ -17,8 +17,7 @@ import sympy as sp
 from ..algebra.basic import known_sign, present
 from ..algebra.canonical_form import present_factor
 from ..arguments import checked, require
-from ..counts.regions import count_regions
-from ..errors import SceneError, SignPatternError
+from ..errors import SceneError
 from ..parse import sympy_only
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, tex
 from ..stages import equilibria as _equilibria
@@ -26,17 +25,12 @@ from ..stages import fast as _fast
 from ..stages import linear as _linear
 from ..stages import regularize as _regularize
 from ..stages import stability as _stability
-from ..stages.equilibria import Equilibria
-from ..stages.fast import FastSubsystem
-from ..stages.linear import Linearization, linearization_of
-from ..stages.regions import scene_regions
-from ..stages.regularize import ReducedSystem, Regularized
-from ..stages.stability import Stability, stability_of
-from ..validate import lagrangian_parts, scene_options, scene_parts, shorten, sign_pattern
+from ..validate import lagrangian_parts, scene_options, scene_parts, shorten
 from .checks import check_eps, check_equations, check_inertia, check_scene, user_names, with_friction
 from .contact import Contact, contact_manifold, frozen_symbol, plain_symbol
 from .contact_space import contact_space, mass_determinant, t
 from .fixed_values import checked_values, substituted
+from .scene_stages import SceneStages
 
 __all__ = ["Contact", "Scene", "paper_equations", "plain_symbol", "t"]
 
@@ -70,7 +64,7 @@ def paper_equations(scene, key: str, detail: str | None = None) -> tuple[tuple, 
     return GENERAL_NUMBERS(key, k, equations, detail)
 
 
-class Scene(LatexReprMixin):
+class Scene(SceneStages, LatexReprMixin):
     """A mechanical system with k compliant contacts.
 
     Build one with :meth:`from_accelerations` or :meth:`from_lagrangian`, or take a
@@ -110,6 +104,9 @@ class Scene(LatexReprMixin):
     figure_plan : FigurePlan, optional
         What the report draws (a scene file's ``[figures]``,
         :class:`contactsym.mechanism.files.FigurePlan`).
+    inertia : 'proved', optional
+        The masses and inertias are already proved positive for every admissible value (as
+        :meth:`with_values` knows of a scene proved so): the check is not repeated.
 
     Examples
     --------
@@ -142,6 +139,7 @@ class Scene(LatexReprMixin):
         equations: dict | None = None,
         count_presentation: dict | None = None,
         figure_plan=None,
+        inertia: str | None = None,
     ):
         derived = contact_space is not None
         coordinates, accelerations, contacts = scene_parts(coordinates, accelerations, contacts, derived=derived)
@@ -189,7 +187,7 @@ class Scene(LatexReprMixin):
         self._stage_cache: dict = {}
         check_scene(self, parameters)
         #: How the masses and inertias were found positive: 'proved', 'sampled' or 'unchecked'.
-        self.inertia = check_inertia(self)
+        self.inertia = "proved" if inertia == "proved" else check_inertia(self)
         #: The parameters fixed at numbers by :meth:`with_values`, {Symbol: number} (empty: none).
         self.fixed_values: dict = {}
 
@@ -218,7 +216,8 @@ class Scene(LatexReprMixin):
         'x' is not a parameter of the scene 'brake'
         """
         fixed = checked_values(self, values)
-        scene = Scene(**substituted(self, fixed))
+        # proved positive for every admissible value: so for the admissible values left (a slice)
+        scene = Scene(**substituted(self, fixed), inertia=self.inertia if self.inertia == "proved" else None)
         scene.fixed_values = {**self.fixed_values, **fixed}
         return scene
 
@@ -362,90 +361,6 @@ class Scene(LatexReprMixin):
     def freeze(self, expr: sp.Expr) -> sp.Expr:
         """Evaluate on the contact manifold with the slow state frozen (plain symbols)."""
         return self.plain(expr).subs(self.manifold)
-
-    # --- sign patterns ------------------------------------------------------------
-
-    @property
-    def fixed_signs(self) -> dict:
-        """Switching functions whose sign the scene fixes (unilateral contacts: u_j > 0)."""
-        return self.fast_subsystem().fixed_signs
-
-    @checked
-    def sign_patterns(self) -> list[tuple[int, ...]]:
-        """All admissible sign patterns of the switching functions (fixed ones kept)."""
-        return self.fast_subsystem().sign_patterns()
-
-    @checked
-    def check_signs(self, signs) -> tuple:
-        """Validate a sign pattern against the switching functions of the fast subsystem."""
-        switching = self.fast_subsystem().switching
-        signs = sign_pattern(signs)
-        if len(signs) != len(switching):
-            raise SignPatternError(
-                f"the sign pattern {signs} has length {len(signs)}, but scene {shorten(self.name)} has "
-                f"{len(switching)} switching functions {list(switching)}; give one sign (+1 or -1) each."
-            )
-        for value, s in zip(signs, switching):
-            if isinstance(value, bool) or value not in (1, -1):
-                raise SignPatternError(f"sign {value!r} for {s} must be +1 or -1.")
-            if self.fixed_signs.get(s, value) != value:
-                raise SignPatternError(f"{s} > 0 on the unilateral contact; its sign must be +1.")
-        return signs
-
-    # --- stages -------------------------------------------------------------------
-
-    @checked(key="tuple | str", build="Callable")
-    def cached(self, key, build):
-        """``build()``, computed once per ``key`` and kept with the scene: the stages and what is derived
-        from them (counts, thresholds) share the scene's cache through this method."""
-        if key not in self._stage_cache:
-            self._stage_cache[key] = build()
-        return self._stage_cache[key]
-
-    @checked
-    def regularized(self) -> Regularized:
-        """The system (1.7)/(1.9) in slow and fast variables (see :mod:`contactsym.stages.regularize`)."""
-        return self.cached("regularized", lambda: Regularized(self))
-
-    @checked
-    def fast_subsystem(self) -> FastSubsystem:
-        """The associated system (2.1): ``u' = Phi v + Psi f(u)``, ``v' = f(u)``."""
-        return self.cached("fast", lambda: FastSubsystem(self))
-
-    @checked
-    def equilibria(self, signs=None) -> Equilibria:
-        """Equilibria of the fast subsystem, one branch per sign pattern (4.2)."""
-        key = None if signs is None else self.check_signs(signs)
-        return self.cached(("equilibria", key), lambda: Equilibria(self.fast_subsystem(), key))
-
-    @checked
-    def linearization(self, signs=None) -> Linearization:
-        """Jacobian A (4.3), the matrix (4.5) and the characteristic polynomial (4.6)."""
-        key = None if signs is None else self.check_signs(signs)
-        return self.cached(("linear", key), lambda: linearization_of(self.fast_subsystem(), key))
-
-    @checked
-    def stability(self, signs=None) -> Stability:
-        """Hurwitz conditions (4.7) and the robustness classification (Props. 3-8)."""
-        key = None if signs is None else self.check_signs(signs)
-        return self.cached(("stability", key), lambda: stability_of(self.fast_subsystem(), key))
-
-    @checked
-    def regions(self, signs=None) -> dict:
-        """Named closed-form regions: stable / unstable for every law, law-dependent, Hopf line."""
-        key = None if signs is None else self.check_signs(signs)
-        return self.cached(("regions", key), lambda: scene_regions(self, key))
-
-    @checked
-    def equilibrium_counts(self) -> dict:
-        """Named closed-form regions by the number of equilibria (see :mod:`contactsym.counts.regions`)."""
-        return self.cached("counts", lambda: count_regions(self))
-
-    @checked
-    def reduced_system(self, signs=None) -> ReducedSystem:
-        """The comparison system (2.2): slow motion with reactions from f(u*) = 0."""
-        key = None if signs is None else self.check_signs(signs)
-        return self.cached(("reduced", key), lambda: ReducedSystem(self, key))
 
     # --- presentation -------------------------------------------------------------
 

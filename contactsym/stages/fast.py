@@ -16,10 +16,17 @@ from functools import cached_property
 import sympy as sp
 
 from ..algebra.basic import PaperSymbol, normalize, present
-from ..algebra.fraction_free import solve_fraction_free, t
 from ..arguments import checked, require
-from ..errors import ContactsymError, SceneError, SingularJacobianError
+from ..errors import SceneError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, prime, tex
+from .fast_space import (
+    _monomial_denominator,
+    contact_accelerations,
+    reaction_factors,
+    reaction_part,
+    switching_of_factors,
+)
+from .pieces import on_piece, solve_piece, switching_functions
 
 __all__ = ["FastSubsystem", "fast_variables", "law_coefficients", "switching_functions", "on_piece", "solve_piece"]
 
@@ -74,168 +81,6 @@ def law_coefficients(compliances, u, v, taken=()) -> tuple[tuple[sp.Expr, sp.Exp
         hats = {c: PaperSymbol(_decorated(c.name, taken), **c.assumptions0) for c in own}
         laws.append(tuple(sp.sympify(x).xreplace(hats) for x in phi_psi))
     return tuple(laws)
-
-
-def _canonical(arg: sp.Expr, u) -> tuple[sp.Expr, int]:
-    """(sigma, c) with arg = c * sigma, c a nonzero number, sigma increasing in the first u it has."""
-    first = next(x for x in u if arg.has(x))
-    content, sigma = sp.expand(arg).as_content_primitive()  # |2 u - 2 w| and |u - w| switch together
-    return (-sigma, -content) if sp.diff(sigma, first).could_extract_minus_sign() else (sigma, content)
-
-
-@checked(exprs="Sequence[sp.Expr]", u="Sequence[sp.Expr]")
-def switching_functions(exprs, u) -> tuple[sp.Expr, ...]:
-    """The distinct arguments of Abs and sign in ``exprs`` that depend on ``u``.
-
-    Examples
-    --------
-    >>> import sympy as sp
-    >>> u1, u2, y = sp.symbols("u_1 u_2 y", real=True)
-    >>> switching_functions([sp.Abs(u1) + sp.sign(-u1) + sp.Abs(u2 + y) + sp.Abs(y)], [u1, u2])
-    (u_1, u_2 + y)
-    """
-    found = set()
-    for expr in exprs:
-        for atom in sp.sympify(expr).atoms(sp.Abs, sp.sign):
-            if atom.args[0].has(*u):
-                found.add(_canonical(atom.args[0], u)[0])
-    order = {symbol: i for i, symbol in enumerate(u)}
-    return tuple(sorted(found, key=lambda s: (min(order[x] for x in s.free_symbols if x in order), str(s))))
-
-
-@checked(expr="sp.Expr", switching="Sequence[sp.Expr]", signs="Sequence[sp.Expr]", u="Sequence[sp.Expr]")
-def on_piece(expr, switching, signs, u) -> sp.Expr:
-    """``expr`` on the piece where sign(switching[i]) = signs[i]; signs may be symbols.
-
-    Examples
-    --------
-    >>> import sympy as sp
-    >>> u, s = sp.symbols("u s", real=True)
-    >>> on_piece(2*u + sp.Abs(-u) - sp.sign(u), [u], [s], [u])
-    s*u - s + 2*u
-    """
-    by_sigma = dict(zip(switching, signs))
-    replacements = {}
-    for atom in sp.sympify(expr).atoms(sp.Abs, sp.sign):
-        if not atom.args[0].has(*u):
-            continue
-        sigma, c = _canonical(atom.args[0], u)
-        if sigma in by_sigma:
-            s = by_sigma[sigma]
-            replacements[atom] = abs(c) * s * sigma if atom.func is sp.Abs else sp.sign(c) * s
-    return sp.sympify(expr).xreplace(replacements)
-
-
-def _monomial_denominator(expr: sp.Expr) -> bool:
-    """True when the denominator is a product of powers of symbols (a paper-style form)."""
-    return all(base.is_Symbol or base.is_Number for base in sp.fraction(expr)[1].as_powers_dict())
-
-
-def contact_accelerations(scene, u, *, load: bool) -> list[sp.Expr]:
-    """The parts of f(u) = b + G u + H phi(u) from the scene's contact space, on the manifold:
-    the load b (``load=True``) or the reaction part G u + H phi(u).
-
-    G = W^T M^-1 W (Delassus), H = W^T M^-1 D (friction), b = W^T M^-1 F + h with h_j the
-    part of g_j'' without accelerations; see :mod:`contactsym.mechanism.contact_space`. The linearization
-    needs only the reaction part, so a large load is never derived for it.
-    """
-    space = scene.contact_space
-    log.info(
-        "scene '%s': contact space (%s), adj(M) of the %d x %d mass matrix",
-        scene.name,
-        "load b" if load else f"{scene.k} x {scene.k} Delassus matrix",
-        space.M.rows,
-        space.M.rows,
-    )
-    # positions are put on the manifold by substitution, rates inside the field (they are rational)
-    rate_symbols = {scene.frozen_symbols[sp.diff(q, t)] for q in scene.coordinates}
-    rates = {k: v for k, v in scene.manifold.items() if k in rate_symbols}
-    positions = {k: v for k, v in scene.manifold.items() if k not in rate_symbols}
-
-    def place(expr):
-        return scene.plain(expr).subs(positions)
-
-    M, W = space.M.applyfunc(place), space.W.applyfunc(place)
-    if load:
-        second = {sp.diff(q, t, 2): 0 for q in scene.coordinates}
-        h = sp.Matrix([place(sp.diff(g, t, 2).subs(second)) for g in scene.gaps])
-        (b,) = solve_fraction_free(M, [space.F.applyfunc(place)], W, substitution=rates, offsets=[h])
-        return b
-    return reaction_part(*reaction_factors(scene, u))
-
-
-def reaction_part(M, W, loads, multipliers) -> list[sp.Expr]:
-    """G u + H phi(u) = W^T M^-1 L m(u) from the factors of :func:`reaction_factors`."""
-    columns = solve_fraction_free(M, [loads[:, c] for c in range(loads.cols)], W)
-    return [sp.Add(*[c[i] * w for c, w in zip(columns, multipliers)]) for i in range(W.cols)]
-
-
-def reaction_factors(scene, u) -> tuple[sp.Matrix, sp.Matrix, sp.Matrix, list]:
-    """(M, W, L, m(u)) on the contact manifold: the reaction part of f is W^T M^-1 L m(u), with the
-    columns of L the gap gradients and the friction directions and m(u) = (u, phi(u)). The
-    linearization keeps A = W^T M^-1 L dm/du in these factors (its minors need no division)."""
-    space = scene.contact_space
-    rate_symbols = {scene.frozen_symbols[sp.diff(q, t)] for q in scene.coordinates}
-    positions = {k: v for k, v in scene.manifold.items() if k not in rate_symbols}
-
-    def place(expr):
-        return scene.plain(expr).subs(positions)
-
-    frozen = [term for term in space.friction if term is not None]
-    loads = sp.Matrix.hstack(*[space.W[:, j] for j in range(scene.k)], *[term[0] for term in frozen])
-    to_u = dict(zip(scene.reactions, u))
-    multipliers = [*u] + [scene.freeze(term[1]).subs(to_u) for term in frozen]
-    return space.M.applyfunc(place), space.W.applyfunc(place), loads.applyfunc(place), multipliers
-
-
-@checked
-def solve_piece(f: sp.Matrix, u: tuple, signs: tuple) -> list[tuple]:
-    """Roots of one smooth piece ``f`` of the fast subsystem: a linear solve when f is affine in u.
-
-    Examples
-    --------
-    >>> u, a = sp.symbols("u a", real=True)
-    >>> solve_piece(sp.Matrix([2*u - a]), (u,), (1,))
-    [(a/2,)]
-    """
-    polys = [fj.as_poly(*u) for fj in f]
-    if all(p is not None and p.total_degree() <= 1 for p in polys):
-        A, b = sp.linear_eq_to_matrix(list(f), list(u))
-        det = normalize(A.det(method="berkowitz"))
-        if det == 0:
-            raise SingularJacobianError(
-                f"det A = 0 on the piece with signs {signs}: the equilibria are not isolated and "
-                "f(u) = 0 cannot be solved for u; choose parameters with det A != 0."
-            )
-        adjugate = A.adjugate(method="berkowitz")
-        return [tuple(sp.factor_terms(sp.cancel(normalize(x) / det)) for x in adjugate * b)]
-    try:
-        solutions = sp.solve(list(f), list(u), dict=True)
-    except NotImplementedError:
-        solutions = []
-    if not solutions and _no_real_root(f, u):
-        return []
-    if not solutions:
-        raise ContactsymError(
-            f"sympy found no closed-form root of the piece {list(f)} with signs {signs}; "
-            "solve f(u) = 0 numerically (contactsym.numerics)."
-        )
-    return [tuple(sol[x] for x in u) for sol in solutions if all(x in sol for x in u)]
-
-
-def _no_real_root(f: sp.Matrix, u: tuple) -> bool:
-    """True when f is polynomial in u, SymPy finds all its complex roots and none is real
-    (u^2 + 1 = 0). An empty real solve alone proves nothing: it is also empty for
-    u^5 + u + a, and for other functions solve may return only some roots."""
-    if any(fj.as_poly(*u) is None for fj in f):
-        return False
-    free = [sp.Dummy() for _ in u]
-    try:
-        roots = sp.solve(list(f.xreplace(dict(zip(u, free)))), free, dict=True)
-    except NotImplementedError:
-        return False
-    complete = roots and all(all(z in root for z in free) for root in roots)
-    return bool(complete) and all(any(sp.im(root[z]).is_nonzero for z in free) for root in roots)
 
 
 def _decorated(name: str, taken) -> str:
@@ -408,6 +253,10 @@ class FastSubsystem(LatexReprMixin):
 
     @cached_property
     def switching(self) -> tuple[sp.Expr, ...]:
+        if self.reaction_factors is not None:  # read from m(u): the whole reaction part is not needed
+            found = switching_of_factors(*self.reaction_factors, self.u)
+            if found is not None:
+                return found
         return switching_functions(self._depends_on_u, self.u)
 
     @cached_property

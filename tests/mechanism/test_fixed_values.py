@@ -81,3 +81,12 @@ def test_a_value_outside_a_declared_interval_is_refused():
 def test_a_values_table_names_only_declared_parameters():
     with pytest.raises(SceneFileError, match="'zz' is not a declared parameter"):
         read_scene(ARM + "\n[values]\nzz = 1\n", "arm.toml")
+
+
+def test_a_scene_proved_positive_keeps_its_verdict_without_a_second_check(monkeypatch):
+    from contactsym.mechanism import scene as scene_module
+
+    scene = cs.scene("painleve-rod")
+    assert scene.inertia == "proved"
+    monkeypatch.setattr(scene_module, "check_inertia", lambda s: "checked again")
+    assert scene.with_values({"m": 2}).inertia == "proved"
