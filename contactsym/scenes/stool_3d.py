@@ -9,9 +9,7 @@ that direction; gravity acts at G. The feet are held to the floor (N_j of either
 The robustness of each equilibrium to the law is classified for numbers by
 :func:`contactsym.robustness.classify.decide_robustness` (certificates or witness laws).
 
-The same scene is ``examples/stool-3d.toml`` (built by the scene-file reader). Not registered
-as a built-in scene: its report (k = 3, generic laws) takes minutes in the report's typesetting
-(``benchmarks/spatial.py`` measures it), which ``contactsym report`` of every scene would pay.
+The same scene is ``examples/stool-3d.toml`` (built by the scene-file reader).
 """
 
 from __future__ import annotations

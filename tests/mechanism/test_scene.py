@@ -20,6 +20,7 @@ NAMES = [
     "painleve-rod",
     "two-leg-block",
     "painleve-rod-3d",
+    "stool-3d",
 ]
 
 x, y, z = dynamicsymbols("x y z")
