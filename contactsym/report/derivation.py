@@ -21,8 +21,9 @@ from ..errors import ContactsymError
 from ..mechanism.scene import paper_equations
 from ..printing.latex_output import Formula, formulas, tex
 from ..stages.stability import generic_minors, hurwitz_names, robustness_formulas
+from .plain_text import _escape
 from .summary import conditions
-from .typesetting import WIDTH, _display, _escape, _Named, _tidy, width
+from .typesetting import WIDTH, _display, _Named, _tidy, width
 
 __all__: list[str] = []
 

@@ -32,9 +32,10 @@ from ..scenes import paper_name
 from ..validate import checked_fields, cut, instance_of
 from .derivation import _chain, _section
 from .errata import AGREE, latex_table, text_to_latex
+from .plain_text import _escape
 from .scene_parts import _count_tag, _special_cases
 from .summary import ADVICE, _counts
-from .typesetting import _describe, _display, _escape, _Named
+from .typesetting import _describe, _display, _Named
 
 __all__ = ["Figure", "report_tex"]
 

@@ -1,4 +1,4 @@
-r"""Typesetting for the report: widths of LaTeX mathematics, line breaking, escaping, named long expressions.
+r"""Typesetting for the report: widths of LaTeX mathematics, line breaking, named long expressions.
 
 A displayed formula must fit the page: :func:`width` estimates the printed width of
 LaTeX mathematics; a long equation is broken at the terms of its sums (``split``), a long
@@ -28,7 +28,7 @@ from functools import lru_cache
 import sympy as sp
 
 from ..printing.latex_output import Formula, tex
-from .errata import text_to_latex
+from .plain_text import _note
 
 #: Visible width (in characters of math) of one displayed line, and the most lines one formula may take.
 WIDTH = 78
@@ -130,11 +130,16 @@ def _describe(expr: sp.Expr) -> str:
     if _nodes(expr, DESCRIBE_NODES) > DESCRIBE_NODES:  # expanding it could take minutes: its size as derived
         return f"an expression of more than {DESCRIBE_NODES} nodes in {symbols}"
     numerator, denominator = sp.fraction(sp.together(expr))
-    terms = len(sp.Add.make_args(sp.expand(numerator)))
     kind = "a polynomial" if denominator == 1 else "a rational function, numerator"
+    try:  # expanded in the polynomial ring, not as an expression (the stool's Delta_5: seconds, not minutes)
+        poly = sp.Poly(numerator, *sorted(expr.free_symbols, key=str))
+    except sp.PolynomialError:
+        poly = None
+    if poly is not None and (poly.domain.is_ZZ or poly.domain.is_QQ):  # its terms are those of expand
+        return f"{kind} with {len(poly.terms())} terms of total degree {poly.total_degree()} in {symbols}"
+    terms = len(sp.Add.make_args(sp.expand(numerator)))
     try:
-        degree = sp.Poly(sp.expand(numerator), *sorted(expr.free_symbols, key=str)).total_degree()
-        size = f"{terms} terms of total degree {degree}"
+        size = f"{terms} terms of total degree {sp.Poly(sp.expand(numerator), *sorted(expr.free_symbols, key=str)).total_degree()}"
     except sp.PolynomialError:
         size = f"{terms} terms"
     return f"{kind} with {size} in {symbols}"
@@ -293,59 +298,6 @@ def _display(formula: Formula, named: _Named) -> str:
     if formula.note:
         text += "\n" + _note(formula.note)
     return text
-
-
-def _note(note: str) -> str:
-    return r"\noindent{\footnotesize " + _plain_to_latex(note) + r"}\par"
-
-
-def _plain_to_latex(text: str) -> str:
-    """Notes are ASCII plain text with names like Phi_j, Delta_3, mu: typeset them."""
-    names = {"Phi": "Φ", "Psi": "Ψ", "Delta": "Δ", "alpha": "α", "phi": "φ", "mu": "μ", "eps": "ε", "deg": "°"}
-    for word, symbol in names.items():
-        text = re.sub(rf"\b{word}\b", symbol, text)
-        text = re.sub(rf"\b{word}_", symbol + "_", text)
-    text = text.replace(" °", "°")
-    return text_to_latex(text)
-
-
-_SPECIALS = {
-    "\\": r"\textbackslash{}",
-    "{": r"\{",
-    "}": r"\}",
-    "$": r"\$",
-    "&": r"\&",
-    "#": r"\#",
-    "^": r"\^{}",
-    "_": r"\_",
-    "%": r"\%",
-    "~": r"\~{}",
-    "<": r"\textless{}",
-    ">": r"\textgreater{}",
-    "|": r"\textbar{}",
-}
-
-
-def _escape(text: str) -> str:
-    """Plain text (a name, a message, a path) for LaTeX: specials escaped, other characters through text_to_latex.
-
-    Examples
-    --------
-    >>> print(_escape("a_b & 50% of {x}, mu > 2, μ"))
-    a\\_b \\& 50\\% of \\{x\\}, mu \\textgreater{} 2, $\\mu$
-    """
-    out = []
-    for c in text:
-        if c in _SPECIALS:
-            out.append(_SPECIALS[c])
-        elif ord(c) < 128:
-            out.append(c)
-        else:
-            try:
-                out.append(text_to_latex(c))
-            except ValueError:
-                out.append("?")
-    return "".join(out)
 
 
 #: Past this many nodes an expression is displayed as derived: cancelling it costs more than reading it.
