@@ -145,9 +145,16 @@ def _describe(expr: sp.Expr) -> str:
     return f"{kind} with {size} in {symbols}"
 
 
-@lru_cache(maxsize=4096)
 def _tex(expr) -> str:
     """``tex(expr)``, once per expression: a long formula is printed by several layouts in turn."""
+    try:
+        return _cached_tex(expr)
+    except TypeError:  # a mutable matrix: printed each time
+        return tex(expr)
+
+
+@lru_cache(maxsize=4096)
+def _cached_tex(expr) -> str:
     return tex(expr)
 
 
