@@ -131,12 +131,10 @@ def _describe(expr: sp.Expr) -> str:
         return f"an expression of more than {DESCRIBE_NODES} nodes in {symbols}"
     numerator, denominator = sp.fraction(sp.together(expr))
     kind = "a polynomial" if denominator == 1 else "a rational function, numerator"
-    try:  # expanded in the polynomial ring, not as an expression (the stool's Delta_5: seconds, not minutes)
-        poly = sp.Poly(numerator, *sorted(expr.free_symbols, key=str))
-    except sp.PolynomialError:
-        poly = None
-    if poly is not None and (poly.domain.is_ZZ or poly.domain.is_QQ):  # its terms are those of expand
-        return f"{kind} with {len(poly.terms())} terms of total degree {poly.total_degree()} in {symbols}"
+    poly = _sparse(numerator, sorted(expr.free_symbols, key=str))
+    if poly is not None:  # a polynomial with rational coefficients: its terms are those of expand
+        degree = max((sum(m) for m in poly.monoms()), default=0)
+        return f"{kind} with {len(poly)} terms of total degree {degree} in {symbols}"
     terms = len(sp.Add.make_args(sp.expand(numerator)))
     try:
         size = f"{terms} terms of total degree {sp.Poly(sp.expand(numerator), *sorted(expr.free_symbols, key=str)).total_degree()}"
@@ -156,6 +154,18 @@ def _tex(expr) -> str:
 @lru_cache(maxsize=4096)
 def _cached_tex(expr) -> str:
     return tex(expr)
+
+
+def _sparse(expr: sp.Expr, gens: list):
+    """``expr`` expanded in the sparse polynomial ring QQ[gens] (in C-like time where ``expand`` and the
+    dense ``Poly`` take seconds: the stool's Delta_5, 16414 terms, 1.9 s), or None when it is not such a polynomial."""
+    if not gens:
+        return None
+    try:
+        ring = sp.ring(gens, sp.QQ)[0]
+        return ring(expr)
+    except (sp.polys.polyerrors.PolynomialError, sp.polys.polyerrors.CoercionFailed, ValueError, TypeError):
+        return None
 
 
 def _terms(expr: sp.Expr) -> tuple[str, Iterator[str], str] | None:
