@@ -322,6 +322,9 @@ TIDY_NODES = 3000
 #: Terms times generators of the cancelled numerator up to which ``factor`` is tried (a multivariate
 #: factorization grows steeply with both: 130 terms in 12 symbols took 50 s, 124 in 7 took 1 s).
 TIDY_FACTOR_WORK = 1000
+#: A polynomial of more terms than this, expanded, is displayed as derived: cancelling and factoring
+#: it would not make it fit (the stool's Delta_3, 683 terms: 9 s of cancel, factor_terms and trial division).
+TIDY_TERMS = 300
 #: The sums inside an expression whose factors are tried as divisors are at most this many nodes:
 #: factoring a larger one is the multivariate factorization the trial avoids (the stool's Delta_3,
 #: a sum of four products, 683 nodes: 70 s).
@@ -332,11 +335,15 @@ TRIAL_NODES = 200
 def _tidy(expr):
     """A readable form: the common denominator pulled out, the numerator factored when that is short.
 
-    Cheap rules decide how much work the display gets: a large expression is shown as derived,
+    Cheap rules decide how much work the display gets: a large expression (in nodes, or a polynomial
+    in terms once expanded in the sparse ring) is shown as derived,
     and ``factor`` runs only on a numerator small enough (see ``TIDY_FACTOR_WORK``); otherwise
     the shorter of the derived form and the cancelled one is shown. Cached per expression.
     """
     if _nodes(expr, TIDY_NODES) > TIDY_NODES:
+        return expr
+    expanded = _sparse(expr, sorted(expr.free_symbols, key=str))
+    if expanded is not None and len(expanded) > TIDY_TERMS:  # no cancelled form of it fits the page
         return expr
     cancelled = sp.factor_terms(sp.cancel(expr))
     numerator = sp.fraction(cancelled)[0]

@@ -65,3 +65,14 @@ def test_a_long_expression_is_described_by_its_expanded_size():
     assert _describe(product) == f"a polynomial with {terms} terms of total degree 6 in $x$, $y$, $z$"
     assert _describe(product / (x - z)).startswith(f"a rational function, numerator with {terms} terms")
     assert _describe(sp.sqrt(2) * x + x) == "a polynomial with 2 terms of total degree 1 in $x$"
+
+
+def test_a_polynomial_of_hundreds_of_terms_is_shown_as_derived():
+    from contactsym.report.typesetting import TIDY_TERMS, _tidy
+
+    x = sp.symbols("x_1:9")
+    long = sp.Add(*x) ** 2 * sp.Add(*x[:5]) ** 2 - 3 * sp.Add(*x[3:]) ** 3  # hundreds of terms expanded
+    assert len(sp.Add.make_args(sp.expand(long))) > TIDY_TERMS
+    assert _tidy(long) is long  # not cancelled, expanded or factored for a page it cannot fit
+    short = (x[0] ** 2 - x[1] ** 2) / (x[0] + x[1])
+    assert _tidy(short) == x[0] - x[1]  # a small one is still cancelled
