@@ -90,9 +90,9 @@ def test_report_command_writes_what_the_quick_start_says(tmp_path, monkeypatch, 
 
 
 def test_built_in_scenes_are_the_ones_the_readme_names(capsys):
-    # "the paper's four and three mechanisms beyond it"; the Use example names them all
+    # "the paper's four and five mechanisms beyond it"; the Use example names them all
     paper, beyond = stated(r"the paper's (\w+) and (\w+) mechanisms beyond it").groups()
-    words = {"three": 3, "four": 4}
+    words = {"three": 3, "four": 4, "five": 5}
     block, _ = example("s.fast_subsystem()")
     first = stated(r's = cs.scene\("([\w-]+)"\)\s*# also: ([^\n]*)\n\s*# ([^\n]*)', block)
     named = [first.group(1)] + re.split(r",\s*", (first.group(2) + " " + first.group(3)).strip(" ,"))

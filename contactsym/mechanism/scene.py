@@ -307,7 +307,7 @@ class Scene(SceneStages, LatexReprMixin):
     def gap_accelerations(self) -> tuple[sp.Expr, ...]:
         """g_j'' with the accelerations (1.4) substituted."""
         rates = {sp.diff(q, t, 2): g for q, g in self.accelerations.items()}
-        return tuple(sp.diff(g, t, 2).subs(rates) for g in self.gaps)
+        return tuple(_replaced(sp.diff(g, t, 2), rates) for g in self.gaps)
 
     @cached_property
     def frozen_symbols(self) -> dict:
@@ -337,8 +337,12 @@ class Scene(SceneStages, LatexReprMixin):
     @checked
     def plain(self, expr: sp.Expr) -> sp.Expr:
         """``expr`` with the slow state in plain symbols: q(t) -> q, q'(t) -> qdot (see ``frozen_symbols``)."""
+        expr = sympy_only(expr, "the expression")
+        frozen = expr.xreplace(self.frozen_symbols)  # rates first: xreplace matches q' before entering it
+        if not frozen.has(t):
+            return frozen
         rates = {d: s for d, s in self.frozen_symbols.items() if isinstance(d, sp.Derivative)}
-        return sympy_only(expr, "the expression").subs(rates).subs(self.frozen_symbols)
+        return expr.subs(rates).subs(self.frozen_symbols)  # e.g. a derivative of a product: subs knows how
 
     @cached_property
     def manifold(self) -> dict:
@@ -360,7 +364,7 @@ class Scene(SceneStages, LatexReprMixin):
     @checked
     def freeze(self, expr: sp.Expr) -> sp.Expr:
         """Evaluate on the contact manifold with the slow state frozen (plain symbols)."""
-        return self.plain(expr).subs(self.manifold)
+        return _replaced(self.plain(expr), self.manifold)
 
     # --- presentation -------------------------------------------------------------
 
@@ -401,3 +405,11 @@ class Scene(SceneStages, LatexReprMixin):
 
     def __repr__(self) -> str:
         return f"<Scene '{self.name}': {len(self.coordinates)} coordinates, k = {self.k} contacts>"
+
+
+def _replaced(expr: sp.Basic, substitution: dict) -> sp.Basic:
+    """``expr.subs(substitution)``, by ``xreplace`` when the values hold no key (the same result, in a
+    fraction of the time on large expressions: the stool's contact accelerations 5.7 s -> 0.03 s)."""
+    if any(value.has(*substitution) for value in substitution.values()):
+        return expr.subs(substitution)  # sequential substitution: a value's keys are replaced too
+    return expr.xreplace(substitution)

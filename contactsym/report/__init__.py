@@ -8,8 +8,10 @@ Long expressions are broken across lines at their sums; one that would still tak
 than a few lines is named (``H_1``) and its size given, with the full form in
 ``conditions.json``.
 
-Modules: :mod:`~contactsym.report.typesetting` (widths, line breaking, escaping),
-:mod:`~contactsym.report.document` (the sections and :func:`report_tex`),
+Modules: :mod:`~contactsym.report.typesetting` (widths, line breaking),
+:mod:`~contactsym.report.plain_text` (escaping),
+:mod:`~contactsym.report.derivation` (the derivation chain's sections),
+:mod:`~contactsym.report.document` (the other sections and :func:`report_tex`),
 :mod:`~contactsym.report.summary` (the conditions as data),
 :mod:`~contactsym.report.scene_parts` (what the report knows of the paper's scenes) and
 :mod:`~contactsym.report.build` (the files).

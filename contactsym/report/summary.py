@@ -21,11 +21,11 @@ import sympy as sp
 from ..algebra.reductions import known_sign, quotient_sign
 from ..errors import ContactsymError
 from ..mechanism.scene import Scene, paper_equations
-from ..printing.latex_output import tex
 from ..stages.regions import REGION_NAMES, Region
 from ..stages.stability import UNDECIDED_TEX, hurwitz_names
 from ..validate import cut, instance_of, sign_pattern
 from .scene_parts import _count_tag
+from .typesetting import _tex
 
 __all__ = ["always_positive", "conditions", "summary_text"]
 
@@ -39,7 +39,7 @@ def _counts(scene) -> tuple[dict[str, Region], str]:
 
 
 def _entry(expr, paper=(), note="") -> dict:
-    entry = {"sympy": sp.sstr(expr), "latex": tex(expr)}
+    entry = {"sympy": sp.sstr(expr), "latex": _tex(expr)}  # printed once: the report displays many of them
     if paper:
         entry["paper"] = [f"({number})" for number in paper]
     if note:

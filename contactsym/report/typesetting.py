@@ -1,4 +1,4 @@
-r"""Typesetting for the report: widths of LaTeX mathematics, line breaking, escaping, named long expressions.
+r"""Typesetting for the report: widths of LaTeX mathematics, line breaking, named long expressions.
 
 A displayed formula must fit the page: :func:`width` estimates the printed width of
 LaTeX mathematics; a long equation is broken at the terms of its sums (``split``), a long
@@ -21,13 +21,14 @@ f = x + y
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import lru_cache
 
 import sympy as sp
 
 from ..printing.latex_output import Formula, tex
-from .errata import text_to_latex
+from .plain_text import _note
 
 #: Visible width (in characters of math) of one displayed line, and the most lines one formula may take.
 WIDTH = 78
@@ -129,35 +130,71 @@ def _describe(expr: sp.Expr) -> str:
     if _nodes(expr, DESCRIBE_NODES) > DESCRIBE_NODES:  # expanding it could take minutes: its size as derived
         return f"an expression of more than {DESCRIBE_NODES} nodes in {symbols}"
     numerator, denominator = sp.fraction(sp.together(expr))
-    terms = len(sp.Add.make_args(sp.expand(numerator)))
     kind = "a polynomial" if denominator == 1 else "a rational function, numerator"
+    poly = _sparse(numerator, sorted(expr.free_symbols, key=str))
+    if poly is not None:  # a polynomial with rational coefficients: its terms are those of expand
+        degree = max((sum(m) for m in poly.monoms()), default=0)
+        return f"{kind} with {len(poly)} terms of total degree {degree} in {symbols}"
+    terms = len(sp.Add.make_args(sp.expand(numerator)))
     try:
-        degree = sp.Poly(sp.expand(numerator), *sorted(expr.free_symbols, key=str)).total_degree()
-        size = f"{terms} terms of total degree {degree}"
+        size = f"{terms} terms of total degree {sp.Poly(sp.expand(numerator), *sorted(expr.free_symbols, key=str)).total_degree()}"
     except sp.PolynomialError:
         size = f"{terms} terms"
     return f"{kind} with {size} in {symbols}"
 
 
-def _terms(expr: sp.Expr) -> tuple[str, list[str], str] | None:
-    """(prefix, LaTeX of the terms, suffix) of a sum, a multiple of a sum, or a sum over a denominator."""
+def _tex(expr) -> str:
+    """``tex(expr)``, once per expression: a long formula is printed by several layouts in turn."""
+    try:
+        return _cached_tex(expr)
+    except TypeError:  # a mutable matrix: printed each time
+        return tex(expr)
+
+
+@lru_cache(maxsize=4096)
+def _cached_tex(expr) -> str:
+    return tex(expr)
+
+
+def _sparse(expr: sp.Expr, gens: list):
+    """``expr`` expanded in the sparse polynomial ring QQ[gens] (in C-like time where ``expand`` and the
+    dense ``Poly`` take seconds: the stool's Delta_5, 16414 terms, 1.9 s), or None when it is not such a polynomial."""
+    if not gens:
+        return None
+    try:
+        ring = sp.ring(gens, sp.QQ)[0]
+        return ring(expr)
+    except (sp.polys.polyerrors.PolynomialError, sp.polys.polyerrors.CoercionFailed, ValueError, TypeError):
+        return None
+
+
+def _terms(expr: sp.Expr) -> tuple[str, Iterator[str], str] | None:
+    """(prefix, LaTeX of the terms, suffix) of a sum, a multiple of a sum, or a sum over a denominator.
+
+    The terms are printed as :func:`_fill` asks for them: it stops at the first line too many.
+    """
     if isinstance(expr, sp.Add):
-        return "", [tex(t) for t in expr.as_ordered_terms()], ""
+        return "", map(_tex, expr.as_ordered_terms()), ""
     numerator, denominator = sp.fraction(expr)
     if denominator != 1 and isinstance(sp.expand(numerator), sp.Add):
-        prefix = r"\frac{1}{" + tex(denominator) + r"} \Big("
-        return prefix, [tex(t) for t in sp.expand(numerator).as_ordered_terms()], r"\Big)"
+        prefix = r"\frac{1}{" + _tex(denominator) + r"} \Big("
+        return prefix, map(_tex, sp.expand(numerator).as_ordered_terms()), r"\Big)"
     if isinstance(expr, sp.Mul):
         sums = [f for f in expr.args if isinstance(f, sp.Add)]
         if len(sums) == 1:
             rest = sp.Mul(*[f for f in expr.args if f is not sums[0]])
-            prefix = ("-" if rest == -1 else tex(rest)) + r" \Big("
-            return prefix, [tex(t) for t in sums[0].as_ordered_terms()], r"\Big)"
+            prefix = ("-" if rest == -1 else _tex(rest)) + r" \Big("
+            return prefix, map(_tex, sums[0].as_ordered_terms()), r"\Big)"
     return None
 
 
-def _fill(first: str, terms: list[str], suffix: str, budget: float) -> list[str] | None:
-    """Greedy lines of ``first t1 + t2 ...``; None when they take more than MAX_LINES."""
+def _fill(first: str, terms: Iterable[str], suffix: str, budget: float) -> list[str] | None:
+    """Greedy lines of ``first t1 + t2 ...``; None when they take more than MAX_LINES or a line is too wide.
+
+    Stops at the first line too many or too wide (widths only grow as a line does): a sum of
+    hundreds of terms is not laid out to the end to be refused.
+    """
+    limit = budget + 8
     lines, current = [], first
     for index, term in enumerate(terms):
         joined = term if index == 0 else (f"- {term[1:].lstrip()}" if term.startswith("-") else f"+ {term}")
@@ -167,15 +204,17 @@ def _fill(first: str, terms: list[str], suffix: str, budget: float) -> list[str]
             current = r"\quad" + piece
         else:
             current += piece
+        if len(lines) > MAX_LINES or width(current) > limit:
+            return None
     lines.append(current + " " + suffix if suffix else current)
-    if len(lines) > MAX_LINES or any(width(line) > budget + 8 for line in lines):
+    if len(lines) > MAX_LINES or any(width(line) > limit for line in lines):
         return None
     return lines
 
 
 def _compact(expr, named: _Named, budget: float):
     """``expr`` with its long sums replaced by names (a product keeps its short factors)."""
-    if isinstance(expr, sp.Basic) and width(tex(expr)) <= budget:
+    if isinstance(expr, sp.Basic) and width(_tex(expr)) <= budget:
         return expr
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(lambda e: _compact(e, named, budget / max(expr.cols, 1)))
@@ -200,14 +239,14 @@ def _broken(first: str, expr, last: str, budget: float) -> list[str] | None:
 def _lines(lhs: str, relation: str, expr, named: _Named) -> list[str]:
     """LaTeX lines (for ``split``) of ``lhs relation expr`` that fit the page."""
     head = f"{lhs} &{relation}" if lhs else "&"
-    text = tex(expr) if not isinstance(expr, str) else expr
+    text = _tex(expr) if not isinstance(expr, str) else expr
     if isinstance(expr, str) or width(head + " " + text) <= WIDTH:
         return [f"{head} {text}"]
     lines = _broken("", expr, "", WIDTH - width(lhs))
     if lines is not None:
         return [f"{head} {lines[0]}"] + ["& " + line for line in lines[1:]]
     compacted = _compact(expr, named, WIDTH - width(head) - 4)
-    return [f"{head} {tex(compacted)}"]
+    return [f"{head} {_tex(compacted)}"]
 
 
 def _relation_tex(relational) -> str:
@@ -225,19 +264,19 @@ def _relational_lines(condition, named: _Named) -> list[str]:
     """A long relation broken at the sums of its longer side; its long sums named when that fails."""
     left, right = condition.lhs, condition.rhs
     relation = _relation_tex(condition)
-    if width(tex(left)) >= width(tex(right)):
-        lines = _broken("", left, f" {relation} {tex(right)}", WIDTH)
+    if width(_tex(left)) >= width(_tex(right)):
+        lines = _broken("", left, f" {relation} {_tex(right)}", WIDTH)
     else:
-        lines = _broken(f"{tex(left)} {relation} ", right, "", WIDTH)
+        lines = _broken(f"{_tex(left)} {relation} ", right, "", WIDTH)
     if lines is None:
         budget = WIDTH / 2
-        lines = [f"{tex(_compact(left, named, budget))} {relation} {tex(_compact(right, named, budget))}"]
+        lines = [f"{_tex(_compact(left, named, budget))} {relation} {_tex(_compact(right, named, budget))}"]
     return ["& " + line for line in lines]
 
 
 def _condition_lines(condition, named: _Named) -> list[str]:
     """A Boolean condition as lines, each starting with ``&``: one conjunct (or disjunct) per line when long."""
-    text = tex(condition)
+    text = _tex(condition)
     if width(text) <= WIDTH:
         return [f"& {text}"]
     if isinstance(condition, sp.core.relational.Relational):
@@ -256,7 +295,7 @@ def _condition_lines(condition, named: _Named) -> list[str]:
                 inner[0] = inner[0].replace("& ", f"& {word} ", 1)
             lines += inner
         return lines
-    return [f"& {tex(_compact(condition, named, WIDTH))}"]
+    return [f"& {_tex(_compact(condition, named, WIDTH))}"]
 
 
 def _equation(lines: list[str], tag: str) -> str:
@@ -278,75 +317,33 @@ def _display(formula: Formula, named: _Named) -> str:
     return text
 
 
-def _note(note: str) -> str:
-    return r"\noindent{\footnotesize " + _plain_to_latex(note) + r"}\par"
-
-
-def _plain_to_latex(text: str) -> str:
-    """Notes are ASCII plain text with names like Phi_j, Delta_3, mu: typeset them."""
-    names = {"Phi": "Φ", "Psi": "Ψ", "Delta": "Δ", "alpha": "α", "phi": "φ", "mu": "μ", "eps": "ε", "deg": "°"}
-    for word, symbol in names.items():
-        text = re.sub(rf"\b{word}\b", symbol, text)
-        text = re.sub(rf"\b{word}_", symbol + "_", text)
-    text = text.replace(" °", "°")
-    return text_to_latex(text)
-
-
-_SPECIALS = {
-    "\\": r"\textbackslash{}",
-    "{": r"\{",
-    "}": r"\}",
-    "$": r"\$",
-    "&": r"\&",
-    "#": r"\#",
-    "^": r"\^{}",
-    "_": r"\_",
-    "%": r"\%",
-    "~": r"\~{}",
-    "<": r"\textless{}",
-    ">": r"\textgreater{}",
-    "|": r"\textbar{}",
-}
-
-
-def _escape(text: str) -> str:
-    """Plain text (a name, a message, a path) for LaTeX: specials escaped, other characters through text_to_latex.
-
-    Examples
-    --------
-    >>> print(_escape("a_b & 50% of {x}, mu > 2, μ"))
-    a\\_b \\& 50\\% of \\{x\\}, mu \\textgreater{} 2, $\\mu$
-    """
-    out = []
-    for c in text:
-        if c in _SPECIALS:
-            out.append(_SPECIALS[c])
-        elif ord(c) < 128:
-            out.append(c)
-        else:
-            try:
-                out.append(text_to_latex(c))
-            except ValueError:
-                out.append("?")
-    return "".join(out)
-
-
 #: Past this many nodes an expression is displayed as derived: cancelling it costs more than reading it.
 TIDY_NODES = 3000
 #: Terms times generators of the cancelled numerator up to which ``factor`` is tried (a multivariate
 #: factorization grows steeply with both: 130 terms in 12 symbols took 50 s, 124 in 7 took 1 s).
 TIDY_FACTOR_WORK = 1000
+#: A polynomial of more terms than this, expanded, is displayed as derived: cancelling and factoring
+#: it would not make it fit (the stool's Delta_3, 683 terms: 9 s of cancel, factor_terms and trial division).
+TIDY_TERMS = 300
+#: The sums inside an expression whose factors are tried as divisors are at most this many nodes:
+#: factoring a larger one is the multivariate factorization the trial avoids (the stool's Delta_3,
+#: a sum of four products, 683 nodes: 70 s).
+TRIAL_NODES = 200
 
 
 @lru_cache(maxsize=512)
 def _tidy(expr):
     """A readable form: the common denominator pulled out, the numerator factored when that is short.
 
-    Cheap rules decide how much work the display gets: a large expression is shown as derived,
+    Cheap rules decide how much work the display gets: a large expression (in nodes, or a polynomial
+    in terms once expanded in the sparse ring) is shown as derived,
     and ``factor`` runs only on a numerator small enough (see ``TIDY_FACTOR_WORK``); otherwise
     the shorter of the derived form and the cancelled one is shown. Cached per expression.
     """
     if _nodes(expr, TIDY_NODES) > TIDY_NODES:
+        return expr
+    expanded = _sparse(expr, sorted(expr.free_symbols, key=str))
+    if expanded is not None and len(expanded) > TIDY_TERMS:  # no cancelled form of it fits the page
         return expr
     cancelled = sp.factor_terms(sp.cancel(expr))
     numerator = sp.fraction(cancelled)[0]
@@ -359,9 +356,10 @@ def _trial_factored(expr, numerator, cancelled):
     """``cancelled`` with the factors it shares with the small sums inside ``expr`` divided out (exact
     polynomial division), the rest left whole: what ``factor`` finds when the rest is irreducible,
     without proving that it is (which is where ``factor`` spends its time)."""
+    sums = {sub for sub in sp.preorder_traversal(expr) if sub.is_Add and len(sub.args) <= 12}
     candidates = set()
-    for sub in sp.preorder_traversal(expr):
-        if sub.is_Add and len(sub.args) <= 12 and sub.is_polynomial():
+    for sub in sums:  # each distinct small sum once; a large one (a sum of a few long products) is no candidate
+        if _nodes(sub, TRIAL_NODES) <= TRIAL_NODES and sub.is_polynomial():
             candidates |= {f for f, _ in sp.factor_list(sub)[1] if f.is_Add}
     gens = sorted(numerator.free_symbols, key=sp.default_sort_key)
     if not candidates or not gens:

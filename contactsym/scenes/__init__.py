@@ -23,6 +23,7 @@ _MODULES = {
     "painleve-rod": "painleve_rod",
     "two-leg-block": "two_leg_block",
     "painleve-rod-3d": "painleve_rod_3d",
+    "stool-3d": "stool_3d",
 }
 
 #: The scene that ``contactsym`` shows when no scene is named.
@@ -41,7 +42,7 @@ def scene_names() -> list[str]:
     Examples
     --------
     >>> scene_names()
-    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake', 'double-pendulum-tip', 'painleve-rod', 'two-leg-block', 'painleve-rod-3d']
+    ['sliding-point', 'painleve-klein-rod', 'painleve-klein-guides', 'brake', 'double-pendulum-tip', 'painleve-rod', 'two-leg-block', 'painleve-rod-3d', 'stool-3d']
     """
     return list(_MODULES)
 
@@ -82,7 +83,7 @@ def scene(name: str):
     >>> scene("break")
     Traceback (most recent call last):
     ...
-    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, double-pendulum-tip, painleve-rod, two-leg-block, painleve-rod-3d.
+    contactsym.errors.SceneError: unknown scene 'break'; did you mean 'brake'? Known scenes: sliding-point, painleve-klein-rod, painleve-klein-guides, brake, double-pendulum-tip, painleve-rod, two-leg-block, painleve-rod-3d, stool-3d.
     """
     name = _known(name)
     if name not in _built:

@@ -9,9 +9,7 @@ that direction; gravity acts at G. The feet are held to the floor (N_j of either
 The robustness of each equilibrium to the law is classified for numbers by
 :func:`contactsym.robustness.classify.decide_robustness` (certificates or witness laws).
 
-The same scene is ``examples/stool-3d.toml`` (built by the scene-file reader). Not registered
-as a built-in scene: its report (k = 3, generic laws) takes minutes in the report's typesetting
-(``benchmarks/spatial.py`` measures it), which ``contactsym report`` of every scene would pay.
+The same scene is ``examples/stool-3d.toml`` (built by the scene-file reader).
 """
 
 from __future__ import annotations
@@ -31,8 +29,8 @@ INERTIA = (sp.Rational(2, 5), sp.Rational(1, 2), sp.Rational(7, 10))
 SLIDING = (sp.Rational(3, 5), sp.Rational(4, 5))
 GRAVITY = sp.Rational(981, 100)
 
-#: The report's region maps: friction against the height of the centre of mass.
-PLAN = FigurePlan("mu", "h", (0.0, 2.0), (0.1, 2.0), {"mu": 0.5, "h": 0.75})
+#: The report's region maps: friction against the height of the centre of mass, every foot sliding forward (s_j = 1).
+PLAN = FigurePlan("mu", "h", (0.0, 2.0), (0.1, 2.0), {"mu": 0.5, "h": 0.75, "s_1": 1, "s_2": 1, "s_3": 1})
 
 
 def build() -> Scene:

@@ -242,10 +242,24 @@ def _truth(condition, point):
 SCENES = {name: cs.scene(name) for name in cs.scene_names()}
 
 
-@pytest.mark.parametrize("name", cs.scene_names())
+#: Scenes renamed once, in one fixed order, not in hypothesis's two: each renaming derives the
+#: stability again (the stool, k = 3: ~6 s CPU).
+ONCE = {"stool-3d"}
+
+
+@pytest.mark.parametrize("name", [name for name in cs.scene_names() if name not in ONCE])
 @settings(max_examples=2, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
 @given(order=st.permutations(TRICKY + OTHER))
 def test_renaming_every_symbol_flips_no_verdict(name, order):
+    _check_renaming(name, order)
+
+
+@pytest.mark.parametrize("name", sorted(ONCE))
+def test_renaming_every_symbol_once_flips_no_verdict(name):
+    _check_renaming(name, list(reversed(TRICKY)) + OTHER)  # the pipeline's own names taken first
+
+
+def _check_renaming(name, order):
     scene = SCENES[name]
     other, back = renamed(scene, order)
     st0, st1 = scene.stability(), other.stability()

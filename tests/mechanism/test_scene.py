@@ -20,6 +20,7 @@ NAMES = [
     "painleve-rod",
     "two-leg-block",
     "painleve-rod-3d",
+    "stool-3d",
 ]
 
 x, y, z = dynamicsymbols("x y z")
@@ -432,3 +433,29 @@ def test_a_scene_pays_only_for_what_it_asks():
     assert disc.sign_patterns() == [(1, 1)]  # unilateral pads: the only pattern
     assert disc.linearization().sign_values == (1, 1)  # no sign symbols to carry
     assert disc.equilibria().patterns == [(1, 1)]
+
+
+def test_plain_freezes_by_replacement_as_subs_did_and_falls_back_to_subs():
+    s = point_on_line()
+    rates = {d: v for d, v in s.frozen_symbols.items() if isinstance(d, sp.Derivative)}
+
+    def by_subs(e):  # the substitution plain stands for, done the slow way
+        return e.subs(rates).subs(s.frozen_symbols)
+
+    ordinary = X * x.diff(t) ** 2 + sp.sin(y) * y.diff(t) - mu * sp.Abs(N) * x
+    assert s.plain(ordinary) == by_subs(ordinary) and not s.plain(ordinary).has(t)
+    compound = sp.Derivative(x * y, t, evaluate=False) + x  # a derivative xreplace cannot enter
+    assert s.plain(compound) == by_subs(compound)
+    assert s.freeze(ordinary) == by_subs(ordinary).subs(s.manifold)
+
+
+def test_the_report_derives_only_the_slow_part_of_the_regularization():
+    from contactsym.report.derivation import _chain
+    from contactsym.report.typesetting import _Named
+
+    s = point_on_line(name="own")
+    text = "\n".join(_chain(s, _Named()))
+    regularized = s.regularized()
+    assert "Y" not in vars(regularized) and "X" in vars(regularized)  # Y (cached when derived) never was
+    assert all(f.body in text or f.lhs in text for f in regularized.slow_formulas())
+    assert len(regularized.formulas()) == len(regularized.slow_formulas()) + 2 * s.k

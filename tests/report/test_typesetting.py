@@ -18,3 +18,61 @@ def test_long_expressions_are_broken_or_named():
     named = _Named()
     shown = _display(Formula("g", "", sp.Eq(huge * (x[0] - 1), 0), "", ()), named)
     assert "H_{1}" in shown and len(named.items) == 1 and named.items[0][1] == huge
+
+
+def test_line_filling_stops_at_the_first_line_too_many():
+    from contactsym.report.typesetting import MAX_LINES, _fill
+
+    x = sp.symbols("x_1:400")
+    printed = []
+
+    def terms():
+        for s in x:
+            printed.append(s)
+            yield f"{s}^{{2}}"
+
+    assert _fill("", terms(), "", WIDTH) is None  # 399 terms: far more than MAX_LINES lines
+    assert 0 < len(printed) < 30 * (MAX_LINES + 1)  # stopped after about MAX_LINES + 1 lines
+    few = [f"{s}^{{2}}" for s in x[:30]]
+    lines = _fill("", iter(few), "", WIDTH)
+    assert lines is not None and "".join(lines).count("^{2}") == 30  # a sum that fits: every term placed
+
+
+def test_the_trial_factors_only_small_sums(monkeypatch):
+    from contactsym.report import typesetting
+
+    a, b, c, d = sp.symbols("a b c d")
+    p1, p2 = sp.expand((a + b + 1) ** 3 * (c - d)), sp.expand((a - c + 2) ** 3 * (b + d))
+    expr = p1 * p2 - (a + b + 1) * (a - c + 2) * p1 + 3 * p2 * (c - d)  # a sum of three long products
+    factored = []
+    real = sp.factor_list
+    monkeypatch.setattr(typesetting.sp, "factor_list", lambda e: factored.append(e) or real(e))
+    numerator = sp.expand(expr)
+    shown = typesetting._trial_factored(expr, numerator, sp.factor_terms(numerator))
+    assert factored and all(typesetting._nodes(e, 10**4) <= typesetting.TRIAL_NODES for e in factored)
+    assert expr not in factored
+    assert sp.expand(shown - expr) == 0  # the same polynomial, its common factors divided out
+    common = {f for f, _ in sp.factor_list(expr)[1] if sp.total_degree(f) == 1}  # found by factor, for the test
+    assert common == {c - d, a - c + 2} and common <= set(sp.Mul.make_args(shown))
+
+
+def test_a_long_expression_is_described_by_its_expanded_size():
+    from contactsym.report.typesetting import _describe
+
+    x, y, z = sp.symbols("x y z")
+    product = (x + y + z + 1) ** 4 * (x - 2 * y) - 3 * (x * y - z) ** 3  # expanded by Poly, not by expand
+    terms = len(sp.Add.make_args(sp.expand(product)))  # the count, independently
+    assert _describe(product) == f"a polynomial with {terms} terms of total degree 6 in $x$, $y$, $z$"
+    assert _describe(product / (x - z)).startswith(f"a rational function, numerator with {terms} terms")
+    assert _describe(sp.sqrt(2) * x + x) == "a polynomial with 2 terms of total degree 1 in $x$"
+
+
+def test_a_polynomial_of_hundreds_of_terms_is_shown_as_derived():
+    from contactsym.report.typesetting import TIDY_TERMS, _tidy
+
+    x = sp.symbols("x_1:11")
+    long = sp.Add(*x) ** 2 * sp.Add(*x[:5]) ** 2 - 3 * sp.Add(*x[3:]) ** 3  # hundreds of terms expanded
+    assert len(sp.Add.make_args(sp.expand(long))) > TIDY_TERMS
+    assert _tidy(long) is long  # not cancelled, expanded or factored for a page it cannot fit
+    short = (x[0] ** 2 - x[1] ** 2) / (x[0] + x[1])
+    assert _tidy(short) == x[0] - x[1]  # a small one is still cancelled

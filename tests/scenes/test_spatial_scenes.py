@@ -4,8 +4,6 @@ friction against the same derivation and the planar 4/3, and the stool's robustn
 
 from __future__ import annotations
 
-from functools import lru_cache
-
 import numpy as np
 import pytest
 import sympy as sp
@@ -101,9 +99,8 @@ def test_rod_critical_friction_is_newton_eulers_and_the_planar_four_thirds():
 # --- the stool ----------------------------------------------------------------------------------
 
 
-@lru_cache(maxsize=1)
 def _stool():
-    return stool_3d.build()
+    return cs.scene("stool-3d")  # built once, shared with the tests over every built-in scene
 
 
 def _stool_newton_euler(v):

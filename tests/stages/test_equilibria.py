@@ -41,8 +41,13 @@ def test_each_branch_solves_its_piece_exactly(name):
     for branch in s.equilibria():
         at = dict(zip(fast.u, branch.u_star))
         residual = fast.piece(branch.signs).subs(at)
-        assert residual.applyfunc(lambda e: sp.simplify(sp.cancel(e))) == sp.zeros(s.k, 1), branch.signs
+        # simplify only what cancel leaves (the stool's eight branches: 3 s of simplify on zeros)
+        assert residual.applyfunc(lambda e: _zeroed(sp.cancel(e))) == sp.zeros(s.k, 1), branch.signs
         assert not any(value.has(*fast.u) for value in branch.u_star)
+
+
+def _zeroed(expr):
+    return expr if expr == 0 else sp.simplify(expr)
 
 
 def test_sliding_point_reaction_balances_the_load():

@@ -66,7 +66,18 @@ def test_example_files_give_the_built_in_results_exactly(name):
     from_file = load_scene(EXAMPLES / f"{name}.toml")
     assert from_file is not built_in and from_file.name == f"{name}-file"
     assert _inputs(from_file) == _inputs(built_in)
-    assert _conditions(from_file) == _conditions(built_in)
+    if built_in.k >= 3:  # the same contact space derives the same stages (deriving them again: ~9 s CPU)
+        space, own = built_in.contact_space, from_file.contact_space
+        assert (own.M, own.F, own.W, own.friction, own.reactions) == (
+            space.M,
+            space.F,
+            space.W,
+            space.friction,
+            space.reactions,
+        )
+        assert from_file.manifold == built_in.manifold
+    else:
+        assert _conditions(from_file) == _conditions(built_in)
 
 
 def test_guide_walkthrough_file_is_the_example_and_shows_painleves_bound():
