@@ -33,6 +33,10 @@ GRAVITY = sp.Rational(981, 100)
 PLAN = FigurePlan("mu", "h", (0.0, 2.0), (0.1, 2.0), {"mu": 0.5, "h": 0.75, "s_1": 1, "s_2": 1, "s_3": 1})
 
 
+#: What ``contactsym list`` prints for the built-in scene (read without building it).
+DESCRIPTION = "a three-legged stool sliding on a rough floor"
+
+
 def build() -> Scene:
     """The stool (see the module's documentation).
 
@@ -73,5 +77,5 @@ def build() -> Scene:
         at={theta: 0, phi: 0, psi: 0},  # standing level
         name="stool-3d",
         figure_plan=PLAN,
-        description="a three-legged stool sliding on a rough floor",
+        description=DESCRIPTION,
     )
