@@ -121,7 +121,10 @@ def adjugate_and_det_in_field(field, M: sp.Matrix):
             det.set_ring(field.ring)
         )
     entries = [[field.element(x) for x in row] for row in M.tolist()]
-    return adjugate_and_det(entries, field.reduce)
+    adj, det = adjugate_and_det(entries, field.reduce)
+    # a constant may come back as a Python number (M = [[sin^2/12 + cos^2/12]] reduces to 1/12):
+    # every caller reads .numer and .denom, so each entry is made an element of the field
+    return [[field.field(x) for x in row] for row in adj], field.field(det)
 
 
 @checked

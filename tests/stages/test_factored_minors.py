@@ -125,3 +125,19 @@ def test_the_positive_multiple_needs_the_sign_of_det_m_and_polynomial_factors():
     assert positive_multiple((sp.Matrix([[1 / x, 0], [0, 1]]), W, V)) is None
     scaled, _, numeric = positive_multiple((2 * sp.eye(2), sp.eye(2), 4 * sp.eye(2)))
     assert numeric and scaled == 8 * sp.eye(2)
+
+
+def test_a_mass_matrix_constant_on_the_circle_gives_field_elements():
+    """M = [[sin^2/12 + cos^2/12]] is 1/12 in the field; its adjugate came back a Python int and
+    product_of failed (a numeric one-link chain, found with --hypothesis-seed=22)."""
+    from contactsym.stages.minors import product_of
+
+    mu = sp.Symbol("mu")
+    M = sp.Matrix([[sp.sin(q1) ** 2 / 12 + sp.cos(q1) ** 2 / 12]])
+    W, V = sp.Matrix([[sp.sin(q1) / 3]]), sp.Matrix([[mu * sp.cos(q1) / 3 + sp.sin(q1) / 3]])
+    A = product_of(M, W, V)
+    rng = random.Random(5)
+    for _ in range(5):
+        point = {q1: rng.uniform(0, 3), mu: rng.uniform(0, 2)}
+        direct = float((W.T * M.inv() * V)[0, 0].subs(point))
+        assert abs(float(A[0, 0].subs(point)) - direct) < 1e-12 * (1 + abs(direct))
