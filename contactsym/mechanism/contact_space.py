@@ -26,7 +26,8 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import sympy as sp
-from sympy.physics.vector import Point, ReferenceFrame, Vector
+from sympy.physics.mechanics import LagrangesMethod
+from sympy.physics.vector import Point, Vector
 from sympy.polys.matrices import DomainMatrix
 
 from ..algebra.canonical_form import TrigField
@@ -39,7 +40,6 @@ __all__ = [
     "ContactSpace",
     "contact_space",
     "lagrangian_accelerations",
-    "lagranges_equations",
     "mass_determinant",
     "mass_determinant_is_zero",
     "t",
@@ -242,7 +242,11 @@ def contact_space(lagrangian, coordinates, contacts, loads=(), frame=None) -> Co
     """
     coordinates = list(coordinates)
     friction = _friction_terms(contacts, frame, coordinates)
-    M, forcing = lagranges_equations(lagrangian, coordinates, loads, frame)
+    # sympy.physics.mechanics forms Lagrange's equations (a plain-symbol rewrite halved this step's ~1-2 s
+    # on the four-link arm, not worth a second implementation of the mechanics)
+    method = LagrangesMethod(lagrangian, coordinates, forcelist=list(loads) or None, frame=frame)
+    method.form_lagranges_equations()
+    M, forcing = method.mass_matrix, method.forcing
     _check_mass_matrix(M, coordinates)
     columns = []
     for contact in contacts:
@@ -253,48 +257,6 @@ def contact_space(lagrangian, coordinates, contacts, loads=(), frame=None) -> Co
     W = sp.Matrix.hstack(*columns)
     reactions = tuple(c.reaction for c in contacts)
     return ContactSpace(tuple(coordinates), M, forcing, W, tuple(friction), reactions)
-
-
-def lagranges_equations(lagrangian, coordinates, loads=(), frame=None) -> tuple[sp.Matrix, sp.Matrix]:
-    """(M, F) of Lagrange's equations M q'' = F, as ``LagrangesMethod``'s mass matrix and forcing.
-
-    d/dt dL/dq' - dL/dq = Q with p = dL/dq': M = dp/dq' and F = dL/dq - (dp/dq) q' - dp/dt + Q,
-    differentiated with the coordinates and rates as plain symbols (about half the time of
-    differentiating the functions q(t) and Derivative objects; the same M, an equal F). Q, the
-    generalized loads, is sum (partial velocity) . (force or torque) over ``loads``.
-
-    Examples
-    --------
-    >>> from sympy.physics.mechanics import dynamicsymbols
-    >>> y = dynamicsymbols("y")
-    >>> m, g = sp.symbols("m g", positive=True)
-    >>> lagranges_equations(m * y.diff(t)**2 / 2 - m * g * y, [y])
-    (Matrix([[m]]), Matrix([[-g*m]]))
-    """
-    rates = [sp.diff(q, t) for q in coordinates]
-    q = [sp.Dummy(f"q{i}", **x.assumptions0) for i, x in enumerate(coordinates)]
-    v = [sp.Dummy(f"v{i}", **x.assumptions0) for i, x in enumerate(coordinates)]
-    back = {**dict(zip(v, rates)), **dict(zip(q, coordinates))}
-    L = sp.sympify(lagrangian).xreplace({**dict(zip(rates, v)), **dict(zip(coordinates, q))})  # rates first
-    n = len(coordinates)
-    p = [L.diff(x) for x in v]
-    M = sp.Matrix(n, n, lambda i, j: p[i].diff(v[j]))
-    F = [L.diff(q[i]) - sp.Add(*[p[i].diff(q[j]) * v[j] for j in range(n)]) - p[i].diff(t) for i in range(n)]
-    forcing = sp.Matrix(F).xreplace(back) + _generalized_loads(loads, frame, rates)
-    return M.xreplace(back), forcing
-
-
-def _generalized_loads(loads, frame, rates) -> sp.Matrix:
-    """Q_i = sum over loads of (partial velocity of the point or frame along q_i') . (force or torque)."""
-    Q = sp.zeros(len(rates), 1)
-    for where, load in loads:
-        if load == 0:
-            continue
-        if frame is None:
-            raise SceneError("loads need frame=<the inertial ReferenceFrame> to find their partial velocities.")
-        velocity = where.ang_vel_in(frame) if isinstance(where, ReferenceFrame) else where.vel(frame)
-        Q += sp.Matrix([velocity.diff(rate, frame).dot(load) for rate in rates])
-    return Q
 
 
 @checked(

@@ -558,30 +558,3 @@ def test_a_chain_computes_one_symbolic_adjugate_of_its_mass_matrix(monkeypatch):
     scene.fast_subsystem()
     assert scene.positive_expressions
     assert sizes == [2]
-
-
-def test_lagranges_equations_agree_with_sympys_lagranges_method_with_loads():
-    from sympy.physics.mechanics import LagrangesMethod, Particle, Point, ReferenceFrame, dynamicsymbols
-    from sympy.physics.mechanics import Lagrangian as lagrangian_of
-
-    from contactsym.mechanism.contact_space import lagranges_equations
-
-    q1, q2 = dynamicsymbols("q1 q2")
-    m, l, g, F, T = sp.symbols("m l g F T", positive=True)
-    N, A = ReferenceFrame("N"), ReferenceFrame("A")
-    A.orient_axis(N, N.z, q2)
-    O = Point("O")
-    O.set_vel(N, 0)
-    P = O.locatenew("P", q1 * N.x)
-    P.set_vel(N, q1.diff() * N.x)
-    Q = P.locatenew("Q", l * A.x)
-    Q.v2pt_theory(P, N, A)
-    bob = Particle("bob", Q, m)
-    bob.potential_energy = m * g * Q.pos_from(O).dot(N.y)
-    L = lagrangian_of(N, Particle("cart", P, m), bob)
-    loads = [(P, F * N.x), (A, T * N.z)]
-    method = LagrangesMethod(L, [q1, q2], forcelist=loads, frame=N)
-    method.form_lagranges_equations()
-    M, forcing = lagranges_equations(L, [q1, q2], loads, N)
-    assert M == method.mass_matrix
-    assert (forcing - method.forcing).applyfunc(sp.expand) == sp.zeros(2, 1)
