@@ -36,6 +36,8 @@ def _stop_quietly(signum, frame):
 
 
 _IGNORED = signal.getsignal(signal.SIGINT) == signal.SIG_IGN  # e.g. started in the background by a shell: keep it so
+
+
 def _ignore_interrupts() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 

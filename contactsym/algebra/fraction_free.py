@@ -16,7 +16,14 @@ from sympy.physics.mechanics import dynamicsymbols
 from ..arguments import checked, require
 from .canonical_form import TrigField
 
-__all__ = ["adjugate_and_det", "adjugate_and_det_in_field", "polynomial_adjugate", "solve_fraction_free", "t"]
+__all__ = [
+    "adjugate_and_det",
+    "adjugate_and_det_in_field",
+    "polynomial_adjugate",
+    "solve_fraction_free",
+    "t",
+    "value_at",
+]
 
 #: The time t of ``sympy.physics.mechanics`` (coordinates are functions q(t)).
 #:
@@ -144,3 +151,30 @@ def polynomial_adjugate(M: sp.ImmutableMatrix):
     if any(x.denom != 1 for row in entries for x in row):
         return None
     return adjugate_and_det([[x.numer for x in row] for row in entries], field.reduce_poly)
+
+
+def value_at(value, point):
+    """A field element (a ``FracElement``) at a point of rationals, one per generator, term by term
+    (no ring per generator); raises ZeroDivisionError at a pole.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from contactsym.algebra import TrigField
+    >>> a, b = sp.symbols("a b")
+    >>> K = TrigField([a, b])
+    >>> value_at(K.element((a**2 + 1) / b), [sp.QQ(1, 2), sp.QQ(5)]) == sp.Rational(1, 4)
+    True
+    """
+    return _polynomial_at(value.numer, point) / _polynomial_at(value.denom, point)
+
+
+def _polynomial_at(poly, point):
+    total = sp.QQ(0)
+    for monomial, coefficient in poly.terms():
+        term = sp.QQ(coefficient)
+        for x, e in zip(point, monomial):
+            if e:
+                term *= x**e
+        total += term
+    return total

@@ -15,7 +15,7 @@ from sympy.polys.matrices import DomainMatrix
 from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
 
 from ..algebra.canonical_form import TrigField
-from ..algebra.fraction_free import solve_fraction_free, t
+from ..algebra.fraction_free import solve_fraction_free, t, value_at
 from .pieces import switching_functions
 
 __all__ = [
@@ -122,23 +122,6 @@ def rational_point(field: TrigField) -> list:
         x = sp.QQ(c + 1, c + 5)
         point[c], point[s] = (1 - x**2) / (1 + x**2), 2 * x / (1 + x**2)
     return point
-
-
-def value_at(value, point):
-    """A field element at a point of rationals (term by term, no ring per generator); raises
-    ZeroDivisionError at a pole."""
-    return _polynomial_at(value.numer, point) / _polynomial_at(value.denom, point)
-
-
-def _polynomial_at(poly, point):
-    total = sp.QQ(0)
-    for monomial, coefficient in poly.terms():
-        term = sp.QQ(coefficient)
-        for x, e in zip(point, monomial):
-            if e:
-                term *= x**e
-        total += term
-    return total
 
 
 def switching_of_factors(M, W, loads, multipliers, u) -> tuple | None:
