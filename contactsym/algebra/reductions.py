@@ -14,7 +14,6 @@ Below :mod:`contactsym.algebra.canonical_form`, which builds its normal form on 
 
 from __future__ import annotations
 
-from fractions import Fraction
 from functools import lru_cache
 
 import sympy as sp
@@ -24,6 +23,7 @@ from ..arguments import between, checked
 from ..errors import SignPatternError
 from ..parse import sympy_only
 from .fourier import _fourier_terms
+from .sign_bounds import as_fraction, group_ranges, plain_term_range, ranges_sign
 
 __all__ = ["PaperSymbol", "SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "known_sign", "quotient_sign"]
 
@@ -344,67 +344,10 @@ def _dominated_sign(expr: sp.Expr, positive: tuple, depth: int) -> int | None:
             for (k, rest), (a, b) in _fourier_terms(poly, pairs).items()
         ]
     else:
-        terms = [(monom, _fraction(c), 0) for monom, c in poly.terms()]
-    sign = _groups_sign(_group(terms, bounded), scale, real)
+        terms = [(monom, as_fraction(c), 0) for monom, c in poly.terms()]
+    sign = ranges_sign(group_ranges(terms, bounded), scale, real)
     if sign is None and pairs:  # the monomials themselves, sin and cos in [0, 1] where declared positive
         unit = {i for i in trig if _assumed_sign(gens[i], positive) == 1}
-        terms = [_plain_term(monom, _fraction(c), trig, unit) for monom, c in poly.terms()]
-        sign = _groups_sign(_group(terms, bounded), scale, real)
+        terms = [plain_term_range(monom, as_fraction(c), trig, unit) for monom, c in poly.terms()]
+        sign = ranges_sign(group_ranges(terms, bounded), scale, real)
     return sign
-
-
-def _fraction(c) -> Fraction:
-    return Fraction(int(c.numerator), int(c.denominator))
-
-
-def _plain_term(monom: tuple, coeff: Fraction, trig: list, unit: set) -> tuple:
-    """(rest, centre, spread): the monomial's range is centre -+ spread, with |sin|, |cos| <= 1 and
-    sin, cos in [0, 1] where declared positive (an even power, or only such factors: in [0, 1])."""
-    rest = tuple(0 if i in trig else e for i, e in enumerate(monom))
-    powers = [(i, monom[i]) for i in trig if monom[i]]
-    if not powers:
-        return rest, coeff, 0
-    if all(e % 2 == 0 or i in unit for i, e in powers):
-        return rest, coeff / 2, abs(coeff) / 2
-    return rest, 0, abs(coeff)
-
-
-def _group(terms, bounded: set) -> dict:
-    """{monomial of the other symbols: [centre, spread]}; an odd power of a sign symbol makes a term symmetric."""
-    groups: dict = {}
-    for rest, centre, spread in terms:
-        centre, spread = Fraction(centre), Fraction(spread)
-        if any(rest[i] % 2 for i in bounded):
-            centre, spread = Fraction(0), abs(centre) + spread
-        key = tuple(0 if i in bounded else e for i, e in enumerate(rest))
-        entry = groups.setdefault(key, [Fraction(0), Fraction(0)])
-        entry[0] += centre
-        entry[1] += spread
-    return groups
-
-
-def _groups_sign(groups: dict, scale: dict, real: dict) -> int | None:
-    """+1 (-1) when each group's monomial times its range is >= 0 (<= 0), one of them strictly."""
-    for target in (1, -1):
-        strict, holds = False, True
-        for key, (centre, spread) in groups.items():
-            if centre == spread == 0:
-                continue
-            sign, nonzero = 1, True
-            for i, e in enumerate(key):
-                if e == 0:
-                    continue
-                if scale.get(i) is not None:
-                    sign *= scale[i] ** (e % 2)
-                elif e % 2 == 0 and real[i]:
-                    nonzero = False  # an even power of a real symbol: >= 0, possibly 0
-                else:
-                    holds = False
-            low = sign * target * centre - spread
-            if not holds or low < 0:
-                holds = False
-                break
-            strict = strict or (low > 0 and nonzero)
-        if holds and strict:
-            return target
-    return None
