@@ -16,14 +16,14 @@ and the signs by ``s^2 = 1``; nothing else ties them. :func:`canonical` uses exa
    factor sin q, cos q, 1 +- cos q, 1 +- sin q of Q'' modulo the ideal (1 +- cos q becomes
    sin^2 q, 1 +- sin q cos^2 q, P times the conjugate), and sin q, cos q are cancelled from P
    where they divide P modulo the ideal (``_settled``); constants are fixed (integer, coprime
-   contents, Q's leading coefficient > 0). A result presented in multiple angles is read once
-   more, until it reads the same.
+   contents, Q's leading coefficient > 0). Where step 5 was skipped, a result presented in
+   multiple angles is read once more, until it reads the same.
 
 What is guaranteed, and why. Step 5 makes (P', Q') a function of the value of the fraction (as a
 rational function of the parameters, the signs and the angles, with sin^2 + cos^2 = 1 and
 s^2 = 1), and steps 6 and the presentation are functions of (P', Q'). So two inputs with the same
 value give the same output, and :func:`canonical` is idempotent (its output has the input's
-value, so it reads back to itself). Both are tested as properties on random fractions: equal
+value, so it reads back to itself: no second reading is needed where step 5 ran). Both are tested as properties on random fractions: equal
 inputs written differently (multiple angles expanded, the identities applied, a common factor
 multiplied in and rewritten, partial fractions), and the output read again. Where no output is
 guaranteed: when P or Q has more than :data:`contactsym.algebra.half_angle.MAX_TERMS` terms step
@@ -57,7 +57,7 @@ import sympy as sp
 from ..arguments import checked
 from ..deprecation import deprecated_names
 from ..parse import sympy_only
-from .half_angle import cancelled_on_the_circle
+from .half_angle import cancelled_on_the_circle, circle_form
 from .reductions import reduce_signs, reduce_trig
 from .trig_field import (
     TrigField,
@@ -96,11 +96,15 @@ def canonical(expr: sp.Expr) -> sp.Expr:
         # a polynomial over monomial denominators in sin q, cos q of plain angles: expanding and
         # reducing term by term gives the same normal form, without building a fraction field
         return reduce_signs(reduce_trig(sp.expand(expr)))
-    result = _settled(cancelled_on_the_circle(to_fraction(expr))).as_expr()
-    if not any(_integer_combination(f.args[0]) for f in result.atoms(sp.sin, sp.cos)):
-        return result  # presented as reduced polynomials: re-reading gives the same P and Q
-    # a Fourier presentation (cos(2 q), cos(q1 - q2)) re-read expands to other polynomials, whose gcd
-    # can see a factor that cancels only modulo sin^2 + cos^2 = 1: read it again until nothing changes
+    cancelled, unique = circle_form(to_fraction(expr))
+    result = _settled(cancelled).as_expr()
+    if unique or not any(_integer_combination(f.args[0]) for f in result.atoms(sp.sin, sp.cos)):
+        # unique: step 5 made (P', Q') a function of the value, so a re-read (same value) gives the
+        # same P', Q' and the same presentation; reduced polynomials re-read as the same P and Q
+        return result
+    # step 5 skipped (a sign symbol in Q, or too many terms) and a Fourier presentation (cos(2 q),
+    # cos(q1 - q2)): re-read, it expands to other polynomials, whose gcd can see a factor that
+    # cancels only modulo sin^2 + cos^2 = 1: read it again until nothing changes
     seen = [result]
     for _ in range(_PASSES):
         again = _settled(cancelled_on_the_circle(to_fraction(result))).as_expr()

@@ -39,7 +39,7 @@ from sympy.polys.rings import PolyRing
 
 from .trig_field import TrigFraction, _integral, _reduce
 
-__all__ = ["cancelled_on_the_circle"]
+__all__ = ["cancelled_on_the_circle", "circle_form"]
 
 #: Above this many terms in P or Q the step is skipped (the form is still correct; the module
 #: docstring of :mod:`contactsym.algebra.canonical_form` says what is then not guaranteed).
@@ -55,13 +55,35 @@ def cancelled_on_the_circle(fraction: TrigFraction) -> TrigFraction:
     ``fraction`` itself when Q has no sine or cosine (then no angle is left) or when P or Q has
     more than :data:`MAX_TERMS` terms.
     """
+    return circle_form(fraction)[0]
+
+
+def circle_form(fraction: TrigFraction) -> tuple[TrigFraction, bool]:
+    """:func:`cancelled_on_the_circle` and whether its result is the unique cancelled form.
+
+    True when the result's (P', Q') is, up to a constant, a function of the fraction's value:
+    Q had no sign symbol and P, Q at most :data:`MAX_TERMS` terms (step 5 ran), or P = 0, or Q
+    is free of the angles (P/Q is then cancelled by the polynomial gcd of the reduced parts,
+    which is unique in a polynomial ring over the other generators and the reduced angles).
+    False where step 5 was skipped and only the polynomial gcd of step 4 cancelled.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from contactsym.algebra.trig_field import to_fraction
+    >>> a, s = sp.Symbol("a", positive=True), sp.Symbol("s")
+    >>> circle_form(to_fraction((1 + sp.cos(a)) / sp.sin(a)**2))[1]
+    True
+    """
     numer, denom, pairs, signs = fraction.numer, fraction.denom, fraction.pairs, fraction.signs
     ring = numer.ring
     trig = [(c, s) for c, s in pairs if denom.degree(c) > 0 or denom.degree(s) > 0]
-    if not numer or not trig or any(i for i in signs if denom.degree(i) > 0):
-        return fraction
+    if any(i for i in signs if denom.degree(i) > 0):
+        return fraction, False
+    if not numer or not trig:
+        return fraction, True
     if len(numer) > MAX_TERMS or len(denom) > MAX_TERMS:
-        return fraction
+        return fraction, False
     kept = [i for i in range(ring.ngens) if all(i not in pair for pair in trig)]
     half = PolyRing([ring.symbols[i] for i in kept] + [sp.Dummy(f"t{n}") for n in range(len(trig))], ring.domain)
     ts = half.gens[len(kept) :]
@@ -77,11 +99,11 @@ def cancelled_on_the_circle(fraction: TrigFraction) -> TrigFraction:
     powers = [(max(N.degree(t), D.degree(t)) + 1) // 2 for t in ts]
     if common.is_ground and powers == [max(p, q) for p, q in zip(degrees_p, degrees_q)]:
         # mapped back with these powers, N and D are P and Q again (each is the normal form of its own value)
-        return fraction
+        return fraction, True
     numer = _reduce(_from_half(N, trig, kept, ring, powers), pairs, signs)
     denom = _reduce(_from_half(D, trig, kept, ring, powers), pairs, signs)
     numer, denom = _integral(numer, denom)
-    return TrigFraction(numer, denom, pairs, signs)
+    return TrigFraction(numer, denom, pairs, signs), True
 
 
 def _degree(poly, c: int, s: int) -> int:

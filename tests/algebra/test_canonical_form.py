@@ -238,3 +238,18 @@ def test_canonical_is_idempotent_on_products_and_sums(first, second):
     for expr in (n1 / d1 + n2 / d2, (n1 / d1) / (n2 / d2)):
         once = canonical(expr)
         assert canonical(once) == once, f"{expr}: {once} reads as {canonical(once)}"
+
+
+def test_circle_form_says_when_its_form_is_unique():
+    """Step 5 skipped where Q keeps a sign symbol: canonical must then re-read; otherwise it need not."""
+    from contactsym.algebra.half_angle import circle_form
+    from contactsym.algebra.reductions import SignSymbol
+    from contactsym.algebra.trig_field import to_fraction
+
+    a, b = sp.symbols("a b", positive=True)
+    s = SignSymbol("s")
+    assert circle_form(to_fraction(1 / ((1 + s) * (2 + sp.cos(a)))))[1] is False  # Q vanishes at s = -1
+    fraction, unique = circle_form(
+        to_fraction((1 + sp.sin(a) + sp.cos(a)) / ((2 + sp.cos(a)) * (1 + sp.sin(a) + sp.cos(a))))
+    )
+    assert unique is True and fraction.as_expr() == 1 / (sp.cos(a) + 2)
