@@ -57,6 +57,7 @@ import sympy as sp
 from ..arguments import checked
 from ..deprecation import deprecated_names
 from ..parse import sympy_only
+from .coprime import cofactors
 from .half_angle import cancelled_on_the_circle, circle_form
 from .reductions import reduce_signs, reduce_trig
 from .trig_field import (
@@ -179,8 +180,7 @@ def _settled(fraction: TrigFraction) -> TrigFraction:
             numer, powers[s] = quotient, powers[s] - 1
         while powers[c] > 0 and numer and (quotient := _by_cos(numer, C, S)) is not None:
             numer, powers[c] = quotient, powers[c] - 1
-    common = numer.gcd(denom)
-    numer, denom = numer.exquo(common), denom.exquo(common)
+    _, numer, denom = cofactors(numer, denom)
     denom = denom * ring({tuple(powers): ring.domain.one})
     numer, denom = _integral(numer, denom)
     return TrigFraction(numer, denom, pairs, signs)

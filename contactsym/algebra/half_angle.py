@@ -37,6 +37,7 @@ from __future__ import annotations
 import sympy as sp
 from sympy.polys.rings import PolyRing
 
+from .coprime import cofactors
 from .trig_field import TrigFraction, _integral, _reduce
 
 __all__ = ["cancelled_on_the_circle", "circle_form"]
@@ -95,7 +96,7 @@ def circle_form(fraction: TrigFraction) -> tuple[TrigFraction, bool]:
             N *= (half.one + t**2) ** (dq - dp)
         elif dp > dq:
             D *= (half.one + t**2) ** (dp - dq)
-    common, N, D = N.cofactors(D)
+    common, N, D = cofactors(N, D)
     powers = [(max(N.degree(t), D.degree(t)) + 1) // 2 for t in ts]
     if common.is_ground and powers == [max(p, q) for p, q in zip(degrees_p, degrees_q)]:
         # mapped back with these powers, N and D are P and Q again (each is the normal form of its own value)

@@ -37,6 +37,7 @@ from sympy.polys.fields import FracField
 
 from ..arguments import checked
 from ..parse import sympy_only
+from .coprime import cancel
 from .fourier import best_form
 from .reductions import SignSymbol, known_sign
 
@@ -303,7 +304,7 @@ class TrigField:
                 rational = self.reduce_poly(denom * conjugate)
                 if rational:  # zero: the denominator vanishes for one sign; keep it as it is
                     numer, denom = self.reduce_poly(numer * conjugate), rational
-        return self.field.new(numer, denom)
+        return self.field.raw_new(*cancel(numer, denom))  # what field.new does, the gcd proved 1 cheaply
 
     def fraction(self, value) -> TrigFraction:
         value = self.reduce(value)
