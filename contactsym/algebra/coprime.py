@@ -63,20 +63,25 @@ def proved_coprime(f, g) -> bool:
 
 
 def cofactors(f, g):
-    """``f.cofactors(g)``: (h, f / h, g / h) with h the gcd, by the certificate where it holds.
+    """``f.cofactors(g)``: (h, f / h, g / h) with h the gcd, by the certificate where it holds
+    (after the common monomial, x^min(a, b) for each variable, is divided out).
 
     >>> from sympy.polys.rings import ring
     >>> from sympy import QQ
     >>> R, x, y = ring("x, y", QQ)
     >>> cofactors(x / 2 + y, x * y + 3)
     (1, 1/2*x + y, x*y + 3)
+    >>> cofactors(x**2 * y + x, x * y**2 - x)
+    (x, x*y + 1, y**2 - 1)
     """
-    if len(f) > 1 and len(g) > 1 and proved_coprime(f, g):
-        ring = f.ring
-        if ring.domain.is_QQ:  # the gcd over a field is monic: 1
-            return ring.one, f, g
-        common = gcd(_content(f), _content(g))  # over ZZ: the gcd of the contents
-        return ring(common), f.quo_ground(common), g.quo_ground(common)
+    if len(f) > 1 and len(g) > 1:
+        monomial, f1, g1 = _without_common_monomial(f, g)
+        if proved_coprime(f1, g1):
+            ring = f.ring
+            if ring.domain.is_QQ:  # the gcd over a field is monic
+                return monomial, f1, g1
+            common = gcd(_content(f1), _content(g1))  # over ZZ: the gcd of the contents
+            return monomial.mul_ground(common), f1.quo_ground(common), g1.quo_ground(common)
     return f.cofactors(g)
 
 
@@ -89,7 +94,10 @@ def cancel(f, g):
     >>> cancel(x / 2 + y, -x * y / 3 - 1)
     (-3*x - 6*y, 2*x*y + 6)
     """
-    if not f or len(f) == 1 or len(g) == 1 or not proved_coprime(f, g):
+    if not f or len(f) == 1 or len(g) == 1:
+        return f.cancel(g)
+    _, f, g = _without_common_monomial(f, g)
+    if not proved_coprime(f, g):
         return f.cancel(g)
     ring = f.ring
     domain = ring.domain
@@ -106,6 +114,19 @@ def cancel(f, g):
     if domain.is_negative(q.LC):
         p, q = -p, -q
     return p, q
+
+
+def _without_common_monomial(f, g):
+    """(m, f / m, g / m) with m the monomial of the least exponents of each variable in f and g."""
+    least = [min(e) for e in zip(*f.monoms(), *g.monoms())]
+    ring = f.ring
+    if not any(least):
+        return ring.one, f, g
+
+    def divided(poly):
+        return ring.from_dict({tuple(a - b for a, b in zip(m, least)): c for m, c in poly.items()})
+
+    return ring({tuple(least): ring.domain.one}), divided(f), divided(g)
 
 
 def _integer_terms(poly, point) -> list[tuple[tuple, int, int]]:

@@ -15,6 +15,7 @@ from sympy.physics.mechanics import dynamicsymbols
 
 from ..arguments import checked, require
 from .canonical_form import TrigField
+from .coprime import cancel, cofactors
 
 __all__ = [
     "adjugate_and_det",
@@ -67,7 +68,43 @@ def adjugate_and_det(M: list[list], reduce) -> tuple[list[list], object]:
 
 def _matmul(A, B, reduce):
     n, m, p = len(A), len(B), len(B[0])
-    return [[reduce(sum((A[i][r] * B[r][j] for r in range(m)), A[0][0] * 0)) for j in range(p)] for i in range(n)]
+    dot = _field_dot if _is_field_element(A[0][0]) and _is_field_element(B[0][0]) else _plain_dot
+    return [[reduce(dot([A[i][r] for r in range(m)], [B[r][j] for r in range(m)])) for j in range(p)] for i in range(n)]
+
+
+def _plain_dot(row, column):
+    return sum((a * b for a, b in zip(row, column)), row[0] * 0)
+
+
+def _is_field_element(x) -> bool:
+    return hasattr(x, "numer") and hasattr(x, "field")
+
+
+def _field_dot(row, column):
+    """sum a_r b_r of elements of one fraction field, cancelled once (:func:`_field_sum`)."""
+    return _field_sum(row[0].field, [(a.numer * b.numer, a.denom * b.denom) for a, b in zip(row, column) if a and b])
+
+
+def _field_sum(field, terms):
+    """The element sum n_r / d_r of ``field``, with one cancellation at the end.
+
+    SymPy's field cancels after every operation; in lowest terms (integer coefficients, coprime
+    contents, a positive leading coefficient below) a fraction has one representation, so one
+    cancellation of the whole sum gives the same element, and :func:`contactsym.algebra.coprime.cancel`
+    decides it cheaply where the gcd is 1. Terms over one denominator are added first, the others
+    brought to their least common denominator.
+    """
+    by_denominator: dict = {}
+    for numer, denom in terms:
+        by_denominator[denom] = by_denominator.get(denom, field.ring.zero) + numer
+    parts = [(numer, denom) for denom, numer in by_denominator.items() if numer]
+    if not parts:
+        return field.zero
+    numer, denom = parts[0]
+    for n, d in parts[1:]:  # over the least common denominator: the final gcd then has the least to find
+        _, own, other = cofactors(denom, d)
+        numer, denom = numer * other + n * own, denom * other
+    return field.raw_new(*cancel(numer, denom))
 
 
 @checked(substitution="Mapping | None", offsets="Sequence | None")
@@ -97,11 +134,17 @@ def solve_fraction_free(
     adj, det = adjugate_and_det_in_field(field, M)
     projected = _matmul([[field.element(x) for x in rows[:, i]] for i in range(rows.cols)], adj, field.reduce)
     results = []
+    if not det:
+        raise ZeroDivisionError("det M = 0: the mass matrix is singular")
     for load, offset in zip(loads, offsets):
         vector = [[field.substituted(x, values)] for x in load]
-        column = [row[0] / det for row in _matmul(projected, vector, field.reduce)]
+        column = [
+            _field_sum(det.field, [(row[0].numer * det.denom, row[0].denom * det.numer)])
+            for row in _matmul(projected, vector, field.reduce)
+        ]
         if offset is not None:
-            column = [x + field.substituted(y, values) for x, y in zip(column, offset)]
+            shifted = [field.substituted(y, values) for y in offset]
+            column = [_field_sum(x.field, [(x.numer, x.denom), (y.numer, y.denom)]) for x, y in zip(column, shifted)]
         results.append([field.present(x) for x in column])
     return results
 
