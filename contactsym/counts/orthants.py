@@ -26,6 +26,7 @@ from ..algebra.basic import known_sign, normalize
 from ..arguments import checked
 from ..errors import ContactsymError
 from ..inequalities import Condition, Facts, boolean, closed_conjuncts, merge_or
+from ..stages.pieces import check_root_size
 from .conditions import count_facts, sign_choices
 from .plmap import k2_label, k2_quadrants, orthant_patterns
 
@@ -133,6 +134,7 @@ def _build(scene) -> SceneMap:
             minus[:, j] = A(owner[j])[:, j]
     pattern = tuple(scene.fixed_signs.get(s, 1) for s in switching)
     at = dict(zip(u, corner))
+    check_root_size(fast.piece(pattern), pattern, "the equilibrium counts")
     load = fast.piece(pattern).subs(at).applyfunc(normalize)
     return SceneMap(scene, u, plus, minus, tuple(corner), load, unilateral)
 

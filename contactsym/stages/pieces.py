@@ -10,7 +10,7 @@ from ..algebra.basic import normalize
 from ..arguments import checked
 from ..errors import ContactsymError, SingularJacobianError
 
-__all__ = ["MAX_ROOT_NODES", "switching_functions", "on_piece", "solve_piece"]
+__all__ = ["MAX_ROOT_NODES", "check_root_size", "switching_functions", "on_piece", "solve_piece"]
 
 #: Largest f (expression nodes, summed over its entries) whose roots are derived in closed form: past
 #: it the closed form would take minutes and pages (the roots of a four-link arm's piece are
@@ -79,7 +79,7 @@ def solve_piece(f: sp.Matrix, u: tuple, signs: tuple) -> list[tuple]:
     >>> solve_piece(sp.Matrix([2*u - a]), (u,), (1,))
     [(a/2,)]
     """
-    _refuse_large(f, signs)
+    check_root_size(f, signs)
     polys = [fj.as_poly(*u) for fj in f]
     if all(p is not None and p.total_degree() <= 1 for p in polys):
         A, b = sp.linear_eq_to_matrix(list(f), list(u))
@@ -120,17 +120,26 @@ def _no_real_root(f: sp.Matrix, u: tuple) -> bool:
     return bool(complete) and all(any(sp.im(root[z]).is_nonzero for z in free) for root in roots)
 
 
-def _refuse_large(f: sp.Matrix, signs: tuple) -> None:
-    """A ContactsymError naming the cap when f has more than :data:`MAX_ROOT_NODES` nodes (counted
-    until the cap is passed, so a large f is refused at once)."""
+def check_root_size(f: sp.Matrix, signs: tuple, what: str = "the roots of f") -> None:
+    """Refuse (a ContactsymError naming the cap) an f with more than :data:`MAX_ROOT_NODES` nodes,
+    counted only until the cap is passed, so a large f is refused at once: what is derived from the
+    roots or the load in closed form (equilibria, their counts) would take minutes and pages.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> u, a = sp.symbols("u a", real=True)
+    >>> check_root_size(sp.Matrix([2*u - a]), (1,)) is None
+    True
+    """
     count = 0
     for fj in f:
         for _ in sp.preorder_traversal(fj):
             count += 1
             if count > MAX_ROOT_NODES:
                 raise ContactsymError(
-                    f"the roots of f on the piece with signs {tuple(signs)} are not derived in closed form: f has "
+                    f"{what} on the piece with signs {tuple(signs)} are not derived in closed form: f has "
                     f"more than contactsym.stages.pieces.MAX_ROOT_NODES = {MAX_ROOT_NODES} expression nodes, and "
-                    "its roots would take minutes and pages; raise the cap to derive them anyway, or find the "
+                    "they would take minutes and pages; raise the cap to derive them anyway, or find the "
                     "equilibria numerically (contactsym.numerics) at chosen parameter values."
                 )
