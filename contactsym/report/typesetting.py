@@ -33,6 +33,12 @@ from .plain_text import _note
 #: Visible width (in characters of math) of one displayed line, and the most lines one formula may take.
 WIDTH = 78
 MAX_LINES = 6
+#: An expression of more nodes than this is not broken into lines (MAX_LINES lines of WIDTH hold far
+#: fewer): its long sums are named at once, without laying its terms out first.
+BREAK_NODES = 1500
+#: A subexpression of more nodes than this is never narrow enough for a line: it is split or named
+#: without printing it first (printing every subexpression of a large one is quadratic).
+NARROW_NODES = 600
 
 # --- widths and line breaking ---------------------------------------------------------
 
@@ -214,7 +220,7 @@ def _fill(first: str, terms: Iterable[str], suffix: str, budget: float) -> list[
 
 def _compact(expr, named: _Named, budget: float):
     """``expr`` with its long sums replaced by names (a product keeps its short factors)."""
-    if isinstance(expr, sp.Basic) and width(_tex(expr)) <= budget:
+    if isinstance(expr, sp.Basic) and _nodes(expr, NARROW_NODES) <= NARROW_NODES and width(_tex(expr)) <= budget:
         return expr
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(lambda e: _compact(e, named, budget / max(expr.cols, 1)))
@@ -242,7 +248,7 @@ def _lines(lhs: str, relation: str, expr, named: _Named) -> list[str]:
     text = _tex(expr) if not isinstance(expr, str) else expr
     if isinstance(expr, str) or width(head + " " + text) <= WIDTH:
         return [f"{head} {text}"]
-    lines = _broken("", expr, "", WIDTH - width(lhs))
+    lines = None if _nodes(expr, BREAK_NODES) > BREAK_NODES else _broken("", expr, "", WIDTH - width(lhs))
     if lines is not None:
         return [f"{head} {lines[0]}"] + ["& " + line for line in lines[1:]]
     compacted = _compact(expr, named, WIDTH - width(head) - 4)
@@ -264,7 +270,9 @@ def _relational_lines(condition, named: _Named) -> list[str]:
     """A long relation broken at the sums of its longer side; its long sums named when that fails."""
     left, right = condition.lhs, condition.rhs
     relation = _relation_tex(condition)
-    if width(_tex(left)) >= width(_tex(right)):
+    if _nodes(condition, BREAK_NODES) > BREAK_NODES:
+        lines = None
+    elif width(_tex(left)) >= width(_tex(right)):
         lines = _broken("", left, f" {relation} {_tex(right)}", WIDTH)
     else:
         lines = _broken(f"{_tex(left)} {relation} ", right, "", WIDTH)
