@@ -245,10 +245,12 @@ def _broken(first: str, expr, last: str, budget: float) -> list[str] | None:
 def _lines(lhs: str, relation: str, expr, named: _Named) -> list[str]:
     """LaTeX lines (for ``split``) of ``lhs relation expr`` that fit the page."""
     head = f"{lhs} &{relation}" if lhs else "&"
+    if not isinstance(expr, str) and _nodes(expr, BREAK_NODES) > BREAK_NODES:  # never printed in full here
+        return [f"{head} {_tex(_compact(expr, named, WIDTH - width(head) - 4))}"]
     text = _tex(expr) if not isinstance(expr, str) else expr
     if isinstance(expr, str) or width(head + " " + text) <= WIDTH:
         return [f"{head} {text}"]
-    lines = None if _nodes(expr, BREAK_NODES) > BREAK_NODES else _broken("", expr, "", WIDTH - width(lhs))
+    lines = _broken("", expr, "", WIDTH - width(lhs))
     if lines is not None:
         return [f"{head} {lines[0]}"] + ["& " + line for line in lines[1:]]
     compacted = _compact(expr, named, WIDTH - width(head) - 4)
