@@ -31,7 +31,7 @@ def pairs(draw):
     return f, g
 
 
-@settings(max_examples=300)
+@settings(max_examples=120)
 @given(pairs())
 def test_cofactors_and_cancel_equal_sympys(pair):
     f, g = pair
@@ -40,7 +40,7 @@ def test_cofactors_and_cancel_equal_sympys(pair):
         assert cancel(f, g) == f.cancel(g)
 
 
-@settings(max_examples=300)
+@settings(max_examples=120)
 @given(pairs())
 def test_a_proof_of_coprimality_is_never_wrong(pair):
     f, g = pair

@@ -37,7 +37,7 @@ def value(terms, point) -> float:
     )
 
 
-@settings(max_examples=300)
+@settings(max_examples=100)
 @given(terms, st.lists(points, min_size=8, max_size=8))
 def test_a_claimed_sign_holds_at_every_sampled_point(terms, samples):
     sign = ranges_sign(group_ranges(terms, BOUNDED), SCALE, REAL)
