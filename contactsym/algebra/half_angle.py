@@ -72,7 +72,7 @@ def circle_form(fraction: TrigFraction) -> tuple[TrigFraction, bool]:
     --------
     >>> import sympy as sp
     >>> from contactsym.algebra.trig_field import to_fraction
-    >>> a, s = sp.Symbol("a", positive=True), sp.Symbol("s")
+    >>> a = sp.Symbol("a", positive=True)
     >>> circle_form(to_fraction((1 + sp.cos(a)) / sp.sin(a)**2))[1]
     True
     """

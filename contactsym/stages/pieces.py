@@ -120,7 +120,8 @@ def _no_real_root(f: sp.Matrix, u: tuple) -> bool:
     return bool(complete) and all(any(sp.im(root[z]).is_nonzero for z in free) for root in roots)
 
 
-def check_root_size(f: sp.Matrix, signs: tuple, what: str = "the roots of f") -> None:
+@checked(signs="Sequence")
+def check_root_size(f: sp.Matrix, signs, what: str = "the roots of f") -> None:
     """Refuse (a ContactsymError naming the cap) an f with more than :data:`MAX_ROOT_NODES` nodes,
     counted only until the cap is passed, so a large f is refused at once: what is derived from the
     roots or the load in closed form (equilibria, their counts) would take minutes and pages.
