@@ -328,7 +328,7 @@ _entries = st.sampled_from(
 )
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=20, deadline=None)
 @given(st.integers(1, 3).flatmap(lambda k: st.lists(_entries, min_size=k * k, max_size=k * k)))
 def test_ring_minors_and_charpoly_equal_the_berkowitz_path(entries):
     """Principal minors, det A and (4.6) computed in the polynomial ring equal, exactly, the
