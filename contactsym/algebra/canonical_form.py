@@ -23,9 +23,10 @@ What is guaranteed, and why. Step 5 makes (P', Q') a function of the value of th
 rational function of the parameters, the signs and the angles, with sin^2 + cos^2 = 1 and
 s^2 = 1), and steps 6 and the presentation are functions of (P', Q'). So two inputs with the same
 value give the same output, and :func:`canonical` is idempotent (its output has the input's
-value, so it reads back to itself: no second reading is needed where step 5 ran). Both are tested as properties on random fractions: equal
-inputs written differently (multiple angles expanded, the identities applied, a common factor
-multiplied in and rewritten, partial fractions), and the output read again. Where no output is
+value, so it reads back to itself: no second reading is needed where step 5 ran). Both are
+tested as properties on random fractions: equal inputs written differently (multiple angles
+expanded, the identities applied, a common factor multiplied in and rewritten, partial
+fractions), and the output read again. Where no output is
 guaranteed: when P or Q has more than :data:`contactsym.algebra.half_angle.MAX_TERMS` terms step
 5 is skipped (to bound its cost), and a sign symbol left in Q (Q vanishes for one sign) keeps the
 polynomial gcd alone. A polynomial (a denominator of monomials in sin q and the parameters) takes
