@@ -31,7 +31,7 @@ from sympy.physics.vector import Point, Vector
 from sympy.polys.matrices import DomainMatrix
 
 from ..algebra.canonical_form import TrigField
-from ..algebra.fraction_free import adjugate_and_det, adjugate_and_det_in_field, solve_fraction_free, t
+from ..algebra.fraction_free import adjugate_and_det, adjugate_and_det_in_field, solve_fraction_free, t, value_at
 from ..arguments import checked
 from ..errors import SceneError
 from ..validate import lagrangian_parts, scene_parts
@@ -203,26 +203,10 @@ def _value_at_a_point(field, entries):
         t = sp.QQ(c + 1, c + 5)
         point[c], point[s] = (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
     try:
-        values = [[_evaluate(x, point) for x in row] for row in entries]
+        values = [[value_at(x, point) for x in row] for row in entries]
     except ZeroDivisionError:  # the point hit a pole of an entry: decide symbolically
         return None
     return DomainMatrix(values, (len(values), len(values)), sp.QQ).det()
-
-
-def _evaluate(value, point) -> sp.Rational:
-    """A field element at a point of rationals, term by term (no ring per generator)."""
-    return _evaluate_poly(value.numer, point) / _evaluate_poly(value.denom, point)
-
-
-def _evaluate_poly(poly, point):
-    total = sp.QQ(0)
-    for monomial, coefficient in poly.terms():
-        term = sp.QQ(coefficient)
-        for x, e in zip(point, monomial):
-            if e:
-                term *= x**e
-        total += term
-    return total
 
 
 def contact_space(lagrangian, coordinates, contacts, loads=(), frame=None) -> ContactSpace:

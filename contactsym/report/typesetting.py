@@ -33,11 +33,9 @@ from .plain_text import _note
 #: Visible width (in characters of math) of one displayed line, and the most lines one formula may take.
 WIDTH = 78
 MAX_LINES = 6
-#: An expression of more nodes than this is not broken into lines (MAX_LINES lines of WIDTH hold far
-#: fewer): its long sums are named at once, without laying its terms out first.
+#: Past this many nodes a formula is not broken into lines (they hold far fewer): its long sums are named at once.
 BREAK_NODES = 1500
-#: A subexpression of more nodes than this is never narrow enough for a line: it is split or named
-#: without printing it first (printing every subexpression of a large one is quadratic).
+#: Past this many nodes a subexpression is split or named unprinted (printing each one to measure it is quadratic).
 NARROW_NODES = 600
 
 # --- widths and line breaking ---------------------------------------------------------
