@@ -97,7 +97,7 @@ def stage(scene, name: str) -> list:
     if name == "regions-unlimited":  # every relation normalized, expanded and factored
         from contactsym.stages import regions
 
-        regions.RAW_OPS = regions.FACTOR_TERMS = float("inf")
+        regions.RAW_OPS = regions.FACTOR_TERMS = sys.maxsize  # no limit (inf is refused as an argument)
     return [region.condition for region in scene.regions().values()]
 
 

@@ -12,7 +12,8 @@ The commands::
     contactsym conditions SCENE --format text|latex|json [--signs +1,-1] [--set NAME=VALUE ...]
     contactsym report [SCENE ...] --out DIR [--no-pdf] [--force] [--resolution N] [--dpi N] [--set NAME=VALUE ...]
                                              a LaTeX/PDF report per scene, figures and conditions.json
-    contactsym bench [--quick] [--out DIR] [--json FILE] the benchmarks (from a source checkout)
+    contactsym bench [--quick] [--jobs N] [--out DIR] [--json FILE]
+                                             the benchmarks (from a source checkout)
     contactsym atlas SCENE QUANTITY --grid NAME=START:STOP:COUNT [--scheduler ADDRESS] [--out FILE.nc]
                                              a parameter sweep (contactsym[atlas]; see contactsym.atlas)
 
@@ -144,7 +145,9 @@ def _writable_file(path: str) -> None:
         raise ContactsymError(f"cannot write --json {shorten(path)}: choose a file in an existing, writable folder.")
 
 
-def _bench(quick: bool, json_file: str | None, out: str = "contactsym-bench", force: bool = False) -> int:
+def _bench(
+    quick: bool, json_file: str | None, out: str = "contactsym-bench", force: bool = False, jobs: int | None = None
+) -> int:
     root = str(Path(__file__).resolve().parent.parent)  # benchmarks/ sits beside the package in a checkout
     if root not in sys.path:
         sys.path.insert(0, root)
@@ -158,7 +161,10 @@ def _bench(quick: bool, json_file: str | None, out: str = "contactsym-bench", fo
         _writable_file(json_file)
     with replaced_directory(out, force=force) as work:
         code = run_benchmarks(
-            (["--quick"] if quick else []) + (["--json", json_file] if json_file else []) + ["--out", str(work)]
+            (["--quick"] if quick else [])
+            + (["--json", json_file] if json_file else [])
+            + (["--jobs", str(jobs)] if jobs else [])
+            + ["--out", str(work)]
         )
         if code:
             raise ContactsymError(f"the benchmarks failed (exit code {code}); --out {shorten(out)} was left as it was.")
@@ -234,7 +240,7 @@ def _run(args) -> int:
     if args.command == "conditions":
         return _conditions(args.scene, args.format, args.signs, args.values)
     if args.command == "bench":
-        return _bench(args.quick, args.json, args.out, args.force)
+        return _bench(args.quick, args.json, args.out, args.force, args.jobs)
     if args.command == "atlas":
         from .atlas.cli import run_atlas  # Dask and xarray, only when the atlas runs
 

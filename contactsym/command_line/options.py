@@ -142,7 +142,13 @@ def command_parser() -> argparse.ArgumentParser:
     report.add_argument("--dpi", type=_positive_int, metavar="N", help="dots per inch of the figures (default: 150)")
     _add_set(report)
     bench = sub.add_parser("bench", help="run the benchmarks (source checkout); table and plots in --out")
-    bench.add_argument("--quick", action="store_true", help="smaller sweeps, under 3 minutes")
+    bench.add_argument("--quick", action="store_true", help="smaller sweeps, under 3 minutes on 2 cores")
+    bench.add_argument(
+        "--jobs",
+        type=_positive_int,
+        metavar="N",
+        help="benchmark modules run at once (default: every core with --quick, else 1)",
+    )
     bench.add_argument("--json", metavar="FILE", type=_path, help="write the records as a JSON list to FILE")
     bench.add_argument(
         "--out",

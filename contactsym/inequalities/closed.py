@@ -13,15 +13,26 @@ reduced. The built-in scenes stay far below both defaults (at most 986 operation
 
 from __future__ import annotations
 
+import itertools
+
 import sympy as sp
 from sympy.core.relational import Relational
 from sympy.logic.boolalg import BooleanFunction
 
-from ..algebra.basic import normalize
+from ..algebra.basic import SignSymbol, normalize
 from ..arguments import checked
 from .facts import Facts
 from .merges import merge_abs, merge_and
-from .relations import Condition, arrange, as_positive_relation, drop_known_factors, solve_for, tidy, univariate
+from .relations import (
+    Condition,
+    arrange,
+    as_positive_relation,
+    drop_known_factors,
+    positive_part,
+    solve_for,
+    tidy,
+    univariate,
+)
 
 __all__ = ["RAW_OPS", "FACTOR_TERMS", "closed_form", "closed_conjuncts"]
 
@@ -31,6 +42,13 @@ __all__ = ["RAW_OPS", "FACTOR_TERMS", "closed_form", "closed_conjuncts"]
 #: >>> RAW_OPS > 0
 #: True
 RAW_OPS = 1500
+#: A relation in sign symbols alone (s_j = +-1) with at most this many of them is decided by trying every
+#: pattern: true or false when all patterns agree (71 s_1 = 61 s_2 never holds), else kept.
+#:
+#: >>> from contactsym.inequalities.closed import SIGN_PATTERNS
+#: >>> 2**3 <= SIGN_PATTERNS
+#: True
+SIGN_PATTERNS = 2**10
 #: Numerators with more terms are not factored: see the module docstring.
 #:
 #: >>> from contactsym.inequalities import FACTOR_TERMS
@@ -85,16 +103,67 @@ def _reduce(condition, facts: Facts, symbol, limits) -> sp.Basic:
     if condition in (sp.true, sp.false):
         return condition
     if isinstance(condition, Relational):
-        return facts.cached(("relation", condition, symbol, limits), _reduce_relation, condition, facts, symbol, limits)
+        reduced = facts.cached(
+            ("relation", condition, symbol, limits), _reduce_relation, condition, facts, symbol, limits
+        )
+        # a known positive factor gone (h mu (71 s_1 - 61 s_2) = 0), what is left may be in signs alone
+        relations = [reduced] if isinstance(reduced, Relational) else reduced.atoms(Relational)
+        decided = {r: _over_sign_patterns(r) for r in relations}
+        return reduced.xreplace({r: d for r, d in decided.items() if d is not None})
     if isinstance(condition, BooleanFunction):
         args = [_reduce(arg, facts, symbol, limits) for arg in condition.args]
         if isinstance(condition, sp.And):
             flat = [c for arg in args for c in sp.And.make_args(arg)]
-            return sp.And(*_drop_implied_conjuncts(merge_abs(flat), facts, limits[0]))
+            return sp.And(*_drop_implied_conjuncts(merge_abs(_one_of_each(flat, strict=True)), facts, limits[0]))
         if isinstance(condition, sp.Or):
-            return sp.Or(*_drop_implied_disjuncts(args, facts, limits[0]))
+            return sp.Or(*_drop_implied_disjuncts(_one_of_each(args, strict=False), facts, limits[0]))
         return condition.func(*args)
     return condition
+
+
+def _one_of_each(parts: list, strict: bool) -> list:
+    """``parts`` without ``P >= 0`` where ``P > 0`` is a part too (``strict``: in a conjunction), or without
+    ``P > 0`` where ``P >= 0`` is (in a disjunction): the other one of the pair says the same there.
+
+    >>> x = sp.Symbol("x", real=True)
+    >>> _one_of_each([x >= 5, x > 5, x < 9], strict=True), _one_of_each([x >= 5, 5 < x], strict=False)
+    ([x > 5, x < 9], [x >= 5])
+    """
+    found = {}
+    for part in parts:
+        positive = positive_part(part) if isinstance(part, Relational) else None
+        if positive is not None:
+            found.setdefault(sp.expand(positive[0]), set()).add(positive[1])
+    both = {P for P, kinds in found.items() if len(kinds) == 2}
+    if not both:
+        return parts
+
+    def dropped(part) -> bool:
+        positive = positive_part(part) if isinstance(part, Relational) else None
+        return positive is not None and positive[1] != strict and sp.expand(positive[0]) in both
+
+    return [part for part in parts if not dropped(part)]
+
+
+def _over_sign_patterns(relation: Relational) -> sp.Basic | None:
+    """true or false when ``relation``'s symbols are all sign symbols and every +-1 pattern of them gives that
+    answer (each pattern is a value the symbols take, so this is the relation's value); else None.
+
+    >>> s1, s2 = SignSymbol("s_1"), SignSymbol("s_2")
+    >>> _over_sign_patterns(sp.Eq(71 * s1 - 61 * s2, 0)), _over_sign_patterns(s1 + s2 < 3), _over_sign_patterns(s1 > s2)
+    (False, True, None)
+    """
+    symbols = relation.free_symbols
+    if not symbols or not all(isinstance(s, SignSymbol) for s in symbols) or 2 ** len(symbols) > SIGN_PATTERNS:
+        return None
+    symbols = sorted(symbols, key=str)
+    values = set()
+    for pattern in itertools.product((-1, 1), repeat=len(symbols)):
+        values.add(relation.xreplace(dict(zip(symbols, map(sp.Integer, pattern)))))
+        if len(values) > 1:
+            return None
+    (value,) = values
+    return value if value in (sp.true, sp.false) else None
 
 
 def _reduce_relation(relation: Relational, facts: Facts, symbol, limits) -> sp.Basic:

@@ -99,12 +99,16 @@ def merge_pair(a: sp.Basic, b: sp.Basic, positive=()) -> sp.Basic | None:
     >>> x = sp.Symbol("x", real=True)
     >>> merge_pair(x > 2, -x > 2), merge_pair(x > 0, x <= 0), merge_pair(x < 0, sp.Eq(x, 0))
     (Abs(x) > 2, True, x <= 0)
+    >>> merge_pair(x >= 5, x > 5)
+    x >= 5
     """
     pa = positive_part(a) if isinstance(a, Relational) else None
     pb = positive_part(b) if isinstance(b, Relational) else None
     if pa and pb:
         if sp.expand(pa[0] + pb[0]) == 0 and pa[1] != pb[1]:
             return sp.true  # P > 0 or P <= 0
+        if pa[1] != pb[1] and sp.expand(pa[0] - pb[0]) == 0:
+            return b if pa[1] else a  # P > 0 or P >= 0: the weak one
         if pa[1] == pb[1]:
             found = split(-pa[0], -pb[0], positive)  # p_a = x - c, p_b = -x - c
             if found is not None:

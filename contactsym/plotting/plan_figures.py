@@ -87,7 +87,7 @@ def region_map_data(scene, plan, *, resolution: int = 200) -> RegionMapData:
     X, Y = np.meshgrid(np.linspace(*plan.x_range, resolution), np.linspace(*plan.y_range, resolution))
     for name, region in scene.regions().items():
         if region.condition in (sp.true, sp.false):
-            skipped[name] = f"it is {region.condition} throughout"
+            skipped[name] = "it is empty" if region.condition == sp.false else "it is the whole parameter space"
             continue
         missing = missing_values(region.condition, plan)
         if missing:  # every missing name at once, in the names the plan uses
@@ -102,7 +102,7 @@ def region_map_data(scene, plan, *, resolution: int = 200) -> RegionMapData:
             curves[name] = (X, Y, fields)
             continue
         try:
-            grids[name] = region_data(
+            grid = region_data(
                 region,
                 x=plan.x,
                 y=plan.y,
@@ -113,6 +113,11 @@ def region_map_data(scene, plan, *, resolution: int = 200) -> RegionMapData:
             )
         except (ValueError, TypeError, ContactsymError) as error:  # a missing value, or a non-numeric one
             skipped[name] = str(error)
+            continue
+        if grid.mask.any():
+            grids[name] = grid
+        else:  # a legend entry for nothing drawn would read as a region too thin to see
+            skipped[name] = "no grid point of this plane is in it at the [figures] values"
     title = f"{scene.name}: regions in the (${tex(sp.Symbol(plan.x))}$, ${tex(sp.Symbol(plan.y))}$) plane"
     return RegionMapData(title, plan.x, plan.y, grids, curves, skipped)
 

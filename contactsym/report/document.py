@@ -73,12 +73,13 @@ def _parameters(scene) -> str:
 
 
 def _regions_section(scene, named: _Named) -> str:
-    text = [
-        _section(
-            "7. Regions in closed form",
-            "Each raw condition factored, factors of known sign dropped, written in the paper's variables.",
+    intro = "Each raw condition factored, factors of known sign dropped, written in the paper's variables."
+    if scene.k >= 3:  # the statements are proved on sufficient regions only: False is "proved nowhere"
+        intro += (
+            " With three or more contacts each statement is proved on a sufficient region: where it is not "
+            "proved (the region undecided) it may still hold, and False means that it is proved at no point."
         )
-    ]
+    text = [_section("7. Regions in closed form", intro)]
     for name, region in scene.regions().items():
         numbers, note = paper_equations(scene, name)
         text.append(f"\\paragraph{{{_escape(name.capitalize())}.}}")

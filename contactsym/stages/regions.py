@@ -246,8 +246,10 @@ class Region:
         """Membership for arrays of parameter values (broadcast with numpy), by symbol name."""
         self._symbols_for(arrays)
         symbols, function = self._compiled
-        arguments = [np.asarray(arrays[str(s)], dtype=float) for s in symbols]
-        shape = np.broadcast_shapes(*(a.shape for a in arguments)) if arguments else ()
+        # broadcast first: a part of the condition in scalar arguments alone (an equation between sign
+        # symbols held fixed) is then an array too, which numpy's logical_and.reduce needs
+        arguments = np.broadcast_arrays(*(np.asarray(arrays[str(s)], dtype=float) for s in symbols))
+        shape = arguments[0].shape if arguments else ()
         return np.broadcast_to(np.asarray(function(*arguments), dtype=bool), shape)
 
     @checked

@@ -8,13 +8,14 @@ at every point, and must be found where a short proof was built into the conditi
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from contactsym.algebra.basic import known_sign
+from contactsym.algebra.basic import SignSymbol, known_sign
 from contactsym.inequalities import (
     Condition,
     Facts,
@@ -311,3 +312,47 @@ def test_no_implication_is_tried_with_a_relation_past_the_size_limit():
     assert closed_form(implied_disjunct, raw_ops=0) == implied_disjunct
     assert closed_form(implied_conjunct) == (x - y > 1)
     assert closed_form(implied_conjunct, raw_ops=0) == implied_conjunct
+
+
+_SIGNS = tuple(SignSymbol(f"s_{i}") for i in (1, 2, 3))
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.lists(st.integers(-4, 4), min_size=3, max_size=3),
+    st.integers(-6, 6),
+    st.sampled_from((*RELATIONS, sp.Eq, sp.Ne)),
+    st.booleans(),
+)
+def test_a_relation_in_signs_alone_is_decided_over_every_pattern(coefficients, constant, relation, scaled):
+    """sum c_j s_j + c op 0 (times a positive m, which the closed form removes): its closed form holds at
+    each +-1 pattern exactly where the relation does, and is true or false when all patterns agree."""
+    lhs = sum(c * s for c, s in zip(coefficients, _SIGNS)) + constant
+    condition = relation(m * lhs if scaled else lhs, 0)
+    if condition in (sp.true, sp.false):
+        return
+    reduced = closed_form(condition)
+    answers = set()
+    for pattern in itertools.product((-1, 1), repeat=3):
+        point = dict(zip(_SIGNS, map(sp.Integer, pattern)))
+        expected = condition.xreplace({**point, m: sp.Integer(2)})
+        assert reduced.xreplace({**point, m: sp.Integer(2)}) == expected
+        answers.add(expected)
+    if len(answers) == 1:
+        assert reduced == answers.pop()
+
+
+@SETTINGS
+@given(
+    products(), polynomials(max_terms=2), st.lists(relations(), max_size=2), st.sampled_from([sp.And, sp.Or]), points()
+)
+def test_a_relation_with_its_strict_or_weak_twin_keeps_the_set(lhs, rhs, others, junction, sample):
+    """P > 0 beside P >= 0 (written in either order or sides): one of the pair is kept, the set is the same,
+    and the two never both stay side by side (as parts of the same And or Or)."""
+    condition = junction(sp.Gt(lhs, rhs), sp.Le(rhs, lhs), *others)
+    reduced = closed_form(condition)
+    same_set(condition, reduced, sample)
+    parts = reduced.args if isinstance(reduced, (sp.And, sp.Or)) else (reduced,)
+    kept = [positive_part(r) for r in parts if isinstance(r, sp.core.relational.Relational)]
+    kept = [(sp.expand(p), strict) for p, strict in filter(None, kept)]
+    assert not any((p, not strict) in kept for p, strict in kept)

@@ -119,3 +119,16 @@ def test_a_plan_without_some_values_skips_a_region_naming_every_missing_value():
     assert data.skipped["Hopf line"] == "give [figures] values for Phi_1, m"
     assert {str(s) for s in hopf.free_symbols} >= {"Phi_1", "m"}
     assert sorted(data.grids) == ["law-dependent", "stable for every law"]
+
+
+def test_a_region_with_no_point_in_the_plane_is_named_not_drawn():
+    """The brake's plan moved to where mu > |cot alpha| everywhere: 'stable for every law' has no grid
+    point there (checked against (6.3) at every point), so it gets a note and no legend entry."""
+    scene = _brake()
+    plan = dataclasses.replace(scene.figure_plan, x_range=(1.4, 1.5), y_range=(1.0, 2.0))
+    data = region_map_data(scene, plan, resolution=12)
+    X, Y = np.meshgrid(np.linspace(1.4, 1.5, 12), np.linspace(1.0, 2.0, 12))
+    assert not np.any(Y <= np.abs(1 / np.tan(X)))  # (6.3): empty on this plane
+    assert "stable for every law" not in data.grids
+    assert data.skipped["stable for every law"] == "no grid point of this plane is in it at the [figures] values"
+    assert data.grids["law-dependent"].mask.all()

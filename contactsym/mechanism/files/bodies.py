@@ -11,12 +11,13 @@ from __future__ import annotations
 import sympy as sp
 from sympy.physics.mechanics import Lagrangian, Particle, Point, ReferenceFrame, RigidBody, inertia
 
+from ...algebra.basic import known_sign
 from .contacts import COMPLIANCE_LAWS  # noqa: F401  (0.1's path of the table of laws)
 from .declarations import FormulaReader
 from .spec import BodySpec, LoadSpec, MassSpec, PointSpec, SceneSpec, removed_mixin
 from .toml_source import SceneFileError
 
-__all__ = ["Plane", "read_motion", "read_points"]
+__all__ = ["Plane", "inertia_proved", "read_motion", "read_points"]
 
 
 def read_points(reader: FormulaReader) -> tuple[PointSpec, ...]:
@@ -143,6 +144,38 @@ class Plane:
             else:
                 loads.append((self.turning(load.angle), load.moment * self.frame.z))
         return L, loads
+
+
+def inertia_proved(spec: SceneSpec) -> bool:
+    """True when the spec's mass matrix is positive definite for every admissible value, by its structure.
+
+    Proof. The kinetic energy is ``T = sum_p m_p |v_p|^2 / 2 + sum_b (m_b |v_b|^2 + I_b theta_b'^2) / 2``
+    (no ``[energy] kinetic`` term added). With every mass proved >= 0 and every body's inertia
+    proved > 0 from the declarations, ``T >= sum_b I_b theta_b'^2 / 2``; when every coordinate
+    q_j is the angle theta_b of some body, this is > 0 for every q' != 0, so ``q'^T M q' = 2T > 0``.
+    False means only "not proved this way" (:func:`contactsym.mechanism.admissibility.check_inertia`
+    then decides).
+
+    Examples
+    --------
+    >>> from contactsym.mechanism.files import read_spec
+    >>> rod = ('[scene]\\ncoordinates = ["q"]\\n[parameters]\\nm = "positive"\\nl = "positive"\\n'
+    ...        '[points]\\nC = ["l*sin(q)/2", "-l*cos(q)/2"]\\n'
+    ...        '[[bodies]]\\npoint = "C"\\nangle = "q"\\nmass = "m"\\ninertia = "m*l^2/12"\\n'
+    ...        '[[contacts]]\\ngap = "l*cos(q)"\\nreaction = "N"\\n')
+    >>> inertia_proved(read_spec(rod, "rod.toml"))
+    True
+    >>> inertia_proved(read_spec(rod.replace('inertia = "m*l^2/12"', 'inertia = "l - m"'), "rod.toml"))
+    False
+    """
+    if spec.kinetic != 0 or not spec.bodies:
+        return False
+    positive = spec.positive
+    masses = [m.mass for m in spec.masses] + [b.mass for b in spec.bodies]
+    if any(m != 0 and known_sign(m, positive) != 1 for m in masses):
+        return False
+    turning = {b.angle for b in spec.bodies if known_sign(b.inertia, positive) == 1}
+    return all(c.symbol in turning for c in spec.coordinates)
 
 
 #: 0.1's mixin of the reader (removed: see :class:`Plane`).

@@ -10,7 +10,7 @@ from __future__ import annotations
 from ...errors import ContactsymError
 from ...parse import ParseError
 from ..scene import Scene
-from .bodies import Plane
+from .bodies import Plane, inertia_proved
 from .contacts import build_contact
 from .space import Space
 from .spec import SceneSpec
@@ -58,6 +58,8 @@ def build_scene(spec: SceneSpec) -> Scene:
         # coordinate (symbol = "theta") is that frozen coordinate, for [at]
         parameters=[p.symbol for p in spec.parameters if str(p.symbol) not in {c.name for c in spec.coordinates}],
     )
+    if spec.lagrangian and spec.space is None and inertia_proved(spec):  # by the bodies' structure: no check
+        options["inertia"] = "proved"
     coordinates = [c.symbol for c in spec.coordinates]
     try:
         if spec.lagrangian:
