@@ -45,6 +45,23 @@ def fresh_process(module: str, *args: str, timeout: float) -> dict | None:
     return json.loads(done.stdout.strip().splitlines()[-1])
 
 
+def load_pipeline():
+    """Import the modules a derivation uses: ``import contactsym`` alone loads almost nothing (its
+    subpackages load on first use), so a worker that excludes the import from its timing calls this
+    before starting the clock. A subpackage an older checkout (a baseline) does not have is skipped."""
+    from importlib import import_module
+
+    import contactsym
+
+    for name in ("mechanism", "stages", "scenes", "inequalities", "robustness"):
+        try:
+            import_module(f"contactsym.{name}")
+        except ModuleNotFoundError as error:
+            if error.name != f"contactsym.{name}":
+                raise
+    return contactsym
+
+
 def record(name, ours_s, baseline_s, error, n, notes) -> dict:
     """One JSON record; ratio = baseline_s / ours_s (how many times faster ours is)."""
     ratio = baseline_s / ours_s if ours_s and baseline_s is not None else None
