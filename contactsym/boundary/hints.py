@@ -99,8 +99,19 @@ def _sympy_fits(value, kind) -> bool:
         exact = (
             value.domain.is_ZZ or value.domain.is_QQ or value.domain.is_PolynomialRing or value.domain.is_FractionField
         )
-        return exact or not any(c.has(*_NOT_FINITE) for c in value.coeffs())
+        # the dense representation, not coeffs(): that asks bool() of each coefficient, which over an
+        # expression domain is an assumptions query on a possibly huge expression
+        return exact or not any(value.domain.to_sympy(c).has(*_NOT_FINITE) for c in _entries(value.rep.to_list()))
     return not value.has(*_NOT_FINITE)
+
+
+def _entries(nested):
+    """The coefficients of a dense polynomial representation (nested lists), zeros included."""
+    for item in nested:
+        if isinstance(item, list):
+            yield from _entries(item)
+        else:
+            yield item
 
 
 def _class_fits(value, kind: type) -> bool:
