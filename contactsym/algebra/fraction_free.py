@@ -11,6 +11,7 @@ from __future__ import annotations
 from functools import lru_cache
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 
 from ..arguments import checked, require
@@ -21,6 +22,7 @@ __all__ = [
     "adjugate_and_det",
     "adjugate_and_det_in_field",
     "polynomial_adjugate",
+    "rational_point",
     "solve_fraction_free",
     "t",
     "value_at",
@@ -194,6 +196,39 @@ def polynomial_adjugate(M: sp.ImmutableMatrix):
     if any(x.denom != 1 for row in entries for x in row):
         return None
     return adjugate_and_det([[x.numer for x in row] for row in entries], field.reduce_poly)
+
+
+def rational_point(field: TrigField) -> list | None:
+    """One exact point of the generators of ``field`` that respects its relations, or None.
+
+    Each angle's cosine and sine get ((1 - t^2)/(1 + t^2), 2t/(1 + t^2)) for a rational t, each
+    sign symbol 1 and every other generator (a symbol, or a coordinate q(t): no relation holds
+    between them) a rational, so that evaluating there is a ring homomorphism: a nonzero value
+    proves a nonzero element. None when a generator has a relation the point would not respect
+    (sqrt(l), a root with root^2 = l) or is of another kind.
+
+    Examples
+    --------
+    >>> q, m = sp.symbols("q m")
+    >>> field = TrigField([m * sp.cos(q)])
+    >>> field.ring.symbols, [str(x) for x in rational_point(field)]
+    ((cos(q), sin(q), m, q), ['12/13', '5/13', '4/11', '5/13'])
+    >>> rational_point(TrigField([sp.sqrt(m)])) is None
+    True
+    """
+    paired = {i for pair in field.pairs for i in pair}
+    # a Dummy stands for a root (sqrt(m) -> root0, root0^2 = m): a relation the point would not respect
+    roots = [g for g in field.ring.symbols if isinstance(g, sp.Dummy) and g.name.startswith("root")]
+    free = [i in paired or g.is_Symbol or isinstance(g, AppliedUndef) for i, g in enumerate(field.ring.symbols)]
+    if roots or not all(free):
+        return None
+    point = [sp.QQ(k + 2, 2 * k + 7) for k in range(field.ring.ngens)]
+    for i in field.signs:
+        point[i] = sp.QQ(1)
+    for c, s in field.pairs:
+        x = sp.QQ(c + 1, c + 5)
+        point[c], point[s] = (1 - x**2) / (1 + x**2), 2 * x / (1 + x**2)
+    return point
 
 
 def value_at(value, point):

@@ -31,7 +31,14 @@ from sympy.physics.vector import Point, Vector
 from sympy.polys.matrices import DomainMatrix
 
 from ..algebra.canonical_form import TrigField
-from ..algebra.fraction_free import adjugate_and_det, adjugate_and_det_in_field, solve_fraction_free, t, value_at
+from ..algebra.fraction_free import (
+    adjugate_and_det,
+    adjugate_and_det_in_field,
+    rational_point,
+    solve_fraction_free,
+    t,
+    value_at,
+)
 from ..arguments import checked
 from ..errors import SceneError
 from ..validate import lagrangian_parts, scene_parts
@@ -195,13 +202,11 @@ def mass_determinant_is_zero(M: sp.Matrix) -> bool:
 
 
 def _value_at_a_point(field, entries):
-    """det of the entries at one exact point of the field's generators, or None at a pole of an entry."""
-    point = [sp.QQ(k + 2, 2 * k + 7) for k in range(field.ring.ngens)]
-    for i in field.signs:
-        point[i] = sp.QQ(1)
-    for c, s in field.pairs:
-        t = sp.QQ(c + 1, c + 5)
-        point[c], point[s] = (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
+    """det of the entries at one exact point of the field's generators (:func:`rational_point`), or None
+    at a pole of an entry or where no such point exists (a root among the generators)."""
+    point = rational_point(field)
+    if point is None:
+        return None
     try:
         values = [[value_at(x, point) for x in row] for row in entries]
     except ZeroDivisionError:  # the point hit a pole of an entry: decide symbolically

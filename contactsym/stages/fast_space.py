@@ -15,7 +15,7 @@ from sympy.polys.matrices import DomainMatrix
 from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
 
 from ..algebra.canonical_form import TrigField
-from ..algebra.fraction_free import solve_fraction_free, t, value_at
+from ..algebra.fraction_free import rational_point, solve_fraction_free, t, value_at
 from .pieces import switching_functions
 
 __all__ = [
@@ -91,37 +91,6 @@ def reaction_factors(scene, u) -> tuple[sp.Matrix, sp.Matrix, sp.Matrix, list]:
     to_u = dict(zip(scene.reactions, u))
     multipliers = [*u] + [scene.freeze(term[1]).subs(to_u) for term in frozen]
     return space.M.applyfunc(place), space.W.applyfunc(place), loads.applyfunc(place), multipliers
-
-
-def rational_point(field: TrigField) -> list:
-    """One exact point of the generators of ``field`` that respects its relations, or None.
-
-    Each angle's cosine and sine get ((1 - t^2)/(1 + t^2), 2t/(1 + t^2)) for a rational t, each
-    sign symbol 1 and every other generator a rational, so that evaluating there is a ring
-    homomorphism: a nonzero value proves a nonzero element. None when a generator is neither a
-    symbol nor a sine or cosine of an angle (sqrt(l) has a relation the point would not respect).
-
-    Examples
-    --------
-    >>> q, m = sp.symbols("q m")
-    >>> field = TrigField([m * sp.cos(q)])
-    >>> field.ring.symbols, [str(x) for x in rational_point(field)]
-    ((cos(q), sin(q), m, q), ['12/13', '5/13', '4/11', '5/13'])
-    >>> rational_point(TrigField([sp.sqrt(m)])) is None
-    True
-    """
-    paired = {i for pair in field.pairs for i in pair}
-    # a Dummy stands for a root (sqrt(m) -> root0, root0^2 = m): a relation the point would not respect
-    roots = [g for g in field.ring.symbols if isinstance(g, sp.Dummy) and g.name.startswith("root")]
-    if roots or any(not (i in paired or g.is_Symbol) for i, g in enumerate(field.ring.symbols)):
-        return None
-    point = [sp.QQ(k + 2, 2 * k + 7) for k in range(field.ring.ngens)]
-    for i in field.signs:
-        point[i] = sp.QQ(1)
-    for c, s in field.pairs:
-        x = sp.QQ(c + 1, c + 5)
-        point[c], point[s] = (1 - x**2) / (1 + x**2), 2 * x / (1 + x**2)
-    return point
 
 
 def switching_of_factors(M, W, loads, multipliers, u) -> tuple | None:
