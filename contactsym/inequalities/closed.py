@@ -116,7 +116,7 @@ def _reduce(condition, facts: Facts, symbol, limits) -> sp.Basic:
             flat = [c for arg in args for c in sp.And.make_args(arg)]
             return sp.And(*_drop_implied_conjuncts(merge_abs(_one_of_each(flat, strict=True)), facts, limits[0]))
         if isinstance(condition, sp.Or):
-            return sp.Or(*_drop_implied_disjuncts(_one_of_each(args, strict=False), facts, limits[0]))
+            return sp.Or(*_drop_implied_disjuncts(_absorbed(_one_of_each(args, strict=False)), facts, limits[0]))
         return condition.func(*args)
     return condition
 
@@ -143,6 +143,42 @@ def _one_of_each(parts: list, strict: bool) -> list:
         return positive is not None and positive[1] != strict and sp.expand(positive[0]) in both
 
     return [part for part in parts if not dropped(part)]
+
+
+def _implied_parts(part) -> dict | None:
+    """{P: strict} of a conjunction of relations P > 0 / P >= 0 (None when a part is of another kind)."""
+    found = {}
+    for conjunct in sp.And.make_args(part):
+        positive = positive_part(conjunct) if isinstance(conjunct, Relational) else None
+        if positive is None:
+            return None
+        P = sp.expand(positive[0])
+        found[P] = found.get(P, False) or positive[1]
+    return found
+
+
+def _absorbed(disjuncts: list) -> list:
+    """``disjuncts`` without each one that implies another part by part (D: P > 0 and Q >= 0 implies E:
+    P >= 0): D is a subset of E, so ``D or E`` is E. Of two that say the same, the first stays.
+
+    >>> x, y = sp.symbols("x y", real=True)
+    >>> _absorbed([(x > 1) & (y > 2), (x >= 1) & (y >= 2), x > 5])
+    [(x >= 1) & (y >= 2), x > 5]
+    """
+    keys = [_implied_parts(d) for d in disjuncts]
+
+    def implies(i: int, j: int) -> bool:  # every part of disjunct j follows from disjunct i's part on its P
+        a, b = keys[i], keys[j]
+        return a is not None and b is not None and all(P in a and (a[P] or not strict) for P, strict in b.items())
+
+    kept = []
+    for i in range(len(disjuncts)):
+        # i goes when it implies a j that stays: a j after i that does not imply i, or a kept j before it
+        if not any(
+            implies(i, j) and (j in kept or (j > i and not implies(j, i))) for j in range(len(disjuncts)) if j != i
+        ):
+            kept.append(i)
+    return [disjuncts[i] for i in kept]
 
 
 def _over_sign_patterns(relation: Relational) -> sp.Basic | None:

@@ -356,3 +356,28 @@ def test_a_relation_with_its_strict_or_weak_twin_keeps_the_set(lhs, rhs, others,
     kept = [positive_part(r) for r in parts if isinstance(r, sp.core.relational.Relational)]
     kept = [(sp.expand(p), strict) for p, strict in filter(None, kept)]
     assert not any((p, not strict) in kept for p, strict in kept)
+
+
+@SETTINGS
+@given(
+    st.lists(polynomials(max_terms=2), min_size=2, max_size=3),
+    st.lists(st.booleans(), min_size=6, max_size=6),
+    points(),
+)
+def test_a_disjunct_that_implies_another_part_by_part_goes_and_the_set_stays(sides, strict, sample):
+    """(P > 0 & Q > 0) | (P >= 0 & Q >= 0) | ...: the disjuncts differ only in strictness, so the weakest
+    one is the whole Or; the closed form is the same set and has no two disjuncts where one implies the other
+    part by part."""
+    ops = [sp.Gt if s else sp.Ge for s in strict]
+    disjuncts = [sp.And(*[op(side, 0) for op, side in zip(ops[i : i + len(sides)], sides)]) for i in (0, 2, 3)]
+    condition = sp.Or(*disjuncts)
+    reduced = closed_form(condition)
+    same_set(condition, reduced, sample)
+    if isinstance(reduced, sp.Or):
+        from contactsym.inequalities.closed import _implied_parts
+
+        keys = [_implied_parts(d) for d in reduced.args]
+        for i, a in enumerate(keys):
+            for j, b in enumerate(keys):
+                if i != j and a is not None and b is not None:
+                    assert not all(P in a and (a[P] or not s) for P, s in b.items()), (reduced, i, j)
