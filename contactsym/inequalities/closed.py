@@ -1,5 +1,8 @@
 """Closed forms of Booleans of relations: each relation reduced, implied parts dropped, pairs merged.
 
+A relation left in sign symbols alone is decided over their +-1 patterns where all agree; of
+P > 0 and P >= 0 side by side one stays, and a disjunct that implies another part by part goes.
+
 Size limits. A fully symbolic scene with k >= 3 has Hurwitz minors no reader can use in
 closed form: for q_i'' = sum_j a_ij N_j + b_i with k = 3, Delta_5 of the Hopf line is 2665
 operations unexpanded and 19390 terms expanded, and ``factor_list`` of its 306-term
