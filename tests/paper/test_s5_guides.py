@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 import contactsym as cs
 from contactsym.algebra.basic import SignSymbol
-from tests.helpers import max_real_part, numeric, same, truth
+from tests.helpers import fast_numeric, fast_truth, max_real_part, same
 
 scene = cs.scene("painleve-klein-guides")
 fast = scene.fast_subsystem()
@@ -89,13 +89,27 @@ def test_stability_region_is_corrected_5_6_and_instability_is_5_7(sample):
 
 
 def law_search(A):
-    """Max real parts of (4.5) over a spread of laws (Phi, Psi < 0)."""
-    grid = [10.0**e for e in range(-3, 4)]
-    return [max_real_part(A, [-p1, -p2], [-s1_, -s2_]) for p1 in grid for p2 in grid for s1_ in grid for s2_ in grid]
+    """Max real parts of (4.5) over a spread of laws (Phi, Psi < 0), one batched eigenvalue call."""
+    grid = -(10.0 ** np.arange(-3, 4))
+    Phi1, Phi2, Psi1, Psi2 = (x.ravel() for x in np.meshgrid(grid, grid, grid, grid, indexing="ij"))
+    J = np.zeros((Phi1.size, 4, 4))
+    J[:, :2, :2] = np.stack([Psi1, Psi2], axis=1)[:, :, None] * A  # Psi A
+    J[:, 0, 2], J[:, 1, 3] = Phi1, Phi2
+    J[:, 2:, :2] = A
+    return np.linalg.eigvals(J).real.max(axis=1).tolist()
+
+
+def test_the_batched_law_search_is_max_real_part_law_by_law():
+    A = np.array([[1.0, -2.0], [0.5, 3.0]])
+    parts, grid = law_search(A), 10.0 ** np.arange(-3, 4)
+    laws = [(p1, p2, q1, q2) for p1 in grid for p2 in grid for q1 in grid for q2 in grid]
+    assert np.allclose(parts, [max_real_part(A, [-p1, -p2], [-q1, -q2]) for p1, p2, q1, q2 in laws])
 
 
 def A_at(k, a, b):
-    return np.array(sp.N(scene.present(lin.A).subs({kappa: k, v1: a, v2: b, s1: 1, s2: 1})), dtype=float)
+    presented = scene.present(lin.A)
+    values = {kappa: k, v1: a, v2: b, s1: 1, s2: 1}
+    return np.array([[fast_numeric(e, values) for e in row] for row in presented.tolist()])
 
 
 def test_robust_claims_hold_for_every_sampled_law_and_the_rest_depends_on_the_law():
@@ -129,7 +143,7 @@ def test_unique_square_5_8_is_coherent_orientation(phi_value, m1, m2):
     k = 1 / math.tan(phi_value)
     assume(abs(k * (m1 + m2) - 2 * k**2) > 1e-6)
     values = {phi: phi_value, mu1: m1, mu2: m2}
-    dets = [numeric(d, values) for d in orthant_determinants()]
+    dets = [fast_numeric(d, values) for d in orthant_determinants()]
     coherent = all(d > 0 for d in dets) or all(d < 0 for d in dets)
     assert coherent == (k * m1 + k * m2 < 2 * k**2)  # |v1| + |v2| < 2 kappa^2
 
@@ -154,13 +168,13 @@ def test_equilibria_count_matches_5_3_and_the_regions_of_fig_1(phi_value, m1, m2
     k = 1 / math.tan(phi_value)
     values = {phi: phi_value, mu1: m1, mu2: m2, Y: y_load, M: m_load, l: 1.0}
     for signs in scene.sign_patterns():
-        assume(abs(numeric(scene.linearization(signs=signs).det_A, values)) > 1e-6)
+        assume(abs(fast_numeric(scene.linearization(signs=signs).det_A, values)) > 1e-6)
     for branch in scene.equilibria():  # no root on a switching line N_j = 0
-        assume(min(abs(numeric(u, values)) for u in branch.u_star) > 1e-6)
-    found = [b for b in scene.equilibria() if truth(b.condition, values)]
+        assume(min(abs(fast_numeric(u, values)) for u in branch.u_star) > 1e-6)
+    found = [b for b in scene.equilibria() if fast_truth(b.condition, values)]
     m_star = m_load / math.sin(phi_value) - k * y_load  # M* = M/h - kappa Y with h = l sin(phi)
     for branch in found:  # each branch solves (5.3)
-        n1, n2 = (numeric(u, values) for u in branch.u_star)
+        n1, n2 = (fast_numeric(u, values) for u in branch.u_star)
         assert math.isclose(n1, n2 + y_load, abs_tol=1e-7 * (1 + abs(n1)))
         lhs = 2 * k * n2 - m1 * abs(n2 + y_load) + m2 * abs(n2)
         assert math.isclose(lhs, m_star, rel_tol=1e-7, abs_tol=1e-7)
