@@ -21,6 +21,19 @@ def max_real_part(A, Phi, Psi) -> float:
     return float(np.max(np.linalg.eigvals(fast_matrix(A, Phi, Psi)).real))
 
 
+def max_real_parts(A, Phi, Psi) -> np.ndarray:
+    """:func:`max_real_part` for many laws at once: ``Phi``, ``Psi`` of shape (laws, k); one batched
+    eigenvalue call."""
+    A = np.asarray(A, dtype=float)
+    Phi, Psi = np.atleast_2d(np.asarray(Phi, dtype=float)), np.atleast_2d(np.asarray(Psi, dtype=float))
+    laws, k = Phi.shape
+    J = np.zeros((laws, 2 * k, 2 * k))
+    J[:, :k, :k] = Psi[:, :, None] * A  # diag(Psi) A
+    J[:, np.arange(k), k + np.arange(k)] = Phi
+    J[:, k:, :k] = A
+    return np.linalg.eigvals(J).real.max(axis=1)
+
+
 def numeric(expr, values: dict) -> float:
     """Float value of a SymPy expression at a substitution."""
     return float(sp.N(sp.sympify(expr).subs(values)))
