@@ -45,8 +45,8 @@ __all__ = ["RAW_OPS", "FACTOR_TERMS", "closed_form", "closed_conjuncts"]
 #: >>> RAW_OPS > 0
 #: True
 RAW_OPS = 1500
-#: A relation in sign symbols alone (s_j = +-1) with at most this many of them is decided by trying every
-#: pattern: true or false when all patterns agree (71 s_1 = 61 s_2 never holds), else kept.
+#: A relation in sign symbols alone (s_j = +-1) is decided by trying every +-1 pattern, up to this many
+#: patterns: true or false when all of them agree (71 s_1 = 61 s_2 never holds), else kept.
 #:
 #: >>> from contactsym.inequalities.closed import SIGN_PATTERNS
 #: >>> 2**3 <= SIGN_PATTERNS
