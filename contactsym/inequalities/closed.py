@@ -1,7 +1,8 @@
 """Closed forms of Booleans of relations: each relation reduced, implied parts dropped, pairs merged.
 
 A relation left in sign symbols alone is decided over their +-1 patterns where all agree; of
-P > 0 and P >= 0 side by side one stays, and a disjunct that implies another part by part goes.
+P > 0 and P >= 0 in a conjunction the strict one stays, and a disjunct that implies another part by
+part goes (so of the two in a disjunction, the weak one).
 
 Size limits. A fully symbolic scene with k >= 3 has Hurwitz minors no reader can use in
 closed form: for q_i'' = sum_j a_ij N_j + b_i with k = 3, Delta_5 of the Hopf line is 2665
@@ -117,35 +118,24 @@ def _reduce(condition, facts: Facts, symbol, limits) -> sp.Basic:
         args = [_reduce(arg, facts, symbol, limits) for arg in condition.args]
         if isinstance(condition, sp.And):
             flat = [c for arg in args for c in sp.And.make_args(arg)]
-            return sp.And(*_drop_implied_conjuncts(merge_abs(_one_of_each(flat, strict=True)), facts, limits[0]))
+            return sp.And(*_drop_implied_conjuncts(merge_abs(_strict_twins_kept(flat)), facts, limits[0]))
         if isinstance(condition, sp.Or):
-            return sp.Or(*_drop_implied_disjuncts(_absorbed(_one_of_each(args, strict=False)), facts, limits[0]))
+            return sp.Or(*_drop_implied_disjuncts(_absorbed(args), facts, limits[0]))
         return condition.func(*args)
     return condition
 
 
-def _one_of_each(parts: list, strict: bool) -> list:
-    """``parts`` without ``P >= 0`` where ``P > 0`` is a part too (``strict``: in a conjunction), or without
-    ``P > 0`` where ``P >= 0`` is (in a disjunction): the other one of the pair says the same there.
+def _strict_twins_kept(conjuncts: list) -> list:
+    """``conjuncts`` without ``P >= 0`` where ``P > 0`` is a conjunct too: the strict one says both. (In a
+    disjunction the weak one stays; :func:`_absorbed` does that, as one case of a part implying another.)
 
     >>> x = sp.Symbol("x", real=True)
-    >>> _one_of_each([x >= 5, x > 5, x < 9], strict=True), _one_of_each([x >= 5, 5 < x], strict=False)
-    ([x > 5, x < 9], [x >= 5])
+    >>> _strict_twins_kept([x >= 5, x > 5, x < 9])
+    [x > 5, x < 9]
     """
-    found = {}
-    for part in parts:
-        positive = positive_part(part) if isinstance(part, Relational) else None
-        if positive is not None:
-            found.setdefault(sp.expand(positive[0]), set()).add(positive[1])
-    both = {P for P, kinds in found.items() if len(kinds) == 2}
-    if not both:
-        return parts
-
-    def dropped(part) -> bool:
-        positive = positive_part(part) if isinstance(part, Relational) else None
-        return positive is not None and positive[1] != strict and sp.expand(positive[0]) in both
-
-    return [part for part in parts if not dropped(part)]
+    keys = [positive_part(c) if isinstance(c, Relational) else None for c in conjuncts]
+    strict = {sp.expand(k[0]) for k in keys if k is not None and k[1]}
+    return [c for c, k in zip(conjuncts, keys) if k is None or k[1] or sp.expand(k[0]) not in strict]
 
 
 def _implied_parts(part) -> dict | None:
