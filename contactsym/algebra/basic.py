@@ -4,7 +4,8 @@
 - ``reduce_trig``: cos(x)**2 = 1 - sin(x)**2, a polynomial reduction;
 - ``normalize``: the canonical rational form of :mod:`contactsym.algebra.canonical_form` (both
   reductions, one fraction, cancelled; a polynomial in the parameters stays expanded);
-- ``present``: an expression rewritten in a scene's presentation variables.
+- ``present``: an expression rewritten in a scene's presentation variables;
+- ``node_count`` and ``expanded_if_small``: a display's expansion only where it stays readable.
 
 The reductions themselves live in :mod:`contactsym.algebra.reductions`, below the canonical form.
 """
@@ -27,7 +28,14 @@ __all__ = [
     "normalize",
     "known_sign",
     "present",
+    "EXPAND_NODES",
+    "node_count",
+    "expanded_if_small",
 ]
+
+#: Past this many nodes an expression is shown as derived: expanded it only grows (a four-link arm's
+#: contact accelerations, 31712 nodes, took ~30 s to expand for a display that names them anyway).
+EXPAND_NODES = 2000
 
 
 @checked
@@ -72,3 +80,36 @@ def present(expr: sp.Expr, presentation: dict, signs=None) -> sp.Expr:
     if isinstance(replaced, sp.MatrixBase):
         return replaced.applyfunc(lambda e: reduce_signs(sp.cancel(sp.expand(e))))
     return reduce_signs(sp.cancel(sp.expand(replaced)))
+
+
+def node_count(expr: sp.Basic, limit: int) -> int:
+    """The number of nodes of ``expr`` (its preorder traversal), counted up to ``limit + 1`` at most.
+
+    Examples
+    --------
+    >>> x, y = sp.symbols("x y")
+    >>> node_count(x*y + 1, 100), node_count(x*y + 1, 2)
+    (5, 3)
+    """
+    count = 0
+    for count, _ in enumerate(sp.preorder_traversal(expr), 1):
+        if count > limit:
+            break
+    return count
+
+
+def expanded_if_small(expr: sp.Expr, limit: int = EXPAND_NODES) -> sp.Expr:
+    """``sp.expand(expr)`` when ``expr`` has at most ``limit`` nodes, else ``expr`` as it is.
+
+    For display: a formula that large is named, not printed, so expanding it (which can take
+    minutes and multiply its size) buys nothing.
+
+    Examples
+    --------
+    >>> x, y = sp.symbols("x y")
+    >>> expanded_if_small((x + y)**2)
+    x**2 + 2*x*y + y**2
+    >>> expanded_if_small((x + y)**2, limit=3)
+    (x + y)**2
+    """
+    return sp.expand(expr) if node_count(expr, limit) <= limit else expr

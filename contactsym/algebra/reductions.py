@@ -187,6 +187,8 @@ def quotient_sign(expr: sp.Expr, divisor: sp.Expr, positive=()) -> int | None:
 def _quotient_sign(expr: sp.Expr, divisor: sp.Expr, positive: tuple) -> int | None:
     if divisor == 1:
         return _known_sign(expr, positive)
+    if _too_large(expr) or _too_large(divisor):  # before together, which takes seconds on such sizes
+        return None
     (n1, d1), (n2, d2) = sp.fraction(sp.together(expr)), sp.fraction(sp.together(divisor))
     if any(_too_large(e) for e in (n1, n2)):
         return None

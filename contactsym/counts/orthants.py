@@ -118,6 +118,9 @@ def _build(scene) -> SceneMap:
         if unilateral[j] and corner[j] != 0:
             raise ContactsymError(f"the unilateral contact {j + 1} has a corner at u = {corner[j]} != 0.")
 
+    pattern = tuple(scene.fixed_signs.get(s, 1) for s in switching)
+    check_root_size(fast.piece(pattern), pattern, "the equilibrium counts")  # before the A's: a refusal is cheap
+
     def A(flipped: int | None) -> sp.Matrix:
         pattern = tuple(-1 if i == flipped else scene.fixed_signs.get(s, 1) for i, s in enumerate(switching))
         lin = scene.linearization(signs=pattern)
@@ -132,9 +135,7 @@ def _build(scene) -> SceneMap:
             minus[:, j] = sp.eye(len(u))[:, j]
         elif j in owner:
             minus[:, j] = A(owner[j])[:, j]
-    pattern = tuple(scene.fixed_signs.get(s, 1) for s in switching)
     at = dict(zip(u, corner))
-    check_root_size(fast.piece(pattern), pattern, "the equilibrium counts")
     load = fast.piece(pattern).subs(at).applyfunc(normalize)
     return SceneMap(scene, u, plus, minus, tuple(corner), load, unilateral)
 

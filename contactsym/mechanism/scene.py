@@ -14,7 +14,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from ..algebra.basic import known_sign, present
+from ..algebra.basic import expanded_if_small, known_sign, present
 from ..algebra.canonical_form import present_factor
 from ..arguments import checked, require
 from ..errors import SceneError
@@ -400,7 +400,7 @@ class Scene(SceneStages, LatexReprMixin):
             return tuple(rows)  # the contact accelerations are among the accelerations above
         for j, g in enumerate(self.gap_accelerations, 1):
             lhs = r"\ddot{q}" + (f"_{{{j}}}" if self.k > 1 else "")
-            rows.append(row("contact accelerations", lhs, sp.expand(self.freeze(g)), str(j)))
+            rows.append(row("contact accelerations", lhs, expanded_if_small(self.freeze(g)), str(j)))
         return tuple(rows)
 
     def __repr__(self) -> str:

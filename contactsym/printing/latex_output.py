@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
@@ -40,7 +41,18 @@ class _PaperPrinter(LatexPrinter):
     symbols (and functions) named epsilon and phi."""
 
     def _deal_with_super_sub(self, string: str, style: str = "plain") -> str:
-        return re.sub(r"\\(epsilon|phi)(?![A-Za-z])", r"\\var\1", super()._deal_with_super_sub(string, style))
+        # once per name and style: a long formula prints the same symbols many times
+        return _paper_letters(string, style, bool(self._settings.get("disable_split_super_sub")))
+
+
+@lru_cache(maxsize=4096)
+def _paper_letters(string: str, style: str, unsplit: bool) -> str:
+    printer = LatexPrinter({"disable_split_super_sub": True}) if unsplit else _PLAIN  # the one setting read
+    plain = LatexPrinter._deal_with_super_sub(printer, string, style)
+    return re.sub(r"\\(epsilon|phi)(?![A-Za-z])", r"\\var\1", plain)
+
+
+_PLAIN = LatexPrinter()
 
 
 def tex(expr, **settings) -> str:

@@ -27,6 +27,7 @@ from functools import lru_cache
 
 import sympy as sp
 
+from ..algebra.basic import node_count as _nodes
 from ..printing.latex_output import Formula, tex
 from .plain_text import _note
 
@@ -133,12 +134,18 @@ def _describe(expr: sp.Expr) -> str:
         return f"a condition of {_nodes(expr, 10**6)} nodes in {symbols}"
     if _nodes(expr, DESCRIBE_NODES) > DESCRIBE_NODES:  # expanding it could take minutes: its size as derived
         return f"an expression of more than {DESCRIBE_NODES} nodes in {symbols}"
-    numerator, denominator = sp.fraction(sp.together(expr))
-    kind = "a polynomial" if denominator == 1 else "a rational function, numerator"
-    poly = _sparse(numerator, sorted(expr.free_symbols, key=str))
-    if poly is not None:  # a polynomial with rational coefficients: its terms are those of expand
-        degree = max((sum(m) for m in poly.monoms()), default=0)
-        return f"{kind} with {len(poly)} terms of total degree {degree} in {symbols}"
+    # terms counted in the sparse ring of the symbols and their sines and cosines: no expand (and for a
+    # polynomial no together), each ~1 s on the conditions of a four-link arm
+    gens = sorted(expr.free_symbols, key=str) + sorted(expr.atoms(sp.Function), key=sp.default_sort_key)
+    kind, numerator, poly = "a polynomial", expr, _sparse(expr, gens)
+    if poly is None:
+        numerator, denominator = sp.fraction(sp.together(expr))
+        kind = "a polynomial" if denominator.is_number else "a rational function, numerator"
+        poly = _sparse(numerator, gens)
+    if poly is not None:
+        functions = len(gens) > len(expr.free_symbols)  # a degree in sines and cosines would mislead
+        degree = "" if functions else f" of total degree {max((sum(m) for m in poly.monoms()), default=0)}"
+        return f"{kind} with {len(poly)} terms{degree} in {symbols}"
     terms = len(sp.Add.make_args(sp.expand(numerator)))
     try:
         size = f"{terms} terms of total degree {sp.Poly(sp.expand(numerator), *sorted(expr.free_symbols, key=str)).total_degree()}"
@@ -163,7 +170,7 @@ def _cached_tex(expr) -> str:
 def _sparse(expr: sp.Expr, gens: list):
     """``expr`` expanded in the sparse polynomial ring QQ[gens] (in C-like time where ``expand`` and the
     dense ``Poly`` take seconds: the stool's Delta_5, 16414 terms, 1.9 s), or None when it is not such a polynomial."""
-    if not gens:
+    if not gens or not expr.is_polynomial(*gens):  # a failed conversion prints all of expr into its message
         return None
     try:
         ring = sp.ring(gens, sp.QQ)[0]
@@ -388,12 +395,3 @@ def _trial_factored(expr, numerator, cancelled):
     content, primitive = rest.primitive()
     monomial = sp.Mul(*[g**k for g, k in zip(gens, exponents)])
     return content * monomial * sp.Mul(*found) * primitive.as_expr() / sp.factor(sp.fraction(cancelled)[1])
-
-
-def _nodes(expr, limit: int) -> int:
-    """The number of nodes of ``expr``, counted up to ``limit + 1``."""
-    count = 0
-    for count, _ in enumerate(sp.preorder_traversal(expr), 1):
-        if count > limit:
-            break
-    return count

@@ -253,3 +253,35 @@ def test_circle_form_says_when_its_form_is_unique():
         to_fraction((1 + sp.sin(a) + sp.cos(a)) / ((2 + sp.cos(a)) * (1 + sp.sin(a) + sp.cos(a))))
     )
     assert unique is True and fraction.as_expr() == 1 / (sp.cos(a) + 2)
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.lists(
+        st.tuples(
+            st.fractions(min_value=-9, max_value=9, max_denominator=6), st.lists(st.sampled_from(ATOMS), max_size=3)
+        ),
+        min_size=1,
+        max_size=6,
+    )
+)
+def test_a_factor_scaled_in_the_ring_reads_as_by_expanding(terms):
+    from contactsym.algebra.fourier import best_form
+    from contactsym.algebra.trig_field import _roots_back
+
+    poly_expr = sp.Add(*[sp.Rational(c.numerator, c.denominator) * sp.Mul(*atoms) for c, atoms in terms])
+    fraction = to_fraction(poly_expr)
+    for poly in (fraction.numer, fraction.denom):
+        if not poly:
+            continue
+        form, scale = present_factor(poly, fraction.pairs)
+        # the presentation by sympy expressions, written out independently: expand, coefficient gcd and lcm
+        expected = sp.expand(best_form(poly, fraction.pairs))
+        coefficients = [t.as_coeff_Mul()[0] for t in sp.Add.make_args(expected)]
+        numerators, denominators = [abs(c.p) for c in coefficients], [c.q for c in coefficients]
+        expected_scale = sp.Rational(sp.igcd(*numerators, 0), sp.ilcm(*denominators, 1))
+        expected = sp.expand(expected / expected_scale)
+        if expected.could_extract_minus_sign():
+            expected, expected_scale = -expected, -expected_scale
+        assert (form, scale) == (_roots_back(expected), expected_scale)
+        assert canonical(scale * form - poly.as_expr()) == 0

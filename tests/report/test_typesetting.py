@@ -65,6 +65,17 @@ def test_a_long_expression_is_described_by_its_expanded_size():
     assert _describe(product) == f"a polynomial with {terms} terms of total degree 6 in $x$, $y$, $z$"
     assert _describe(product / (x - z)).startswith(f"a rational function, numerator with {terms} terms")
     assert _describe(sp.sqrt(2) * x + x) == "a polynomial with 2 terms of total degree 1 in $x$"
+    assert _describe(product / 6).startswith(f"a polynomial with {terms} terms")  # a number below is no denominator
+
+
+def test_a_polynomial_in_sines_and_cosines_is_described_by_its_terms():
+    from contactsym.report.typesetting import _describe
+
+    q, m = sp.symbols("q m")
+    trig = (sp.sin(q) + m * sp.cos(q) + 1) ** 3 / 4 - m * sp.sin(q) ** 2
+    terms = len(sp.Add.make_args(sp.expand(trig)))  # expand keeps sin and cos as they are: the same terms
+    assert _describe(trig) == f"a polynomial with {terms} terms in $m$, $q$"
+    assert _describe(trig / (m + sp.cos(q))).startswith("a rational function, numerator with")
 
 
 def test_a_polynomial_of_hundreds_of_terms_is_shown_as_derived():
