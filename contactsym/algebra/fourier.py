@@ -15,7 +15,7 @@ import sympy as sp
 
 from ..arguments import checked
 
-__all__ = ["best_form"]
+__all__ = ["best_form", "fourier_sum", "shorter_fourier_terms"]
 
 
 def _fourier_terms(poly, pairs) -> dict:
@@ -60,8 +60,8 @@ def _fourier_terms(poly, pairs) -> dict:
     return terms
 
 
-def _fourier(terms: dict, ring, pairs) -> sp.Expr:
-    """The sympy expression of :func:`_fourier_terms`."""
+def fourier_sum(terms: dict, ring, pairs) -> sp.Expr:
+    """The sympy expression of Fourier terms (see :func:`shorter_fourier_terms`), already expanded."""
     angles = [ring.symbols[s].args[0] for _, s in pairs]
     total = []
     for (k, rest), (cosine, sine) in terms.items():
@@ -103,6 +103,19 @@ def _negative_first(k: tuple) -> bool:
 _FOURIER_LIMIT = 3000
 
 
+def shorter_fourier_terms(poly, pairs) -> dict | None:
+    """{(k, other exponents): (a, b)} of the Fourier sum of ``poly`` (a cos(k.q) + b sin(k.q), exact
+    fractions) when that sum has fewer terms than ``poly``; None when it has not, or ``poly`` has no
+    sine or cosine, or more than ``_FOURIER_LIMIT`` terms (a form nobody reads whole)."""
+    if not pairs or not any(poly.degree(c) > 0 or poly.degree(s) > 0 for c, s in pairs):
+        return None
+    if len(poly) > _FOURIER_LIMIT:
+        return None
+    terms = _fourier_terms(poly, pairs)
+    count = sum(bool(a) + bool(b) for a, b in terms.values())
+    return terms if count < len(poly.terms()) else None
+
+
 @checked(poly="PolyElement", pairs="Sequence[tuple[int, int]]")
 def best_form(poly, pairs) -> sp.Expr:
     """The polynomial in sin q_i, cos q_i, or its Fourier sum when that has fewer terms.
@@ -119,10 +132,5 @@ def best_form(poly, pairs) -> sp.Expr:
     >>> poly.as_expr(), best_form(poly, K.pairs)
     (1 - 2*sin(x)**2, cos(2*x))
     """
-    if not pairs or not any(poly.degree(c) > 0 or poly.degree(s) > 0 for c, s in pairs):
-        return poly.as_expr()
-    if len(poly) > _FOURIER_LIMIT:  # a form nobody reads whole: not worth the conversion
-        return poly.as_expr()
-    terms = _fourier_terms(poly, pairs)
-    count = sum(bool(a) + bool(b) for a, b in terms.values())
-    return _fourier(terms, poly.ring, pairs) if count < len(poly.terms()) else poly.as_expr()
+    terms = shorter_fourier_terms(poly, pairs)
+    return poly.as_expr() if terms is None else fourier_sum(terms, poly.ring, pairs)

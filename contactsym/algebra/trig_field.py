@@ -29,6 +29,7 @@ Examples
 
 from __future__ import annotations
 
+from fractions import Fraction
 from functools import reduce
 
 import sympy as sp
@@ -38,7 +39,7 @@ from sympy.polys.fields import FracField
 from ..arguments import checked
 from ..parse import sympy_only
 from .coprime import cancel
-from .fourier import best_form
+from .fourier import fourier_sum, shorter_fourier_terms
 from .reductions import SignSymbol, known_sign
 
 __all__ = ["TrigField", "TrigFraction", "present_factor", "to_fraction"]
@@ -172,32 +173,22 @@ def present_factor(poly, pairs) -> tuple[sp.Expr, sp.Rational]:
     coprime coefficients and a fixed sign, so one polynomial always reads the same."""
     if not poly:
         return sp.S.Zero, sp.S.One
-    form = best_form(poly, pairs)
-    if form == poly.as_expr():  # no Fourier sum: the scale from the ring's coefficients, not by expanding
-        return _scaled_in_ring(poly)
-    form = sp.expand(form)
-    terms = sp.Add.make_args(form)
-    coefficients = [t.as_coeff_Mul()[0] for t in terms]
+    terms = shorter_fourier_terms(poly, pairs)
+    if terms is None:  # shown as it is: the coefficients divided in the ring
+        coefficients = [(int(poly.ring.domain.numer(c)), int(poly.ring.domain.denom(c))) for c in poly.coeffs()]
+    else:
+        coefficients = [(x.numerator, x.denominator) for pair in terms.values() for x in pair if x]
+    # the scale from the coefficients themselves: no expand of a sum of thousands of terms (~6 s of a
+    # four-link arm's report, twice per factor)
     scale = sp.Rational(
-        sp.igcd(*[c.p for c in coefficients]) if len(coefficients) > 1 else abs(coefficients[0].p),
-        sp.ilcm(*[c.q for c in coefficients]) if len(coefficients) > 1 else coefficients[0].q,
+        reduce(sp.igcd, [abs(p) for p, _ in coefficients]), reduce(sp.ilcm, [q for _, q in coefficients])
     )
-    form = sp.expand(form / scale)
-    if form.could_extract_minus_sign():
-        form, scale = -form, -scale
-    return _roots_back(form), scale
-
-
-def _scaled_in_ring(poly) -> tuple[sp.Expr, sp.Rational]:
-    """present_factor of a polynomial shown as it is: the same form and scale, its coefficients divided in
-    the ring (two expands of a sum of thousands of terms took ~6 s of a four-link arm's report)."""
-    domain = poly.ring.domain
-    coefficients = poly.coeffs()
-    scale = sp.Rational(
-        reduce(sp.igcd, [abs(int(domain.numer(c))) for c in coefficients]),
-        reduce(sp.ilcm, [int(domain.denom(c)) for c in coefficients]),
-    )
-    form = poly.mul_ground(domain.convert(scale.q)).quo_ground(domain.convert(scale.p)).as_expr()
+    if terms is None:
+        domain = poly.ring.domain
+        form = poly.mul_ground(domain.convert(scale.q)).quo_ground(domain.convert(scale.p)).as_expr()
+    else:
+        ratio = Fraction(scale.q, scale.p)
+        form = fourier_sum({key: (a * ratio, b * ratio) for key, (a, b) in terms.items()}, poly.ring, pairs)
     if form.could_extract_minus_sign():
         form, scale = -form, -scale
     return _roots_back(form), scale

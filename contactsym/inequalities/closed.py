@@ -133,9 +133,9 @@ def _strict_twins_kept(conjuncts: list) -> list:
     >>> _strict_twins_kept([x >= 5, x > 5, x < 9])
     [x > 5, x < 9]
     """
-    keys = [positive_part(c) if isinstance(c, Relational) else None for c in conjuncts]
-    strict = {sp.expand(k[0]) for k in keys if k is not None and k[1]}
-    return [c for c, k in zip(conjuncts, keys) if k is None or k[1] or sp.expand(k[0]) not in strict]
+    keys = [positive_part(c) if isinstance(c, Relational) else None for c in conjuncts]  # P expanded
+    strict = {k[0] for k in keys if k is not None and k[1]}
+    return [c for c, k in zip(conjuncts, keys) if k is None or k[1] or k[0] not in strict]
 
 
 def _implied_parts(part) -> dict | None:
@@ -145,7 +145,7 @@ def _implied_parts(part) -> dict | None:
         positive = positive_part(conjunct) if isinstance(conjunct, Relational) else None
         if positive is None:
             return None
-        P = sp.expand(positive[0])
+        P = positive[0]  # expanded
         found[P] = found.get(P, False) or positive[1]
     return found
 

@@ -7,6 +7,7 @@ the symbols and the expressions listed as positive; none calls ``simplify``.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import sympy as sp
 from sympy.core.relational import Relational
@@ -101,6 +102,12 @@ def positive_part(rel: sp.Basic) -> tuple[sp.Expr, bool] | None:
     """
     if not isinstance(rel, _ORDER):
         return None
+    return _positive_part(rel)
+
+
+@lru_cache(maxsize=1024)
+def _positive_part(rel: Relational) -> tuple[sp.Expr, bool]:
+    # once per relation: closed forms compare the parts of large conditions pairwise, at every level
     expr, op = as_positive_relation(rel)
     return sp.expand(expr), op is sp.StrictGreaterThan
 

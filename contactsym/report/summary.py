@@ -18,6 +18,7 @@ import weakref
 
 import sympy as sp
 
+from ..algebra.basic import node_count
 from ..algebra.reductions import known_sign, quotient_sign
 from ..errors import ContactsymError
 from ..mechanism.scene import Scene, paper_equations
@@ -25,7 +26,7 @@ from ..stages.regions import REGION_NAMES, Region
 from ..stages.stability import UNDECIDED_TEX, hurwitz_names
 from ..validate import cut, instance_of, sign_pattern
 from .scene_parts import _count_tag
-from .typesetting import _tex
+from .typesetting import UNORDERED_NODES, _tex
 
 __all__ = ["always_positive", "conditions", "summary_text"]
 
@@ -39,7 +40,8 @@ def _counts(scene) -> tuple[dict[str, Region], str]:
 
 
 def _entry(expr, paper=(), note="") -> dict:
-    entry = {"sympy": sp.sstr(expr), "latex": _tex(expr)}  # printed once: the report displays many of them
+    large = node_count(expr, UNORDERED_NODES) > UNORDERED_NODES  # its terms printed unsorted, as by _tex
+    entry = {"sympy": sp.sstr(expr, order="none" if large else None), "latex": _tex(expr)}  # _tex: printed once
     if paper:
         entry["paper"] = [f"({number})" for number in paper]
     if note:

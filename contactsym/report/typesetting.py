@@ -139,9 +139,11 @@ def _describe(expr: sp.Expr) -> str:
     gens = sorted(expr.free_symbols, key=str) + sorted(expr.atoms(sp.Function), key=sp.default_sort_key)
     kind, numerator, poly = "a polynomial", expr, _sparse(expr, gens)
     if poly is None:
-        numerator, denominator = sp.fraction(sp.together(expr))
+        numerator, denominator = sp.fraction(expr)  # already P/Q (a product), or a sum to bring together
+        if (poly := _sparse(numerator, gens)) is None or _sparse(denominator, gens) is None:
+            numerator, denominator = sp.fraction(sp.together(expr))
+            poly = _sparse(numerator, gens)
         kind = "a polynomial" if denominator.is_number else "a rational function, numerator"
-        poly = _sparse(numerator, gens)
     if poly is not None:
         functions = len(gens) > len(expr.free_symbols)  # a degree in sines and cosines would mislead
         degree = "" if functions else f" of total degree {max((sum(m) for m in poly.monoms()), default=0)}"
@@ -162,9 +164,14 @@ def _tex(expr) -> str:
         return tex(expr)
 
 
+#: Past this many nodes a formula is printed with its terms in SymPy's internal order: sorting them is
+#: ~30% of the printing (seconds for a four-link arm's conditions), and nobody reads such a formula whole.
+UNORDERED_NODES = 5000
+
+
 @lru_cache(maxsize=4096)
 def _cached_tex(expr) -> str:
-    return tex(expr)
+    return tex(expr, order="none") if _nodes(expr, UNORDERED_NODES) > UNORDERED_NODES else tex(expr)
 
 
 def _sparse(expr: sp.Expr, gens: list):
