@@ -141,6 +141,8 @@ def _describe(expr: sp.Expr) -> str:
     if poly is None:
         numerator, denominator = sp.fraction(expr)  # already P/Q (a product), or a sum to bring together
         if (poly := _sparse(numerator, gens)) is None or _sparse(denominator, gens) is None:
+            poly, denominator = _over_one_denominator(expr, gens) or (None, None)
+        if poly is None:
             numerator, denominator = sp.fraction(sp.together(expr))
             poly = _sparse(numerator, gens)
         kind = "a polynomial" if denominator.is_number else "a rational function, numerator"
@@ -154,6 +156,22 @@ def _describe(expr: sp.Expr) -> str:
     except sp.PolynomialError:
         size = f"{terms} terms"
     return f"{kind} with {size} in {symbols}"
+
+
+def _over_one_denominator(expr: sp.Expr, gens: list):
+    """(numerator in the sparse ring, Q) of a sum of fractions P_i / (c_i Q), numbers c_i: the numerator
+    ``together`` gives, added in the ring (together took ~1 s for each of a four-link arm's f_j); or None."""
+    if not isinstance(expr, sp.Add) or not gens:
+        return None
+    parts = [sp.fraction(term) for term in expr.args]
+    denominator = parts[0][1]
+    numerator = _sparse(sp.S.Zero, gens)
+    for p, q in parts:
+        ratio, poly = denominator / q, _sparse(p, gens)
+        if poly is None or not ratio.is_Rational:
+            return None
+        numerator += poly * poly.ring.domain.convert(ratio)
+    return numerator, denominator
 
 
 def _tex(expr) -> str:

@@ -43,7 +43,7 @@ import sympy as sp
 from sympy.core.relational import Relational
 
 from .. import inequalities
-from ..algebra.basic import known_sign
+from ..algebra.basic import known_sign, node_count
 from ..algebra.hurwitz import expansion_bound
 from ..arguments import checked
 from ..errors import ArgumentError, SceneError
@@ -59,6 +59,8 @@ RAW_OPS = inequalities.RAW_OPS
 FACTOR_TERMS = inequalities.FACTOR_TERMS
 #: Relations whose expansion may have more terms are kept as derived: see the module docstring.
 RAW_TERMS = 2000
+#: Past this many nodes a region is compiled for :meth:`Region.evaluate` with its common subexpressions shared.
+SHARED_NODES = 2000
 
 
 def closed_form(condition, scene=None, solve_for: sp.Symbol | None = None, signs=None) -> sp.Basic:
@@ -239,7 +241,10 @@ class Region:
     @cached_property
     def _compiled(self):
         symbols = sorted(self.condition.free_symbols, key=str)
-        return symbols, sp.lambdify(symbols, self.condition, modules="numpy")
+        # a large condition shares its subexpressions (common subexpression elimination): a four-link
+        # arm's conditions, 200 x 200 points, 16 s -> 7 s with the compilation; a small one as written
+        shared = node_count(self.condition, SHARED_NODES) > SHARED_NODES
+        return symbols, sp.lambdify(symbols, self.condition, modules="numpy", cse=shared)
 
     @checked
     def evaluate(self, **arrays) -> np.ndarray:

@@ -76,6 +76,11 @@ def test_a_polynomial_in_sines_and_cosines_is_described_by_its_terms():
     terms = len(sp.Add.make_args(sp.expand(trig)))  # expand keeps sin and cos as they are: the same terms
     assert _describe(trig) == f"a polynomial with {terms} terms in $m$, $q$"
     assert _describe(trig / (m + sp.cos(q))).startswith("a rational function, numerator with")
+    # a sum of fractions over one denominator (up to numbers), added in the ring: the count together gives
+    d = m + sp.cos(q)
+    sum_ = trig / d + (sp.sin(q) * m - 1) / (3 * d) - sp.cos(q) ** 2 * m / (2 * d)
+    together = len(sp.Add.make_args(sp.expand(sp.fraction(sp.together(sum_))[0])))
+    assert _describe(sum_).startswith(f"a rational function, numerator with {together} terms in")
 
 
 def test_a_polynomial_of_hundreds_of_terms_is_shown_as_derived():
