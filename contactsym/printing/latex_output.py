@@ -32,13 +32,14 @@ import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
 from ..errors import ArgumentError, ContactsymError
+from .shared import SharedPrinting
 
 __all__ = ["Formula", "LatexReprMixin", "Numbering", "formulas", "latex", "prime", "signs_latex", "tex"]
 
 
-class _PaperPrinter(LatexPrinter):
+class _PaperPrinter(SharedPrinting, LatexPrinter):
     """SymPy's LaTeX printer with the paper's letters: \\varepsilon and \\varphi for the
-    symbols (and functions) named epsilon and phi."""
+    symbols (and functions) named epsilon and phi; each compound part printed once (:mod:`.shared`)."""
 
     def _deal_with_super_sub(self, string: str, style: str = "plain") -> str:
         # once per name and style: a long formula prints the same symbols many times

@@ -22,6 +22,7 @@ from ..algebra.basic import node_count
 from ..algebra.reductions import known_sign, quotient_sign
 from ..errors import ContactsymError
 from ..mechanism.scene import Scene, paper_equations
+from ..printing.shared import sstr_shared
 from ..stages.regions import REGION_NAMES, Region
 from ..stages.stability import UNDECIDED_TEX, hurwitz_names
 from ..validate import cut, instance_of, sign_pattern
@@ -41,7 +42,7 @@ def _counts(scene) -> tuple[dict[str, Region], str]:
 
 def _entry(expr, paper=(), note="") -> dict:
     large = node_count(expr, UNORDERED_NODES) > UNORDERED_NODES  # its terms printed unsorted, as by _tex
-    entry = {"sympy": sp.sstr(expr, order="none" if large else None), "latex": _tex(expr)}  # _tex: printed once
+    entry = {"sympy": sstr_shared(expr, order="none" if large else None), "latex": _tex(expr)}  # _tex: printed once
     if paper:
         entry["paper"] = [f"({number})" for number in paper]
     if note:
