@@ -158,6 +158,16 @@ def main(argv: list[str]) -> int:
         _use_the_naive_way()
     started, cpu = time.perf_counter(), time.process_time()
     scene = build(target)
+    if mode == "report":  # the whole report, the PDF too where pdflatex is installed
+        import tempfile
+
+        from contactsym.report import write_report
+
+        with tempfile.TemporaryDirectory() as directory:
+            pdf = write_report(scene, Path(directory) / "report").pdf is not None
+        seconds, cpu_s = time.perf_counter() - started, time.process_time() - cpu
+        print(json.dumps({"seconds": seconds, "cpu_s": cpu_s, "pdf": pdf}))
+        return 0
     lin = scene.linearization()
     st = scene.stability()
     conditions = st.hurwitz

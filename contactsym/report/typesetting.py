@@ -129,10 +129,12 @@ DESCRIBE_NODES = 20000
 
 def _describe(expr: sp.Expr) -> str:
     """A short description of a long expression: its kind, number of terms and symbols."""
-    symbols = ", ".join(f"${tex(s)}$" for s in sorted(expr.free_symbols, key=str))
+    large = _nodes(expr, DESCRIBE_NODES) > DESCRIBE_NODES
+    # a large one is read once per distinct part (a four-link arm's largest, 10^6 nodes as a tree, has 3000)
+    symbols = ", ".join(f"${tex(s)}$" for s in sorted(_symbols_once(expr) if large else expr.free_symbols, key=str))
     if not isinstance(expr, sp.Expr):  # a condition (And, Or, Not of relations): nothing to expand
         return f"a condition of {_nodes(expr, 10**6)} nodes in {symbols}"
-    if _nodes(expr, DESCRIBE_NODES) > DESCRIBE_NODES:  # expanding it could take minutes: its size as derived
+    if large:  # expanding it could take minutes: its size as derived
         return f"an expression of more than {DESCRIBE_NODES} nodes in {symbols}"
     # terms counted in the sparse ring of the symbols and their sines and cosines: no expand (and for a
     # polynomial no together), each ~1 s on the conditions of a four-link arm
@@ -156,6 +158,20 @@ def _describe(expr: sp.Expr) -> str:
     except sp.PolynomialError:
         size = f"{terms} terms"
     return f"{kind} with {size} in {symbols}"
+
+
+def _symbols_once(expr: sp.Basic) -> set:
+    """The symbols of ``expr`` (it binds none), each distinct subexpression visited once."""
+    seen, found, stack = set(), set(), [expr]
+    while stack:
+        node = stack.pop()
+        if id(node) not in seen:
+            seen.add(id(node))
+            if node.is_Symbol:
+                found.add(node)
+            else:
+                stack.extend(node.args)
+    return found
 
 
 def _over_one_denominator(expr: sp.Expr, gens: list):

@@ -92,3 +92,14 @@ def test_a_polynomial_of_hundreds_of_terms_is_shown_as_derived():
     assert _tidy(long) is long  # not cancelled, expanded or factored for a page it cannot fit
     short = (x[0] ** 2 - x[1] ** 2) / (x[0] + x[1])
     assert _tidy(short) == x[0] - x[1]  # a small one is still cancelled
+
+
+def test_a_very_long_expression_names_its_symbols_from_its_distinct_parts():
+    from contactsym.report.typesetting import DESCRIBE_NODES, _describe, _nodes
+
+    x, y, z, w = sp.symbols("x y z w")
+    shared = sp.Add(*[(x + k * y) ** 3 for k in range(50)])  # one part repeated: a tree of many more nodes
+    expr = sp.Add(*[shared * sp.sin(k * z) for k in range(1, 300)]) + w
+    assert _nodes(expr, DESCRIBE_NODES) > DESCRIBE_NODES
+    listed = ", ".join(f"${s}$" for s in sorted(map(str, expr.free_symbols)))
+    assert _describe(expr) == f"an expression of more than {DESCRIBE_NODES} nodes in {listed}"
