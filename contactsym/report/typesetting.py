@@ -28,6 +28,7 @@ from functools import lru_cache
 import sympy as sp
 
 from ..algebra.basic import node_count as _nodes
+from ..algebra.hurwitz import expansion_bound
 from ..printing.latex_output import Formula, tex
 from .plain_text import _note
 
@@ -125,6 +126,9 @@ class _Named:
 
 #: Long expressions beyond this many nodes are described by their size as derived, not expanded.
 DESCRIBE_NODES = 20000
+#: A polynomial that may have more terms than this once expanded (read off its tree) is described by that bound:
+#: expanding a fixed-value four-link arm's Hurwitz determinant to its 148762 terms to count them took 8 s.
+DESCRIBE_TERMS = 10**6
 
 
 def _describe(expr: sp.Expr) -> str:
@@ -139,6 +143,8 @@ def _describe(expr: sp.Expr) -> str:
     # terms counted in the sparse ring of the symbols and their sines and cosines: no expand (and for a
     # polynomial no together), each ~1 s on the conditions of a four-link arm
     gens = sorted(expr.free_symbols, key=str) + sorted(expr.atoms(sp.Function), key=sp.default_sort_key)
+    if expr.is_polynomial(*gens) and (bound := expansion_bound(expr)) > DESCRIBE_TERMS:
+        return f"a polynomial of up to {bound} terms once expanded (a product of long sums, kept whole) in {symbols}"
     kind, numerator, poly = "a polynomial", expr, _sparse(expr, gens)
     if poly is None:
         numerator, denominator = sp.fraction(expr)  # already P/Q (a product), or a sum to bring together

@@ -103,3 +103,17 @@ def test_a_very_long_expression_names_its_symbols_from_its_distinct_parts():
     assert _nodes(expr, DESCRIBE_NODES) > DESCRIBE_NODES
     listed = ", ".join(f"${s}$" for s in sorted(map(str, expr.free_symbols)))
     assert _describe(expr) == f"an expression of more than {DESCRIBE_NODES} nodes in {listed}"
+
+
+def test_a_product_of_long_sums_is_described_by_its_bound_not_expanded():
+    from contactsym.algebra.hurwitz import expansion_bound
+    from contactsym.report.typesetting import DESCRIBE_TERMS, _describe
+
+    xs = sp.symbols("x_1:9")
+    factors = [sp.Add(*[(k + j) * x for j, x in enumerate(xs)], k) for k in range(1, 8)]
+    product = sp.Mul(*factors)  # 9^7 products of terms: more than DESCRIBE_TERMS before they combine
+    assert expansion_bound(product) > DESCRIBE_TERMS
+    assert _describe(product).startswith(f"a polynomial of up to {expansion_bound(product)} terms once expanded")
+    small = sp.Mul(*factors[:3])  # 729 products, expanded and counted
+    terms = len(sp.Add.make_args(sp.expand(small)))
+    assert _describe(small).startswith(f"a polynomial with {terms} terms of total degree 3")
