@@ -34,11 +34,15 @@ class SharedPrinting:
     def _print(self, expr, **kwargs):
         if kwargs or not isinstance(expr, sp.Basic) or expr.is_Atom:
             return super()._print(expr, **kwargs)
-        try:
-            key = (type(self), expr, _settings_key(self._settings))
-            hash(key)
-        except TypeError:  # a setting that cannot be a key: printed as usual
+        if "_shared_settings" not in self.__dict__:  # once per printer: its settings do not change
+            try:
+                self._shared_settings = (type(self), _settings_key(self._settings))
+                hash(self._shared_settings)
+            except TypeError:  # a setting that cannot be a key: printed as usual
+                self._shared_settings = None
+        if self._shared_settings is None:
             return super()._print(expr)
+        key = (expr, self._shared_settings)
         if key not in _MEMO:
             if len(_MEMO) >= MEMO_SIZE:
                 _MEMO.clear()
