@@ -58,8 +58,12 @@ def _principal_minors(A: sp.Matrix) -> dict:
 
 
 @checked
-def regions(A: sp.Matrix, vertices: bool = False) -> dict[str, sp.Basic]:
+def regions(A: sp.Matrix, vertices: bool = False, minors: dict | None = None) -> dict[str, sp.Basic]:
     """Closed-form regions, any k, in the entries of A (all sufficient for what they name).
+
+    ``minors`` gives A's principal minors {S: det A_S} in the canonical form when they are known (a
+    scene's :attr:`~contactsym.stages.linear.Linearization.principal_minors`, one polynomial over
+    det M each), so that they are not expanded again from A's entries.
 
     - ``"unstable for every law"``: some p_s has all coefficients <= 0 (P2): for the weight
       w = 2k - s, every principal minor of a size in [w/2, min(w, k)] is <= 0;
@@ -76,8 +80,13 @@ def regions(A: sp.Matrix, vertices: bool = False) -> dict[str, sp.Basic]:
     >>> regions(sp.Matrix([[a, 1], [-1, b]]))["unstable law exists"]
     (a < 0) | (b < 0) | (a*b + 1 < 0)
     """
-    minors = _principal_minors(A)
     k = A.rows
+    if minors is None:
+        minors = _principal_minors(A)
+    else:
+        subsets = {S for r in range(1, k + 1) for S in itertools.combinations(range(k), r)}
+        require(subsets <= set(minors), "regions", "minors", minors, "every principal minor {(0,): det A_0, ...}")
+        minors = {S: minors[S] for S in sorted(subsets, key=lambda S: (len(S), S))}  # the order _principal_minors has
     unstable = []
     for weight in range(1, 2 * k + 1):
         sizes = range((weight + 1) // 2, min(weight, k) + 1)

@@ -213,6 +213,12 @@ class Linearization(LatexReprMixin):
         return minors.field.present(minors.minor(tuple(range(self.fast.k))))
 
     @cached_property
+    def principal_minors(self) -> dict:
+        """{S: det A_S} for every subset S of the contacts, in the canonical form (see
+        :func:`principal_minors`: with the scene's factors, each one polynomial over det M)."""
+        return principal_minors(self._minors_source, self.factors)
+
+    @cached_property
     def factors(self) -> tuple | None:
         """(M, W, V) with A = W^T M^-1 V for a scene built in contact space, else None."""
         jacobian_factors = getattr(self.fast, "jacobian_factors", None)

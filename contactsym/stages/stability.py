@@ -83,12 +83,12 @@ _STATEMENTS = (
 UNDECIDED_TEX = r"\text{undecided}"
 
 
-def robustness_regions(A: sp.Matrix) -> dict:
+def robustness_regions(A: sp.Matrix, minors: dict | None = None) -> dict:
     """:func:`contactsym.robustness.classify.regions`, imported when first needed (k >= 3): it brings
     scipy.optimize, a second of import time that scenes with k <= 2 never pay."""
     from ..robustness.classify import regions  # scipy.optimize: imported for k >= 3 only
 
-    return regions(A)
+    return regions(A, minors=minors)
 
 
 def _gt(expr) -> sp.Basic:
@@ -161,7 +161,7 @@ class Stability(LatexReprMixin):
     @cached_property
     def _closed(self) -> dict | None:
         """The closed-form regions of :func:`contactsym.robustness.classify.regions` (k >= 3)."""
-        return robustness_regions(self.A) if self.k >= 3 else None
+        return robustness_regions(self.A, self.linearization.principal_minors) if self.k >= 3 else None
 
     @cached_property
     def _classification(self) -> tuple:

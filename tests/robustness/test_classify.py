@@ -307,3 +307,26 @@ def test_report_and_latex_show_the_point_decision():
         assert all(sp.sympify(c) > 0 for c in Hurwitz(charpoly(A, Phi, Psi)).conditions) == stable
     text = latex(scene.stability())
     assert r"\text{robustness}" in text and r"(\Phi, \Psi)_{\text{unstable}}" in text
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.integers(-3, 3), min_size=9, max_size=9), st.integers(0, 8))
+def test_regions_from_given_minors_are_the_regions_from_A(entries, symbolic):
+    """regions(A, minors=...) (a scene passes its factored minors) says what regions(A) says, with the
+    minors computed independently here by SymPy's determinant."""
+    import itertools
+
+    from contactsym.robustness.closed_form import regions
+
+    a = sp.Symbol("a", real=True)
+    A = sp.Matrix(3, 3, [a if i == symbolic else e for i, e in enumerate(entries)])
+    minors = {
+        S: sp.expand(A.extract(list(S), list(S)).det()) for r in range(1, 4) for S in itertools.combinations(range(3), r)
+    }
+    given_minors, derived = regions(A, minors=minors), regions(A)
+    assert given_minors.keys() == derived.keys()
+    for name in derived:  # the same conditions (both forms of each minor are expanded polynomials in a)
+        for value in (-2, sp.Rational(-1, 3), 0, sp.Rational(1, 2), 3):
+            assert bool(given_minors[name].subs(a, value)) == bool(derived[name].subs(a, value))
+    with pytest.raises(cs.ArgumentError, match="principal minor"):
+        regions(A, minors={(0,): A[0, 0]})
