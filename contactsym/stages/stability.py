@@ -168,7 +168,10 @@ class Stability(LatexReprMixin):
         """The regions where each statement is proved (Propositions 3-8 and the closed forms):
         :func:`contactsym.stages.classification.proved_regions`."""
         positive = self.linearization.fast.positive
-        return proved_regions(self._sign_matrix, self.linearization.det_A, self._closed, positive)
+        leading = None
+        if self.k >= 3:  # det A[:m, :m] from the minors the scene has (factored over det M), not from A again
+            leading = [self.linearization.principal_minors[tuple(range(m))] for m in range(1, self.k + 1)]
+        return proved_regions(self._sign_matrix, self.linearization.det_A, self._closed, positive, leading=leading)
 
     @cached_property
     def _multiple(self) -> tuple | None:
