@@ -31,11 +31,12 @@ from ..printing.latex_output import Formula, formulas, tex
 from ..scenes import paper_name
 from ..validate import checked_fields, cut, instance_of
 from .derivation import _chain, _section
+from .descriptions import describe
 from .errata import AGREE, latex_table, text_to_latex
 from .plain_text import _escape
 from .scene_parts import _count_tag, _special_cases
 from .summary import ADVICE, _counts
-from .typesetting import _describe, _display, _Named
+from .typesetting import _display, _Named
 
 __all__ = ["Figure", "report_tex"]
 
@@ -154,7 +155,7 @@ def _named_section(named: _Named) -> str:
     lines = [r"\paragraph{Long expressions.} Too long to print here; in full in \texttt{conditions.json}:"]
     lines.append(r"\begin{itemize}")
     for symbol, expr in named.items:
-        lines.append(f"\\item ${tex(symbol)}$: " + _describe(expr) + ".")
+        lines.append(f"\\item ${tex(symbol)}$: " + describe(expr) + ".")
     lines.append(r"\end{itemize}")
     return "\n".join(lines)
 

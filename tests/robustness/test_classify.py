@@ -321,7 +321,9 @@ def test_regions_from_given_minors_are_the_regions_from_A(entries, symbolic):
     a = sp.Symbol("a", real=True)
     A = sp.Matrix(3, 3, [a if i == symbolic else e for i, e in enumerate(entries)])
     minors = {
-        S: sp.expand(A.extract(list(S), list(S)).det()) for r in range(1, 4) for S in itertools.combinations(range(3), r)
+        S: sp.expand(A.extract(list(S), list(S)).det())
+        for r in range(1, 4)
+        for S in itertools.combinations(range(3), r)
     }
     given_minors, derived = regions(A, minors=minors), regions(A)
     assert given_minors.keys() == derived.keys()
