@@ -70,41 +70,29 @@ def mechanism_table(quick: bool) -> list[dict]:
             for kind in ("rods", "points")
             for suffix in ("", "-fixed")
         ]
-    records = []
-    for target in targets:
-        ours = _in_tree(ROOT, target, limit)
-        base = _in_tree(Path(BASELINE), target, base_limit) if BASELINE else None
-        ours_s = ours["seconds"] if ours else limit
-        base_s = (base["seconds"] if base else base_limit) if BASELINE else None
-        notes = [
-            f"ours: Hurwitz {ours['hurwitz_s']:.1f} s (CPU {ours.get('hurwitz_cpu_s', float('nan')):.1f} s), ops A {ours['ops_A']}"
-            if ours
-            else f"ours: not in {limit:.0f} s"
-        ]
-        if BASELINE:
-            notes.append(f"baseline: {base['seconds']:.1f} s" if base else f"baseline: not in {base_limit:.0f} s")
-        if target in TARGETS:
-            notes.append(f"target < {TARGETS[target]:.0f} s")
-        records.append(record(f"mechanisms/{target}", ours_s, base_s, None, None, "; ".join(notes)))
-    return records + [_report_record(target, limit, base_limit) for target in (["arm"] if not quick else [])]
+    records = [_mechanism_record(target, limit, base_limit) for target in targets]
+    return records + [_mechanism_record(target, limit, base_limit, "report") for target in ([] if quick else ["arm"])]
 
 
-def _report_record(target: str, limit: float, base_limit: float) -> dict:
-    """The scene file to the whole report (``write_report``, the PDF where pdflatex is installed)."""
-    ours = _in_tree(ROOT, target, limit, "report")
-    base = _in_tree(Path(BASELINE), target, base_limit, "report") if BASELINE else None
-    notes = [
-        f"write_report, CPU {ours['cpu_s']:.1f} s, PDF {'made' if ours['pdf'] else 'not made (no pdflatex)'}"
-        if ours
-        else f"not in {limit:.0f} s"
-    ]
+def _mechanism_record(target: str, limit: float, base_limit: float, mode: str = "ours") -> dict:
+    """One row: ``target`` to its Hurwitz conditions and robust classification (mode ``ours``), or to the
+    whole report (mode ``report``: ``write_report``, the PDF where pdflatex is installed), against BASELINE."""
+    ours = _in_tree(ROOT, target, limit, mode)
+    base = _in_tree(Path(BASELINE), target, base_limit, mode) if BASELINE else None
+    name = target if mode == "ours" else f"{target} report"
+    if not ours:
+        notes = [f"ours: not in {limit:.0f} s"]
+    elif mode == "ours":
+        hurwitz_cpu = ours.get("hurwitz_cpu_s", float("nan"))
+        notes = [f"ours: Hurwitz {ours['hurwitz_s']:.1f} s (CPU {hurwitz_cpu:.1f} s), ops A {ours['ops_A']}"]
+    else:
+        notes = [f"write_report, CPU {ours['cpu_s']:.1f} s, PDF {'made' if ours['pdf'] else 'not made (no pdflatex)'}"]
     if BASELINE:
         notes.append(f"baseline: {base['seconds']:.1f} s" if base else f"baseline: not in {base_limit:.0f} s")
-    notes.append(f"target < {TARGETS[f'{target} report']:.0f} s")
+    if name in TARGETS:
+        notes.append(f"target < {TARGETS[name]:.0f} s")
     base_s = (base["seconds"] if base else base_limit) if BASELINE else None
-    return record(
-        f"mechanisms/{target} report", ours["seconds"] if ours else limit, base_s, None, None, "; ".join(notes)
-    )
+    return record(f"mechanisms/{name}", ours["seconds"] if ours else limit, base_s, None, None, "; ".join(notes))
 
 
 def _worker(mode: str, target: str, timeout: float) -> dict | None:
