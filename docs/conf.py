@@ -60,7 +60,8 @@ numpydoc_validation_checks: set[str] = set()
 myst_enable_extensions = ["dollarmath", "amsmath"]
 myst_heading_anchors = 3
 # Notebooks are executed when the site is built, so their figures are this checkout's; a cell
-# that fails fails the build.
+# that fails fails the build. CONTACTSYM_DOCS_EXECUTE=off renders them as committed (the suite's
+# build: tests/test_notebooks.py executes them, one test each).
 nb_execution_mode = os.environ.get("CONTACTSYM_DOCS_EXECUTE", "force")
 nb_execution_timeout = 300
 nb_execution_raise_on_error = True

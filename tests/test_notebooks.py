@@ -1,13 +1,15 @@
-"""The notebooks in notebooks/: each is committed clean and ends with exercises.
+"""The notebooks in notebooks/: each is committed clean, ends with exercises, and runs top to bottom.
 
-Each runs top to bottom when the documentation site is built (tests/docs/test_site.py, with a
-kernel of *this* interpreter importing this checkout): that build fails on a failing cell and
-checks every notebook's page has its outputs, so the notebooks are executed once per suite.
+Each notebook is executed here, one test per notebook (so the two workers of ``pytest -n auto``
+share them), in a kernel of *this* interpreter importing this checkout, as the documentation
+site's build executes them (myst-nb runs them with nbclient too, in the notebook's folder). The
+suite's site build (tests/docs/test_site.py) renders them as committed, so each runs once per suite.
 """
 
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 import pytest
@@ -58,3 +60,32 @@ def test_notebook_ends_with_exercises_and_solutions(path):
     assert "Try this" in tail, f"{path.name} should end with a 'Try this' list of exercises"
     hidden = any(cell.get("metadata", {}).get("jupyter", {}).get("source_hidden") for cell in nb["cells"][-3:])
     assert hidden or "solutions/" in tail, f"{path.name}: put the solutions in a collapsed cell or in solutions/"
+
+
+@pytest.fixture(scope="module")
+def kernel_env(tmp_path_factory) -> dict:
+    """The environment of a kernel of this interpreter importing this checkout: a kernel spec for
+    ``sys.executable`` first on JUPYTER_PATH (a system-wide "python3" spec may name another Python)."""
+    kernelspec = pytest.importorskip("ipykernel.kernelspec")
+    prefix = tmp_path_factory.mktemp("kernel")
+    kernelspec.install(kernel_name="python3", prefix=str(prefix))
+    jupyter_path = os.pathsep.join(p for p in (str(prefix / "share" / "jupyter"), os.environ.get("JUPYTER_PATH")) if p)
+    return {**os.environ, "PYTHONPATH": str(ROOT), "MPLBACKEND": "Agg", "JUPYTER_PATH": jupyter_path}
+
+
+@pytest.mark.parametrize("path", [p for p in NOTEBOOKS if p.parent == NOTEBOOK_DIR], ids=_ids)
+def test_notebook_runs_top_to_bottom(path, kernel_env, monkeypatch):
+    """Every cell runs without an error, and every code cell that shows something has its output."""
+    nbformat = pytest.importorskip("nbformat")
+    nbclient = pytest.importorskip("nbclient")
+    monkeypatch.setenv("JUPYTER_PATH", kernel_env["JUPYTER_PATH"])  # where the kernel spec is looked up
+    notebook = nbformat.read(path, as_version=4)
+    client = nbclient.NotebookClient(
+        notebook, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(NOTEBOOK_DIR)}}
+    )
+    client.execute(env=kernel_env)  # a failing cell raises CellExecutionError with its traceback
+    code = [cell for cell in notebook.cells if cell.cell_type == "code"]
+    assert code and all(cell.execution_count is not None for cell in code), f"{path.name}: a cell did not run"
+    assert any(cell.outputs for cell in code), f"{path.name}: no cell has an output"
+    errors = [o for cell in code for o in cell.outputs if o.get("output_type") == "error"]
+    assert not errors, f"{path.name}: {errors[0]}"
