@@ -65,3 +65,16 @@ def test_a_polynomial_of_hundreds_of_terms_is_shown_as_derived():
     assert _tidy(long) is long  # not cancelled, expanded or factored for a page it cannot fit
     short = (x[0] ** 2 - x[1] ** 2) / (x[0] + x[1])
     assert _tidy(short) == x[0] - x[1]  # a small one is still cancelled
+
+
+def test_a_fraction_whose_cancelled_numerator_has_hundreds_of_terms_is_shown_as_derived():
+    from contactsym.report.typesetting import TIDY_TERMS, _tidy
+
+    x = sp.symbols("x_1:10")
+    long = sp.Add(*x) ** 3 / (x[0] + 1) - sp.Add(*x[2:]) ** 3 / (x[1] - 2)  # one fraction: hundreds of terms
+    numerator = sp.fraction(sp.cancel(long))[0]
+    assert len(sp.Add.make_args(numerator)) > TIDY_TERMS
+    assert sp.cancel(_tidy(long) - long) == 0
+    assert _tidy(long) is long
+    shorter = x[0] / (x[0] + 1) - x[1] / (x[1] - 2)
+    assert _tidy(shorter) != shorter and sp.cancel(_tidy(shorter) - shorter) == 0  # a short one is still joined
