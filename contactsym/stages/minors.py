@@ -16,7 +16,16 @@ from ..algebra.basic import known_sign, normalize
 from ..algebra.canonical_form import TrigField, TrigFraction
 from ..algebra.fraction_free import adjugate_and_det_in_field
 
-__all__ = ["MinorsInRing", "FactoredMinors", "minors_of", "polynomial_factors", "positive_multiple", "product_of"]
+__all__ = [
+    "MinorsInRing",
+    "FactoredMinors",
+    "entry_numerators",
+    "equality_matrix",
+    "minors_of",
+    "polynomial_factors",
+    "positive_multiple",
+    "product_of",
+]
 
 
 class MinorsInRing:
@@ -220,10 +229,34 @@ def polynomial_factors(factors) -> bool:
     return all(_polynomial_rows(field, X) is not None for X in factors)
 
 
+def entry_numerators(factors) -> tuple[list[list], FactoredMinors] | None:
+    """The numerators N_ij = W_i^T adj(M) V_j = a_ij det M of A = W^T M^-1 V, as reduced ring elements
+    read off the bordered determinants of :class:`FactoredMinors` (no division, no gcd), with those
+    minors; None where a factor is not polynomial.
+
+    Examples
+    --------
+    >>> a = sp.Symbol("a")
+    >>> M, W, V = sp.Matrix([[2, 0], [0, 3]]), sp.eye(2), sp.Matrix([[a, 1], [0, 1]])
+    >>> numerators, minors = entry_numerators((M, W, V))
+    >>> [[minors.field.present(minors.field.field.new(x)) for x in row] for row in numerators]
+    [[3*a, 3], [0, 2]]
+    """
+    try:
+        minors = FactoredMinors(*factors)
+    except ValueError:
+        return None
+    return [[minors.entry_numerator(i, j) for j in range(minors.k)] for i in range(minors.k)], minors
+
+
+def _is_number_matrix(numerators, det) -> bool:
+    """a_ij = N_ij / det M is a number c exactly when N_ij = c det M (both reduced: the normal form is unique)."""
+    return all(x * det.LC == det * x.LC for row in numerators for x in row)
+
+
 def positive_multiple(factors, positive=()) -> tuple[sp.Matrix, int, bool] | None:
     """(|det M| A, the most terms of an entry's numerator, whether A is a number matrix) for A = W^T M^-1 V with polynomial factors
-    ``factors`` = (M, W, V): the entries sign(det M) W_i^T adj(M) V_j, polynomials read off the bordered
-    determinants of :class:`FactoredMinors` (no division, no gcd). None where a factor is not
+    ``factors`` = (M, W, V): the entries sign(det M) W_i^T adj(M) V_j (:func:`entry_numerators`). None where a factor is not
     polynomial or the sign of det M is not proved (``positive``: expressions known to be positive,
     as :func:`contactsym.algebra.basic.known_sign` takes them; det M of a mass matrix is listed by its scene).
 
@@ -237,21 +270,44 @@ def positive_multiple(factors, positive=()) -> tuple[sp.Matrix, int, bool] | Non
     [2*a, 2],
     [  0, m]]), 1, False)
     """
-    try:
-        minors = FactoredMinors(*factors)
-    except ValueError:
+    found = entry_numerators(factors)
+    if found is None:
         return None
+    numerators, minors = found
     sign = known_sign(minors.field.present(minors.field.field.new(minors.denominator)), positive)
     if sign is None:
         return None
     k = minors.k
-    numerators = [[minors.entry_numerator(i, j) for j in range(k)] for i in range(k)]
     terms = max(len(x) for row in numerators for x in row)
     scaled = sp.Matrix(k, k, lambda i, j: sign * minors.field.present(minors.field.field.new(numerators[i][j])))
-    # a_ij = N_ij / det M is a number c exactly when N_ij = c det M (both reduced: the normal form is unique)
-    det = minors.denominator
-    numeric = all(x * det.LC == det * x.LC for row in numerators for x in row)
-    return scaled, terms, numeric
+    return scaled, terms, _is_number_matrix(numerators, minors.denominator)
+
+
+def equality_matrix(factors, diagonal) -> tuple[sp.Matrix, bool] | None:
+    """For A = W^T M^-1 V with polynomial factors and a det M that is not a number: (B, whether A is a
+    number matrix), B with A's diagonal ``diagonal`` (a_ii, as the principal minors of size 1 have
+    it) and the numerators N_ij = a_ij det M off it, so that a_ij = a_ji exactly when B_ij = B_ji
+    (det M != 0) with no gcd of an entry over det M. None otherwise (A's own entries are then cheap
+    or needed).
+
+    Examples
+    --------
+    >>> a, m = sp.symbols("a m", positive=True)
+    >>> M, W, V = sp.Matrix([[m, 0], [0, m]]), sp.eye(2), sp.Matrix([[a, 2], [2, 1]])
+    >>> equality_matrix((M, W, V), [a / m, 1 / m])  # a_12 = a_21 = 2/m: N_12 = N_21 = 2 m
+    (Matrix([
+    [a/m, 2*m],
+    [2*m, 1/m]]), False)
+    """
+    found = entry_numerators(factors)
+    if found is None or found[1].denominator.is_ground:
+        return None
+    numerators, minors = found
+
+    def entry(i, j):
+        return diagonal[i] if i == j else minors.field.present(minors.field.field.new(numerators[i][j]))
+
+    return sp.Matrix(minors.k, minors.k, entry), _is_number_matrix(numerators, minors.denominator)
 
 
 def _polynomial_rows(field, X: sp.Matrix) -> list[list] | None:

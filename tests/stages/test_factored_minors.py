@@ -14,7 +14,7 @@ import sympy as sp
 import contactsym as cs
 from contactsym.algebra.basic import SignSymbol, normalize
 from contactsym.stages.linear import charpoly, lam, principal_minors
-from contactsym.stages.minors import polynomial_factors, positive_multiple
+from contactsym.stages.minors import equality_matrix, polynomial_factors, positive_multiple
 
 q1, q2, m, a = sp.symbols("q1 q2 m a", positive=True)
 s = SignSymbol("s")
@@ -125,6 +125,33 @@ def test_the_positive_multiple_needs_the_sign_of_det_m_and_polynomial_factors():
     assert positive_multiple((sp.Matrix([[1 / x, 0], [0, 1]]), W, V)) is None
     scaled, _, numeric = positive_multiple((2 * sp.eye(2), sp.eye(2), 4 * sp.eye(2)))
     assert numeric and scaled == 8 * sp.eye(2)
+
+
+@pytest.mark.parametrize("seed, n, k", [(6, 3, 3)])
+def test_the_equality_matrix_has_a_on_its_diagonal_and_det_m_times_a_off_it(seed, n, k):
+    """B_ii = a_ii and B_ij = det M a_ij (against W^T M^-1 V and det M in numpy), so B_ij = B_ji
+    exactly when a_ij = a_ji (det M > 0 here)."""
+    M, W, V = random_factors(seed, n, k)
+    minors = principal_minors(sp.zeros(k), (M, W, V))
+    B, numeric = equality_matrix((M, W, V), [minors[(i,)] for i in range(k)])
+    assert not numeric
+    rng = random.Random(seed)
+    functions = sp.lambdify([q1, q2, m, a, s], [M, W, V, B], "numpy")
+    for _ in range(3):
+        point = random_point(rng)
+        Mn, Wn, Vn, Bn = (np.array(x, dtype=float) for x in functions(*point.values()))
+        An = Wn.T @ np.linalg.solve(Mn, Vn)
+        expected = np.linalg.det(Mn) * An
+        np.fill_diagonal(expected, np.diag(An))
+        assert Bn == pytest.approx(expected, rel=1e-9, abs=1e-9)
+
+
+def test_the_equality_matrix_is_for_a_det_m_that_is_not_a_number():
+    M, W, V = 2 * sp.eye(3), sp.eye(3), sp.Matrix(3, 3, lambda i, j: a ** (i + j))
+    assert equality_matrix((M, W, V), [1, 1, 1]) is None  # A's entries are cheap: a_ij = N_ij / 8
+    assert equality_matrix((sp.diag(1 / a, 1, 1), W, V), [1, 1, 1]) is None  # not polynomial
+    B, numeric = equality_matrix((sp.diag(a, 1, 1), W, sp.eye(3)), [1 / a, 1, 1])
+    assert not numeric and B == sp.diag(1 / a, 1, 1)  # off the diagonal the numerators are 0
 
 
 def test_a_mass_matrix_constant_on_the_circle_gives_field_elements():
