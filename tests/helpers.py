@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+from fractions import Fraction
 
 import numpy as np
 import sympy as sp
@@ -66,6 +67,37 @@ def fast_truth(boolean, values: dict) -> bool:
         return bool(boolean)
     symbols, function = _compiled(sp.sympify(boolean))
     return bool(function(*(values[s] for s in symbols)))
+
+
+_EXACT_NODES = (sp.Symbol, sp.Integer, sp.Add, sp.Mul, sp.core.relational.Relational, sp.And, sp.Or, sp.Not)
+
+
+@functools.cache
+def _compiled_exact(expr):
+    """A pure-Python function of ``expr`` (sorted free symbols) when it is built from integers, symbols,
+    +, *, integer powers, relations and And/Or/Not only: at Fractions it computes exactly what substitution
+    does. None otherwise (a rational constant would be printed as a float division)."""
+    for node in sp.preorder_traversal(expr):
+        if not (isinstance(node, _EXACT_NODES) or (node.is_Pow and node.exp.is_Integer)):
+            return None
+    symbols = tuple(sorted(expr.free_symbols, key=str))
+    return symbols, sp.lambdify(symbols, expr, modules=[{}])
+
+
+def exact(expr, values: dict):
+    """``expr.xreplace(values)`` for rational values, by exact Fraction arithmetic in a function compiled
+    once per expression: a Rational for an expression, sp.true/sp.false for a Boolean (substitution
+    itself where the expression has other parts)."""
+    expr = sp.sympify(expr)
+    compiled = _compiled_exact(expr) if expr not in (sp.true, sp.false) else None
+    if compiled is None or not all(isinstance(values.get(s), sp.Rational) for s in compiled[0]):
+        return expr.xreplace(values)
+    symbols, function = compiled
+    value = function(*(Fraction(int(values[s].p), int(values[s].q)) for s in symbols))
+    if isinstance(value, bool):
+        return sp.true if value else sp.false
+    value = Fraction(value)
+    return sp.Rational(value.numerator, value.denominator)
 
 
 def same(a, b) -> bool:

@@ -21,6 +21,7 @@ from contactsym.algebra.basic import SignSymbol
 from contactsym.algebra.hurwitz import Hurwitz, hurwitz_minors
 from contactsym.errors import SingularJacobianError
 from contactsym.stages.stability import Stability
+from tests.helpers import exact
 
 # --- scenes ---------------------------------------------------------------------------
 
@@ -51,7 +52,7 @@ def symbolic(k):
 
 def truth(boolean, values):
     """A sympy Boolean at numbers: True or False (fails if it does not evaluate)."""
-    value = sp.sympify(boolean).xreplace(values)
+    value = exact(boolean, values)  # = xreplace, by exact arithmetic in a compiled function
     assert value in (sp.true, sp.false), f"{boolean} did not evaluate at {values}: {value}"
     return bool(value)
 
@@ -182,7 +183,7 @@ def test_hurwitz_iff_eigenvalues_in_left_half_plane(k, data):
     top, closest, tol = spectra(as_float(A), P, S)
     assume(closest[0] > 1e-6 * max(1.0, abs(top[0])) and closest[0] > tol[0])
     values = values_for(k, A, Phi, Psi)
-    evaluated = [c.xreplace(values) for c in conditions]
+    evaluated = [exact(c, values) for c in conditions]  # = xreplace, by exact arithmetic in a compiled function
     assert all(v.is_Rational for v in evaluated)
     stable = all(v > 0 for v in evaluated)
     event("stable" if stable else "unstable")
@@ -259,8 +260,9 @@ def test_law_dependent_finds_stable_and_unstable_laws(A):
     assert (top > tol).any(), "no unstable law found"
     # and the library's own Hurwitz conditions agree at one stable and one unstable law
     for index in (int(np.argmin(top)), int(np.argmax(top))):
-        law_values = values_for(2, A, [-sp.Float(p) for p in P[index]], [-sp.Float(s) for s in S[index]])
-        assert all(c.xreplace(law_values) > 0 for c in stability.hurwitz) == bool(top[index] < 0)
+        # the law as exact rationals (the floats' own values), evaluated exactly in a compiled function
+        law_values = values_for(2, A, [-sp.Rational(p) for p in P[index]], [-sp.Rational(s) for s in S[index]])
+        assert all(exact(c, law_values) > 0 for c in stability.hurwitz) == bool(top[index] < 0)
 
 
 @settings(max_examples=200, deadline=None)
