@@ -31,8 +31,9 @@ import sympy as sp
 from ..algebra.basic import known_sign, normalize
 from ..algebra.hurwitz import EXPAND_TERMS, expansion_bound
 from ..arguments import checked
+from .minors import equality_matrix, polynomial_factors, positive_multiple
 
-__all__ = ["proved_regions", "sign_equivalent"]
+__all__ = ["classification_matrix", "proved_regions", "sign_equivalent"]
 
 
 @checked(factors="Sequence[sp.Expr]", positive="Sequence[sp.Expr]")
@@ -113,3 +114,38 @@ def proved_regions(A, det, closed=None, positive=(), leading=None) -> tuple[sp.B
     if leading is None:
         leading = [normalize(A[:m, :m].det(method="berkowitz")) for m in range(1, k + 1)]
     return sp.And(*symmetric, *[sp.Gt(minor, 0) for minor in leading]), unstable, closed["law-dependent"]
+
+
+def classification_matrix(linearization) -> tuple[sp.Matrix, bool]:
+    """(a matrix that gives what :func:`proved_regions` reads of A, whether A has free symbols) for a
+    :class:`~contactsym.stages.linear.Linearization`, with no division where A's entries would each
+    need a gcd over det M:
+
+    - k = 2 with polynomial factors whose entries' product may pass :data:`EXPAND_TERMS` terms: the
+      positive multiple |det M| A (:func:`~contactsym.stages.minors.positive_multiple`). The regions of
+      Proposition 6 are those of any positive multiple c A: the signs of a_ii, of det(c A) = c^2 det A
+      (det A itself is given) and of c^2 a_12 a_21 are A's.
+    - k >= 3 with polynomial factors and a det M that is not a number: a_ii (the principal minors of
+      size 1) on the diagonal and N_ij = a_ij det M off it (:func:`~contactsym.stages.minors.equality_matrix`):
+      Propositions 7 and 8 read the signs of a_ii and the equalities a_ij = a_ji only.
+    - otherwise A.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> lin = cs.scene("brake").linearization()
+    >>> classification_matrix(lin) == (lin.A, True)
+    True
+    """
+    factors = linearization.factors
+    k = linearization.fast.k
+    found = None
+    if k == 2 and polynomial_factors(factors):
+        found = positive_multiple(factors, linearization.fast.positive)
+        found = (found[0], found[2]) if found is not None and found[1] ** 2 > EXPAND_TERMS else None
+    elif k >= 3 and polynomial_factors(factors):
+        minors = linearization.principal_minors
+        found = equality_matrix(factors, [minors[(i,)] for i in range(k)])
+    if found is not None:
+        return found[0], not found[1]
+    return linearization.A, bool(linearization.A.free_symbols)

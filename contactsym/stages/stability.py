@@ -39,9 +39,8 @@ from ..deprecation import deprecated_property
 from ..errors import SingularJacobianError
 from ..lyapunov.coefficient import first_lyapunov_symbolic
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering
-from .classification import proved_regions
+from .classification import classification_matrix, proved_regions
 from .linear import linearization_of
-from .minors import equality_matrix, polynomial_factors, positive_multiple
 from .stability_formulas import generic_minors, robustness_formulas, shortest_form
 from .verdicts import NAMES as VERDICT_NAMES
 from .verdicts import Verdict, classification_verdicts, with_point_decision
@@ -161,7 +160,10 @@ class Stability(LatexReprMixin):
     @cached_property
     def _closed(self) -> dict | None:
         """The closed-form regions of :func:`contactsym.robustness.classify.regions` (k >= 3)."""
-        return robustness_regions(self.A, self.linearization.principal_minors) if self.k >= 3 else None
+        if self.k < 3:
+            return None
+        # with the principal minors given, regions reads A's shape only: A's entries are not computed
+        return robustness_regions(sp.zeros(self.k), self.linearization.principal_minors)
 
     @cached_property
     def _classification(self) -> tuple:
@@ -174,42 +176,18 @@ class Stability(LatexReprMixin):
         return proved_regions(self._sign_matrix, self.linearization.det_A, self._closed, positive, leading=leading)
 
     @cached_property
-    def _multiple(self) -> tuple | None:
-        """For k = 2 with large polynomial factors (entries whose product may pass :data:`EXPAND_TERMS`
-        terms): :func:`~contactsym.stages.minors.positive_multiple`, (|det M| A, terms, A numeric); else None."""
-        if self.k != 2 or not polynomial_factors(self.linearization.factors):
-            return None
-        found = positive_multiple(self.linearization.factors, self.linearization.fast.positive)
-        return found if found is not None and found[1] ** 2 > EXPAND_TERMS else None
+    def _read_of_A(self) -> tuple[sp.Matrix, bool]:
+        """:func:`~contactsym.stages.classification.classification_matrix`: what the classification reads
+        of A, with no division where A's entries would each need a gcd, and whether A has symbols."""
+        return classification_matrix(self.linearization)
 
-    @cached_property
-    def _equalities(self) -> tuple | None:
-        """For k >= 3 with polynomial factors and a det M that is not a number:
-        :func:`~contactsym.stages.minors.equality_matrix` (a_ii on the diagonal, a_ij det M off it,
-        whether A is numeric); else None. The classification reads A's diagonal signs and the
-        equalities a_ij = a_ji only, so A's entries need no gcd over det M each."""
-        if self.k < 3 or not polynomial_factors(self.linearization.factors):
-            return None
-        minors = self.linearization.principal_minors
-        return equality_matrix(self.linearization.factors, [minors[(i,)] for i in range(self.k)])
-
-    @cached_property
+    @property
     def _sign_matrix(self) -> sp.Matrix:
-        """A, or a matrix that gives what the classification reads of A with no division: for k = 2 the
-        positive multiple |det M| A of :attr:`_multiple` (the regions of Proposition 6 are those of any
-        positive multiple c A: the signs of a_ii, of det(c A) = c^2 det A (det A itself is given) and
-        of c^2 a_12 a_21 are A's); for k >= 3 the matrix of :attr:`_equalities`."""
-        if self._multiple is not None:
-            return self._multiple[0]
-        return self.A if self._equalities is None else self._equalities[0]
+        return self._read_of_A[0]
 
-    @cached_property
+    @property
     def _symbolic(self) -> bool:
-        """A has free symbols (read off the factors where A is not needed otherwise)."""
-        for found in (self._multiple, self._equalities):
-            if found is not None:
-                return not found[-1]
-        return bool(self.A.free_symbols)
+        return self._read_of_A[1]
 
     @cached_property
     def verdicts(self) -> dict[str, Verdict]:

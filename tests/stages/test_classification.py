@@ -124,7 +124,7 @@ def test_the_factored_path_agrees_with_the_canonical_form_on_the_built_in_scenes
     monkeypatch.setattr(stability_module, "EXPAND_TERMS", -1)
     monkeypatch.setattr(classification_module, "EXPAND_TERMS", -1)
     forced = Stability(default.linearization)
-    assert forced._multiple is not None and not forced._sign_matrix.has(sp.Pow(sp.Wild("d"), -1))
+    assert not forced._sign_matrix.has(sp.Pow(sp.Wild("d"), -1))  # |det M| A: no division
     got = forced._classification
     free = sorted(set().union(*[r.free_symbols for r in (*expected, *got)]), key=str)
     rng = random.Random(name)
