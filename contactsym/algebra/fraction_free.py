@@ -22,6 +22,7 @@ __all__ = [
     "adjugate_and_det",
     "adjugate_and_det_in_field",
     "polynomial_adjugate",
+    "polynomial_det",
     "rational_point",
     "solve_fraction_free",
     "t",
@@ -196,6 +197,48 @@ def polynomial_adjugate(M: sp.ImmutableMatrix):
     if any(x.denom != 1 for row in entries for x in row):
         return None
     return adjugate_and_det([[x.numer for x in row] for row in entries], field.reduce_poly)
+
+
+@lru_cache(maxsize=16)
+def polynomial_det(M: sp.ImmutableMatrix):
+    """det M as a reduced polynomial of M's own field's ring, or None when an entry is not a
+    polynomial: by Laplace expansion along the rows, the minor on each set of columns computed once
+    (n 2^(n-1) products of an entry by a minor, where the adjugate of :func:`polynomial_adjugate`
+    takes n matrix products, n^4; up to n = :data:`LAPLACE_MAX`, past it det M is the adjugate's).
+
+    Examples
+    --------
+    >>> x = sp.Symbol("x")
+    >>> polynomial_det(sp.ImmutableMatrix([[x, 1, 0], [1, 2, 1], [0, 1, x]])).as_expr()
+    2*x**2 - 2*x
+    """
+    if M.rows > LAPLACE_MAX:
+        found = polynomial_adjugate(M)
+        return None if found is None else found[1]
+    field = TrigField(list(M))
+    entries = [[field.element(x) for x in row] for row in M.tolist()]
+    if any(x.denom != 1 for row in entries for x in row):
+        return None
+    rows = [[x.numer for x in row] for row in entries]
+    memo: dict = {}
+
+    def minor(level: int, columns: tuple):  # det of the rows level.. on ``columns``
+        if level == len(rows):
+            return field.ring.one
+        if columns not in memo:
+            total = field.ring.zero
+            for i, c in enumerate(columns):
+                if rows[level][c]:
+                    term = rows[level][c] * minor(level + 1, columns[:i] + columns[i + 1 :])
+                    total = total + term if i % 2 == 0 else total - term
+            memo[columns] = field.reduce_poly(total)
+        return memo[columns]
+
+    return minor(0, tuple(range(M.rows)))
+
+
+#: The largest n whose det :func:`polynomial_det` expands by minors (2^n of them kept).
+LAPLACE_MAX = 10
 
 
 def rational_point(field: TrigField) -> list | None:

@@ -34,6 +34,7 @@ from ..algebra.canonical_form import TrigField
 from ..algebra.fraction_free import (
     adjugate_and_det,
     adjugate_and_det_in_field,
+    polynomial_det,
     rational_point,
     solve_fraction_free,
     t,
@@ -147,7 +148,10 @@ def mass_determinant(M: sp.Matrix):
     (m**2, sin(q)**2 + 1)
     """
     field = TrigField(list(M))
-    return field.fraction(1 / adjugate_and_det_in_field(field, M)[1])
+    det = polynomial_det(sp.ImmutableMatrix(M))  # det alone: the adjugate is A's, which may not be needed
+    if det is None:
+        return field.fraction(1 / adjugate_and_det_in_field(field, M)[1])
+    return field.fraction(1 / field.field.new(det.set_ring(field.ring)))
 
 
 def _check_mass_matrix(M: sp.Matrix, coordinates) -> None:

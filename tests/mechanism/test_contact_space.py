@@ -541,7 +541,8 @@ def test_a_sign_symbol_takes_a_value_of_a_sign_at_the_point():
 
 
 def test_a_chain_computes_one_symbolic_adjugate_of_its_mass_matrix(monkeypatch):
-    """The singularity check decides at a point; the fast subsystem and det M > 0 share one adj(M)."""
+    """The singularity check decides at a point, det M > 0 takes det M alone (by minors), and adj(M)
+    is computed once, for A's entries, when they are asked for."""
     from contactsym.algebra import fraction_free
     from contactsym.scenes.link_chain import build_chain
 
@@ -557,4 +558,6 @@ def test_a_chain_computes_one_symbolic_adjugate_of_its_mass_matrix(monkeypatch):
     scene = build_chain(2)
     scene.fast_subsystem()
     assert scene.positive_expressions
+    assert sizes == []
+    assert scene.linearization().A.free_symbols and scene.fast_subsystem().f.free_symbols
     assert sizes == [2]
