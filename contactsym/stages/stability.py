@@ -142,7 +142,7 @@ class Stability(LatexReprMixin):
     def routh_hurwitz(self) -> Hurwitz:
         """The Routh–Hurwitz data of the characteristic polynomial (4.6): minors, conditions (4.7),
         Liénard–Chipart labels, the Hopf set and omega**2 (``poly`` is its deprecated name)."""
-        if sp.expand(self.linearization.det_A) == 0:
+        if self.linearization.det_A == 0:  # the canonical form: 0 is the only form of zero, no expand needed
             raise SingularJacobianError(
                 f"det A = 0 identically for A = {self.A.tolist()}: the equilibrium is not isolated and has a "
                 "zero eigenvalue for every law; the propositions need det A != 0. Check the scene's reactions."
