@@ -12,6 +12,7 @@ from contactsym.errors import ComplianceError, HopfError
 from contactsym.laws.library import Hertz
 from contactsym.lyapunov.coefficient import first_lyapunov_symbolic
 from contactsym.numerics.hopf import full_cycle_start
+from tests.helpers import fast_complex
 
 q, qd = sp.symbols("q qdot", real=True)
 eps = sp.Symbol("epsilon", positive=True)
@@ -164,7 +165,7 @@ def test_symbolic_l1_agrees_with_the_numeric_one_in_other_coordinates(hertz_line
             order = [u] * name.count("u") + [v] * name.count("v")
             at[sp.Symbol(f"Phi_{j + 1}_{name}", real=True)] = sp.diff(Phi_law, *order).subs(here)
             at[sp.Symbol(f"Psi_{j + 1}_{name}", real=True)] = sp.diff(Psi_law, *order).subs(here)
-    l1_uv = complex(first_lyapunov_symbolic(st, at))
+    l1_uv = fast_complex(first_lyapunov_symbolic(st, at))  # complex(), without evalf's seconds on its tree
     q_uv = np.concatenate([h.reaction_vector, h.vectors.q[2:]])
     assert l1_uv.real == pytest.approx(h.l1 / np.vdot(q_uv, q_uv).real, rel=1e-6)
 
