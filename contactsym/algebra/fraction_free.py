@@ -209,17 +209,17 @@ def polynomial_det(M: sp.ImmutableMatrix):
     Examples
     --------
     >>> x = sp.Symbol("x")
-    >>> polynomial_det(sp.ImmutableMatrix([[x, 1, 0], [1, 2, 1], [0, 1, x]])).as_expr()
-    2*x**2 - 2*x
+    >>> polynomial_det(sp.ImmutableMatrix([[x, 1, 0], [1, 2, 1], [0, 1, x / 2]])).as_expr()
+    x**2 - 3*x/2
     """
     if M.rows > LAPLACE_MAX:
         found = polynomial_adjugate(M)
         return None if found is None else found[1]
     field = TrigField(list(M))
     entries = [[field.element(x) for x in row] for row in M.tolist()]
-    if any(x.denom != 1 for row in entries for x in row):
+    if any(not x.denom.is_ground for row in entries for x in row):
         return None
-    rows = [[x.numer for x in row] for row in entries]
+    rows = [[x.numer.quo_ground(x.denom.LC) for x in row] for row in entries]  # m l^2 / 12: a number below
     memo: dict = {}
 
     def minor(level: int, columns: tuple):  # det of the rows level.. on ``columns``
