@@ -17,7 +17,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from ..algebra.basic import PaperSymbol, normalize, sign_symbols
+from ..algebra.basic import EXPAND_NODES, PaperSymbol, node_count, normalize, sign_symbols
 from ..algebra.canonical_form import TrigFraction, to_fraction
 from ..arguments import checked
 from ..deprecation import deprecated_property
@@ -126,7 +126,11 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=(), factors=None) -> sp.Poly:
         (d,): TrigFraction(fraction.numer.coeff_wrt(x, d), denominator, fraction.pairs, fraction.signs).as_expr()
         for d in range(degree + 1)
     }
-    return sp.Poly.from_dict({d: c for d, c in coefficients.items() if c != 0}, lam)
+    coefficients = {d: c for d, c in coefficients.items() if c != 0}
+    # a large coefficient is kept as derived (EX): finding a polynomial domain for it parses it again,
+    # and a mechanism's sines and cosines of one angle end in EX anyway (a four-link arm: 1 s of 2.6 s)
+    large = any(node_count(c, EXPAND_NODES) > EXPAND_NODES for c in coefficients.values())
+    return sp.Poly.from_dict(coefficients, lam, domain=sp.EX) if large else sp.Poly.from_dict(coefficients, lam)
 
 
 def _charpoly_of_expression(A: sp.Matrix, Phi, Psi, positive, factors=None) -> sp.Poly:

@@ -367,3 +367,29 @@ def test_linearization_det_a_equals_the_berkowitz_canonical_form():
     for name in cs.scene_names():
         lin = cs.scene(name).linearization()
         assert lin.det_A == normalize(lin.A.det(method="berkowitz")), name
+
+
+def test_a_charpoly_with_large_coefficients_keeps_them_as_derived_and_is_the_jacobians():
+    """Past EXPAND_NODES a coefficient is kept as derived (domain EX, no second parse), and the
+    polynomial is still that of the Jacobian [[Psi A, Phi], [A, 0]] (numpy's, at random points)."""
+    from contactsym.algebra.basic import EXPAND_NODES, node_count
+
+    x = sp.symbols("x1:7")
+    Phi, Psi = sp.symbols("Phi_1:3"), sp.symbols("Psi_1:3")
+    rng = np.random.default_rng(7)
+
+    def polynomial():
+        return sum(int(rng.integers(-3, 4)) * x[i] * x[j] * x[k] for i, j, k in itertools.combinations(range(6), 3))
+
+    A = sp.Matrix(2, 2, lambda i, j: polynomial())
+    p = charpoly(A, Phi, Psi)
+    assert p.domain == sp.EX and max(node_count(c, 10**6) for c in p.all_coeffs()) > EXPAND_NODES
+    symbols = [*x, *Phi, *Psi]
+    coefficients = sp.lambdify(symbols, p.all_coeffs(), "numpy")
+    entries = sp.lambdify(symbols, A, "numpy")
+    for _ in range(3):
+        point = rng.uniform(-1, 1, len(symbols))
+        An = np.array(entries(*point), dtype=float)
+        J = np.block([[np.diag(point[8:]) @ An, np.diag(point[6:8])], [An, np.zeros((2, 2))]])
+        c = np.array(coefficients(*point), dtype=float)
+        assert c / c[0] == pytest.approx(np.poly(J), rel=1e-8, abs=1e-8)
