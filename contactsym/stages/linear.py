@@ -19,11 +19,11 @@ import sympy as sp
 
 from ..algebra.basic import EXPAND_NODES, PaperSymbol, node_count, normalize, sign_symbols
 from ..algebra.canonical_form import TrigFraction, to_fraction
-from ..arguments import checked
+from ..arguments import checked, require
 from ..deprecation import deprecated_property
 from ..errors import ContactsymError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering
-from .minors import _cancelled_in, _integral_fraction, minors_of, polynomial_factors, product_of
+from .minors import MinorsInRing, minors_of, polynomial_factors, product_of
 
 __all__ = ["lam", "charpoly", "principal_minors", "Linearization", "linearization_of"]
 
@@ -48,11 +48,12 @@ lam = PaperSymbol("lambda")
 
 
 @checked
-def principal_minors(A: sp.Matrix, factors=None) -> dict[tuple[int, ...], sp.Expr]:
+def principal_minors(A: sp.Matrix, factors=None, minors: MinorsInRing | None = None) -> dict[tuple[int, ...], sp.Expr]:
     """det(A_S) for every subset S of the indices (the empty set gives 1), in the canonical form.
 
     ``factors`` = (M, W, V) with A = W^T M^-1 V (a scene in contact space) gives each minor as
-    one polynomial over det M (see :class:`~contactsym.stages.minors.FactoredMinors`).
+    one polynomial over det M (see :class:`~contactsym.stages.minors.FactoredMinors`); ``minors``: those
+    of :func:`~contactsym.stages.minors.minors_of` when the caller has them already.
 
     Examples
     --------
@@ -64,7 +65,8 @@ def principal_minors(A: sp.Matrix, factors=None) -> dict[tuple[int, ...], sp.Exp
     >>> principal_minors(W.T * M.inv() * V, (M, W, V))[(0, 1)] == (W.T * M.inv() * V).det()
     True
     """
-    ring = minors_of(A, factors)
+    _same_size(minors, A, "principal_minors")
+    ring = minors_of(A, factors) if minors is None else minors
     k = A.rows
     return {
         S: ring.field.present(ring.minor(S)) for size in range(k + 1) for S in itertools.combinations(range(k), size)
@@ -72,7 +74,7 @@ def principal_minors(A: sp.Matrix, factors=None) -> dict[tuple[int, ...], sp.Exp
 
 
 @checked(Phi="Sequence[sp.Expr]", Psi="Sequence[sp.Expr]", positive="Sequence[sp.Expr]")
-def charpoly(A: sp.Matrix, Phi, Psi, positive=(), factors=None) -> sp.Poly:
+def charpoly(A: sp.Matrix, Phi, Psi, positive=(), factors=None, minors: MinorsInRing | None = None) -> sp.Poly:
     """The characteristic polynomial of (4.5) from the principal minors of A.
 
     When the common denominator of its coefficients is not a monomial but has a known sign
@@ -81,7 +83,8 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=(), factors=None) -> sp.Poly:
     with an unknown sign each coefficient stays over it.
     The sum is formed in a polynomial ring (A = P / D, the minors of P, then one division by
     D^k), so nothing is expanded as a SymPy expression; with ``factors`` (see
-    :func:`principal_minors`) every minor is over det M and the sum over det M once.
+    :func:`principal_minors`) every minor is over det M and the sum over det M once; ``minors``: A's
+    minors when the caller has them already (moved to the ring with the law and lambda, not expanded again).
 
     Examples
     --------
@@ -90,7 +93,9 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=(), factors=None) -> sp.Poly:
     -Phi*a - Psi*a*lambda + lambda**2
     """
     k = A.rows
-    minors = minors_of(A, factors, [*Phi, *Psi, lam])
+    _same_size(minors, A, "charpoly")
+    extra = [*Phi, *Psi, lam]
+    minors = (None if minors is None else minors.extended(extra)) or minors_of(A, factors, extra)
     field = minors.field
     law = [field.element(x) for x in (*Phi, *Psi)]
     if any(not x.denom.is_ground for x in law):  # a law with fractions at the equilibrium: sum as expressions
@@ -131,6 +136,45 @@ def charpoly(A: sp.Matrix, Phi, Psi, positive=(), factors=None) -> sp.Poly:
     # and a mechanism's sines and cosines of one angle end in EX anyway (a four-link arm: 1 s of 2.6 s)
     large = any(node_count(c, EXPAND_NODES) > EXPAND_NODES for c in coefficients.values())
     return sp.Poly.from_dict(coefficients, lam, domain=sp.EX) if large else sp.Poly.from_dict(coefficients, lam)
+
+
+def _integral_fraction(field, numerator, denominator) -> TrigFraction:
+    """numerator / denominator (reduced, cancelled, no sign symbol in the denominator) with integer
+    coprime coefficients and a positive leading denominator coefficient, as TrigField.fraction
+    gives it, without a second gcd of the two."""
+    domain = field.ring.domain
+    scale = 1
+    for c in (*numerator.coeffs(), *denominator.coeffs()):
+        scale = sp.ilcm(scale, int(domain.denom(c)))
+    numerator, denominator = numerator * scale, denominator * scale
+    common = sp.igcd(*[int(domain.numer(c)) for c in (*numerator.coeffs(), *denominator.coeffs())]) or 1
+    numerator, denominator = numerator.quo_ground(domain(common)), denominator.quo_ground(domain(common))
+    if domain.is_negative(denominator.LC):
+        numerator, denominator = -numerator, -denominator
+    return TrigFraction(numerator, denominator, field.pairs, field.signs)
+
+
+def _cancelled_in(numerator, denominator, x) -> tuple:
+    """numerator / denominator cancelled by their gcd, for a numerator that is a polynomial in
+    ``x``: the gcd of the denominator with one coefficient after another (each smaller than the
+    whole numerator), stopping at a number."""
+    common = denominator
+    coefficients = sorted(
+        (numerator.coeff_wrt(x, d) for d in range(max(numerator.degree(x), 0) + 1)), key=lambda c: len(c)
+    )
+    for c in coefficients:
+        if common.is_ground:
+            break
+        if c:
+            common = common.gcd(c)
+    if common.is_ground:
+        return numerator, denominator
+    return numerator.exquo(common), denominator.exquo(common)
+
+
+def _same_size(minors, A: sp.Matrix, label: str) -> None:
+    what = f"the minors of A, a {A.rows} x {A.rows} matrix (minors_of(A)), or None"
+    require(minors is None or minors.size == A.rows, label, "minors", minors, what)
 
 
 def _charpoly_of_expression(A: sp.Matrix, Phi, Psi, positive, factors=None) -> sp.Poly:
@@ -213,14 +257,19 @@ class Linearization(LatexReprMixin):
     @cached_property
     def det_A(self) -> sp.Expr:
         """det A in the canonical form, by fraction-free expansion in a polynomial ring."""
-        minors = minors_of(self._minors_source, self.factors)
-        return minors.field.present(minors.minor(tuple(range(self.fast.k))))
+        return self._minors.field.present(self._minors.minor(tuple(range(self.fast.k))))
+
+    @cached_property
+    def _minors(self):
+        """A's minors (:func:`~contactsym.stages.minors.minors_of`), built once for det A, the principal
+        minors and (4.6)."""
+        return minors_of(self._minors_source, self.factors)
 
     @cached_property
     def principal_minors(self) -> dict:
         """{S: det A_S} for every subset S of the contacts, in the canonical form (see
         :func:`principal_minors`: with the scene's factors, each one polynomial over det M)."""
-        return principal_minors(self._minors_source, self.factors)
+        return principal_minors(self._minors_source, self.factors, self._minors)
 
     @cached_property
     def factors(self) -> tuple | None:
@@ -263,7 +312,7 @@ class Linearization(LatexReprMixin):
     @cached_property
     def charpoly(self) -> sp.Poly:
         log.info("scene '%s': characteristic polynomial (4.6) from %d principal minors", self.fast.name, 2**self.fast.k)
-        return charpoly(self._minors_source, self.Phi, self.Psi, self.fast.positive, self.factors)
+        return charpoly(self._minors_source, self.Phi, self.Psi, self.fast.positive, self.factors, self._minors)
 
     @cached_property
     def _minors_source(self) -> sp.Matrix:

@@ -13,7 +13,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ..algebra.basic import known_sign, normalize
-from ..algebra.canonical_form import TrigField, TrigFraction
+from ..algebra.canonical_form import TrigField
 from ..algebra.fraction_free import adjugate_and_det_in_field
 
 __all__ = [
@@ -88,6 +88,56 @@ class MinorsInRing:
     @property
     def top_power(self) -> int:
         return len(self.P)
+
+    @property
+    def size(self) -> int:
+        """k, for the k x k matrix whose minors these are."""
+        return len(self.P)
+
+    def extended(self, extra) -> MinorsInRing | None:
+        """These minors in a field that also has the generators of ``extra`` (the law's values and
+        lambda, for (4.6)): the same polynomials moved to the larger ring, not expanded again; None
+        where the larger field would write these generators otherwise (then :func:`minors_of` anew).
+
+        Examples
+        --------
+        >>> a, b, lam = sp.symbols("a b lambda")
+        >>> minors = minors_of(sp.Matrix([[a, 1], [1, b]]))
+        >>> wider = minors.extended([lam])
+        >>> wider.numerator((0, 1)).as_expr(), lam in wider.field.ring.symbols
+        (a*b - 1, True)
+        """
+        old = self.field.ring.symbols
+        field = TrigField([*old, *extra])
+        index = {g: i for i, g in enumerate(field.ring.symbols)}
+        if any(g not in index for g in old):
+            return None
+        pairs = {(index[old[c]], index[old[s]]) for c, s in self.field.pairs}
+        if not pairs <= set(field.pairs) or not {index[old[i]] for i in self.field.signs} <= set(field.signs):
+            return None
+        return _Extended(self, field)
+
+
+class _Extended(MinorsInRing):
+    """:meth:`MinorsInRing.extended`: the numerators of ``minors`` read in the ring of ``field``."""
+
+    def __init__(self, minors: MinorsInRing, field: TrigField):
+        self.field, self._minors = field, minors
+        self.denominator = minors.denominator.set_ring(field.ring)
+
+    def numerator(self, S: tuple):
+        return self._minors.numerator(S).set_ring(self.field.ring)
+
+    def power(self, S: tuple) -> int:
+        return self._minors.power(S)
+
+    @property
+    def top_power(self) -> int:
+        return self._minors.top_power
+
+    @property
+    def size(self) -> int:
+        return self._minors.size
 
 
 class FactoredMinors(MinorsInRing):
@@ -177,6 +227,10 @@ class FactoredMinors(MinorsInRing):
     @property
     def top_power(self) -> int:
         return 1
+
+    @property
+    def size(self) -> int:
+        return self.k
 
     def det(self, rows: tuple, cols: tuple):  # pragma: no cover - the factored form has no P
         raise NotImplementedError("the factored minors give numerator(S) over det M")
@@ -333,37 +387,3 @@ def minors_of(A: sp.Matrix, factors=None, extra=()) -> MinorsInRing:
         except ValueError:
             pass
     return MinorsInRing(A, extra)
-
-
-def _integral_fraction(field, numerator, denominator) -> TrigFraction:
-    """numerator / denominator (reduced, cancelled, no sign symbol in the denominator) with integer
-    coprime coefficients and a positive leading denominator coefficient, as TrigField.fraction
-    gives it, without a second gcd of the two."""
-    domain = field.ring.domain
-    scale = 1
-    for c in (*numerator.coeffs(), *denominator.coeffs()):
-        scale = sp.ilcm(scale, int(domain.denom(c)))
-    numerator, denominator = numerator * scale, denominator * scale
-    common = sp.igcd(*[int(domain.numer(c)) for c in (*numerator.coeffs(), *denominator.coeffs())]) or 1
-    numerator, denominator = numerator.quo_ground(domain(common)), denominator.quo_ground(domain(common))
-    if domain.is_negative(denominator.LC):
-        numerator, denominator = -numerator, -denominator
-    return TrigFraction(numerator, denominator, field.pairs, field.signs)
-
-
-def _cancelled_in(numerator, denominator, x) -> tuple:
-    """numerator / denominator cancelled by their gcd, for a numerator that is a polynomial in
-    ``x``: the gcd of the denominator with one coefficient after another (each smaller than the
-    whole numerator), stopping at a number."""
-    common = denominator
-    coefficients = sorted(
-        (numerator.coeff_wrt(x, d) for d in range(max(numerator.degree(x), 0) + 1)), key=lambda c: len(c)
-    )
-    for c in coefficients:
-        if common.is_ground:
-            break
-        if c:
-            common = common.gcd(c)
-    if common.is_ground:
-        return numerator, denominator
-    return numerator.exquo(common), denominator.exquo(common)

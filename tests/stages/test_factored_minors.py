@@ -168,3 +168,36 @@ def test_a_mass_matrix_constant_on_the_circle_gives_field_elements():
         point = {q1: rng.uniform(0, 3), mu: rng.uniform(0, 2)}
         direct = float((W.T * M.inv() * V)[0, 0].subs(point))
         assert abs(float(A[0, 0].subs(point)) - direct) < 1e-12 * (1 + abs(direct))
+
+
+@pytest.mark.parametrize("seed, n, k", [(7, 2, 2), (8, 3, 2)])
+def test_the_characteristic_polynomial_from_minors_built_once_is_the_same(seed, n, k):
+    """(4.6) from the minors a linearization already has (moved to the ring with the law and lambda)
+    equals (4.6) from minors built anew with them, for laws that bring new generators (an angle,
+    a root): the two paths are compared exactly, and the moved minors are those of the factors."""
+    from contactsym.stages.minors import minors_of
+
+    M, W, V = random_factors(seed, n, k)
+    zero = sp.zeros(k)
+    built_once = minors_of(zero, (M, W, V))
+    q3, c = sp.symbols("q3 c", positive=True)
+    laws = [
+        ([-c * sp.cos(q3) - 2] * k, [-sp.sqrt(c)] * k),
+        ([-a - 1] * k, [-m] * k),
+    ]
+    for Phi, Psi in laws:
+        wider = built_once.extended([*Phi, *Psi, lam])
+        assert wider is not None
+        expected = charpoly(zero, Phi, Psi, factors=(M, W, V))
+        assert charpoly(zero, Phi, Psi, factors=(M, W, V), minors=built_once) == expected
+    assert principal_minors(zero, (M, W, V), built_once) == principal_minors(zero, (M, W, V))
+
+
+def test_minors_of_another_matrix_are_refused():
+    from contactsym.errors import ArgumentError
+    from contactsym.stages.minors import minors_of
+
+    with pytest.raises(ArgumentError, match="the minors of A, a 1 x 1 matrix"):
+        charpoly(sp.Matrix([[a]]), [a], [a], minors=minors_of(sp.eye(2)))
+    with pytest.raises(ArgumentError, match="minors"):
+        principal_minors(sp.Matrix([[a]]), minors="det")
