@@ -141,11 +141,11 @@ def classification_matrix(linearization) -> tuple[sp.Matrix, bool]:
     k = linearization.fast.k
     found = None
     if k == 2 and polynomial_factors(factors):
-        found = positive_multiple(factors, linearization.fast.positive)
+        found = positive_multiple(factors, linearization.fast.positive, linearization.minors)
         found = (found[0], found[2]) if found is not None and found[1] ** 2 > EXPAND_TERMS else None
     elif k >= 3 and polynomial_factors(factors):
         minors = linearization.principal_minors
-        found = equality_matrix(factors, [minors[(i,)] for i in range(k)])
+        found = equality_matrix(factors, [minors[(i,)] for i in range(k)], linearization.minors)
     if found is not None:
         return found[0], not found[1]
     return linearization.A, bool(linearization.A.free_symbols)

@@ -257,19 +257,20 @@ class Linearization(LatexReprMixin):
     @cached_property
     def det_A(self) -> sp.Expr:
         """det A in the canonical form, by fraction-free expansion in a polynomial ring."""
-        return self._minors.field.present(self._minors.minor(tuple(range(self.fast.k))))
+        return self.minors.field.present(self.minors.minor(tuple(range(self.fast.k))))
 
     @cached_property
-    def _minors(self):
-        """A's minors (:func:`~contactsym.stages.minors.minors_of`), built once for det A, the principal
-        minors and (4.6)."""
+    def minors(self) -> MinorsInRing:
+        """A's minors (:func:`~contactsym.stages.minors.minors_of`; with polynomial factors a
+        :class:`~contactsym.stages.minors.FactoredMinors`), built once for det A, the principal minors,
+        (4.6) and the entries the classification reads."""
         return minors_of(self._minors_source, self.factors)
 
     @cached_property
     def principal_minors(self) -> dict:
         """{S: det A_S} for every subset S of the contacts, in the canonical form (see
         :func:`principal_minors`: with the scene's factors, each one polynomial over det M)."""
-        return principal_minors(self._minors_source, self.factors, self._minors)
+        return principal_minors(self._minors_source, self.factors, self.minors)
 
     @cached_property
     def factors(self) -> tuple | None:
@@ -312,7 +313,7 @@ class Linearization(LatexReprMixin):
     @cached_property
     def charpoly(self) -> sp.Poly:
         log.info("scene '%s': characteristic polynomial (4.6) from %d principal minors", self.fast.name, 2**self.fast.k)
-        return charpoly(self._minors_source, self.Phi, self.Psi, self.fast.positive, self.factors, self._minors)
+        return charpoly(self._minors_source, self.Phi, self.Psi, self.fast.positive, self.factors, self.minors)
 
     @cached_property
     def _minors_source(self) -> sp.Matrix:

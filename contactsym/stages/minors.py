@@ -15,6 +15,7 @@ import sympy as sp
 from ..algebra.basic import known_sign, normalize
 from ..algebra.canonical_form import TrigField
 from ..algebra.fraction_free import adjugate_and_det_in_field
+from ..arguments import require
 
 __all__ = [
     "MinorsInRing",
@@ -283,10 +284,11 @@ def polynomial_factors(factors) -> bool:
     return all(_polynomial_rows(field, X) is not None for X in factors)
 
 
-def entry_numerators(factors) -> tuple[list[list], FactoredMinors] | None:
+def entry_numerators(factors, minors: MinorsInRing | None = None) -> tuple[list[list], FactoredMinors] | None:
     """The numerators N_ij = W_i^T adj(M) V_j = a_ij det M of A = W^T M^-1 V, as reduced ring elements
     read off the bordered determinants of :class:`FactoredMinors` (no division, no gcd), with those
-    minors; None where a factor is not polynomial.
+    minors; None where a factor is not polynomial. ``minors``: the factors' :class:`FactoredMinors`
+    when the caller has them (a linearization's), so that det M and its minors are not expanded again.
 
     Examples
     --------
@@ -296,10 +298,14 @@ def entry_numerators(factors) -> tuple[list[list], FactoredMinors] | None:
     >>> [[minors.field.present(minors.field.field.new(x)) for x in row] for row in numerators]
     [[3*a, 3], [0, 2]]
     """
-    try:
-        minors = FactoredMinors(*factors)
-    except ValueError:
-        return None
+    if minors is not None:
+        fits = isinstance(minors, FactoredMinors) and (minors.n, minors.k) == (factors[0].rows, factors[1].cols)
+        require(fits, "entry_numerators", "minors", minors, "the FactoredMinors of these factors, or None")
+    else:
+        try:
+            minors = FactoredMinors(*factors)
+        except ValueError:
+            return None
     return [[minors.entry_numerator(i, j) for j in range(minors.k)] for i in range(minors.k)], minors
 
 
@@ -308,7 +314,7 @@ def _is_number_matrix(numerators, det) -> bool:
     return all(x * det.LC == det * x.LC for row in numerators for x in row)
 
 
-def positive_multiple(factors, positive=()) -> tuple[sp.Matrix, int, bool] | None:
+def positive_multiple(factors, positive=(), minors: MinorsInRing | None = None) -> tuple[sp.Matrix, int, bool] | None:
     """(|det M| A, the most terms of an entry's numerator, whether A is a number matrix) for A = W^T M^-1 V with polynomial factors
     ``factors`` = (M, W, V): the entries sign(det M) W_i^T adj(M) V_j (:func:`entry_numerators`). None where a factor is not
     polynomial or the sign of det M is not proved (``positive``: expressions known to be positive,
@@ -324,7 +330,7 @@ def positive_multiple(factors, positive=()) -> tuple[sp.Matrix, int, bool] | Non
     [2*a, 2],
     [  0, m]]), 1, False)
     """
-    found = entry_numerators(factors)
+    found = entry_numerators(factors, minors)
     if found is None:
         return None
     numerators, minors = found
@@ -337,7 +343,7 @@ def positive_multiple(factors, positive=()) -> tuple[sp.Matrix, int, bool] | Non
     return scaled, terms, _is_number_matrix(numerators, minors.denominator)
 
 
-def equality_matrix(factors, diagonal) -> tuple[sp.Matrix, bool] | None:
+def equality_matrix(factors, diagonal, minors: MinorsInRing | None = None) -> tuple[sp.Matrix, bool] | None:
     """For A = W^T M^-1 V with polynomial factors and a det M that is not a number: (B, whether A is a
     number matrix), B with A's diagonal ``diagonal`` (a_ii, as the principal minors of size 1 have
     it) and the numerators N_ij = a_ij det M off it, so that a_ij = a_ji exactly when B_ij = B_ji
@@ -353,7 +359,7 @@ def equality_matrix(factors, diagonal) -> tuple[sp.Matrix, bool] | None:
     [a/m, 2*m],
     [2*m, 1/m]]), False)
     """
-    found = entry_numerators(factors)
+    found = entry_numerators(factors, minors)
     if found is None or found[1].denominator.is_ground:
         return None
     numerators, minors = found

@@ -106,6 +106,10 @@ def test_the_positive_multiple_is_det_m_times_a(seed, n, k):
     assert polynomial_factors((M, W, V))
     scaled, terms, numeric = positive_multiple((M, W, V), [M.det(method="berkowitz")])
     assert terms >= 1 and not numeric
+    from contactsym.stages.minors import minors_of
+
+    shared = minors_of(sp.zeros(k), (M, W, V))  # a linearization's minors: the same numerators, not expanded again
+    assert positive_multiple((M, W, V), [M.det(method="berkowitz")], shared) == (scaled, terms, numeric)
     rng = random.Random(seed)
     functions = sp.lambdify([q1, q2, m, a, s], [M, W, V, scaled], "numpy")
     for _ in range(3):
