@@ -21,7 +21,7 @@ from contactsym.algebra.basic import SignSymbol
 from contactsym.algebra.hurwitz import Hurwitz, hurwitz_minors
 from contactsym.errors import SingularJacobianError
 from contactsym.stages.stability import Stability
-from tests.helpers import exact
+from tests.helpers import exact, small_fractions
 
 # --- scenes ---------------------------------------------------------------------------
 
@@ -131,11 +131,11 @@ def rational(f: Fraction) -> sp.Rational:
     return sp.Rational(f.numerator, f.denominator)
 
 
-entries = st.fractions(min_value=-4, max_value=4, max_denominator=3).map(rational)
+entries = small_fractions(min_value=-4, max_value=4, max_denominator=3).map(rational)
 nonzero_entries = st.builds(
     lambda sign, f: sign * rational(f),
     st.sampled_from([1, -1]),
-    st.fractions(min_value=Fraction(1, 3), max_value=4, max_denominator=3),
+    small_fractions(min_value=Fraction(1, 3), max_value=4, max_denominator=3),
 )
 magnitudes = st.builds(lambda m, e: sp.Rational(m) * sp.Rational(10) ** e, st.integers(1, 9), st.integers(-2, 2))
 
@@ -231,7 +231,7 @@ def test_proposition_7_spd_is_robustly_stable(A):
 def law_dependent_k2_matrices():
     """General 2 x 2 matrices (half of them with a nonzero diagonal), and a_jj > 0 > a_12 a_21 ones."""
     general = st.one_of(general_matrices(2, nonzero_entries), general_matrices(2))
-    positive = st.fractions(min_value=Fraction(1, 3), max_value=4, max_denominator=3).map(rational)
+    positive = small_fractions(min_value=Fraction(1, 3), max_value=4, max_denominator=3).map(rational)
     coupled = st.builds(
         lambda a, d, b, c: sp.Matrix([[a, b], [-c, d]]),
         positive,
@@ -359,7 +359,7 @@ def hopf_k2(draw):
     With Phi_j = -P, Psi_j = -S, T = a_11 + a_22, D = det A: Delta_3 = D S^2 P (P (T^2 - 4 D) + 2 T D S^2),
     so P = 2 T D S^2 / (4 D - T^2), and omega^2 = p_1 / p_3 = 2 D P / T.
     """
-    positive = st.fractions(min_value=Fraction(1, 3), max_value=4, max_denominator=3).map(rational)
+    positive = small_fractions(min_value=Fraction(1, 3), max_value=4, max_denominator=3).map(rational)
     a11, a22, a12, extra, S = draw(positive), draw(positive), draw(positive), draw(positive), draw(positive)
     a21 = -((a11 - a22) ** 2 / (4 * a12) + extra)
     A = sp.Matrix([[a11, a12], [a21, a22]])
