@@ -19,6 +19,7 @@ import sympy as sp
 
 from ..algebra.basic import EXPAND_NODES, PaperSymbol, node_count, normalize, sign_symbols
 from ..algebra.canonical_form import TrigFraction, to_fraction
+from ..algebra.coprime import proved_coprime
 from ..arguments import checked, require
 from ..deprecation import deprecated_property
 from ..errors import ContactsymError
@@ -165,8 +166,8 @@ def _cancelled_in(numerator, denominator, x) -> tuple:
     for c in coefficients:
         if common.is_ground:
             break
-        if c:
-            common = common.gcd(c)
+        if c:  # most of these gcds are 1, and proving that (algebra.coprime) is cheaper than computing them
+            common = common.ring.one if proved_coprime(common, c) else common.gcd(c)
     if common.is_ground:
         return numerator, denominator
     return numerator.exquo(common), denominator.exquo(common)
