@@ -231,24 +231,24 @@ g_symbols = sorted(set().union(*(e.free_symbols for e in g_fast.f)) - set(g_fast
 _g_f = sp.lambdify((*g_fast.u, *g_symbols), list(g_fast.f), "numpy")
 
 
-def guides_count(values: dict) -> int:
-    """Solutions of f(u) = 0: each orthant's affine map measured from f, solved, kept if inside."""
-    args = [values[str(s)] for s in g_symbols]
+def guides_count(values: dict) -> np.ndarray:
+    """Solutions of f(u) = 0: each orthant's affine map measured from f, solved, kept if inside; for
+    every load of the arrays ``values["Y"]``, ``values["M"]`` at once (one solve per load)."""
+    args = [np.asarray(values[str(s)], dtype=float) for s in g_symbols]
+    shape = np.broadcast_shapes(*(a.shape for a in args))
 
-    def f(point):
-        return np.array(_g_f(*point, *args), dtype=float)
+    def f(point):  # shape + (2,)
+        return np.stack([np.broadcast_to(np.asarray(c, dtype=float), shape) for c in _g_f(*point, *args)], axis=-1)
 
-    count = 0
+    count = np.zeros(shape, dtype=int)
     for s in [(1, 1), (1, -1), (-1, 1), (-1, -1)]:
         base = np.array(s, dtype=float)
         columns = [(f(base + s[j] * np.eye(2)[j]) - f(base)) / s[j] for j in range(2)]
-        A = np.column_stack(columns)
+        A = np.stack(columns, axis=-1)
         b = f(base) - A @ base
-        if abs(np.linalg.det(A)) < 1e-10:
-            continue
-        root = np.linalg.solve(A, -b)
-        if all(sj * r > 0 for sj, r in zip(s, root)):
-            count += 1
+        regular = np.abs(np.linalg.det(A)) >= 1e-10
+        root = np.linalg.solve(np.where(regular[..., None, None], A, np.eye(2)), -b[..., None])[..., 0]
+        count += regular & np.all(np.array(s) * root > 0, axis=-1)
     return count
 
 
@@ -269,10 +269,8 @@ def test_guides_counts_agree_with_brute_force_roots_over_loads():
         point = {"v_1": signs[0] * a, "v_2": signs[1] * b, "kappa": k}
         names = [n for n, r in regions.items() if bool(r.evaluate(**{s: point[s] for s in r.symbol_names}))]
         assert len(names) == 1
-        counts = set()
-        for y_load, m_load in loads:
-            values = {"phi": phi, "mu_1": m1, "mu_2": m2, "l": 1.0, "Y": y_load, "M": m_load}
-            counts.add(guides_count(values))
+        values = {"phi": phi, "mu_1": m1, "mu_2": m2, "l": 1.0, "Y": loads[:, 0], "M": loads[:, 1]}
+        counts = set(guides_count(values).tolist())
         assert counts == expected[names[0]], (names[0], phi, m1, m2)
         seen.add(names[0])
     assert seen == set(expected)
