@@ -36,7 +36,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.polys.fields import FracField
 
-from ..arguments import checked
+from ..arguments import checked, require
 from ..parse import sympy_only
 from .coprime import cancel
 from .fourier import fourier_sum, shorter_fourier_terms
@@ -293,17 +293,30 @@ class TrigField:
 
     def substituted(self, expr: sp.Expr, values: dict):
         """``expr`` with generators replaced by field elements (``values``), reduced."""
+        fits = isinstance(values, dict) and all(
+            x in self.ring.symbols and self._owns(v, "field") for x, v in values.items()
+        )
+        require(fits, "TrigField.substituted", "values", values, "a dict {generator: element of this field}")
         value = self.element(expr)
         for symbol, replacement in values.items():
             index = self.ring.symbols.index(symbol)
             value = self.reduce(_compose(value.numer, index, replacement) / _compose(value.denom, index, replacement))
         return value
 
+    def _owns(self, value, kind: str) -> bool:
+        """``value`` is an element of this ring (``kind`` "ring") or field ("field")."""
+        mine = self.ring if kind == "ring" else self.field
+        theirs = getattr(value, kind, None)
+        return theirs is mine or (type(theirs) is type(mine) and theirs == mine)
+
     def reduce_poly(self, poly):
+        """The normal form of an element of this field's ring (sin^2 + cos^2 = 1, s^2 = 1)."""
+        require(self._owns(poly, "ring"), "TrigField.reduce_poly", "poly", poly, "an element of this field's ring")
         return _reduce(poly, self.pairs, self.signs)
 
     def reduce(self, value):
         """The normal form of a field element: signs moved up, both parts reduced, cancelled."""
+        require(self._owns(value, "field"), "TrigField.reduce", "value", value, "an element of this field")
         numer, denom = self.reduce_poly(value.numer), self.reduce_poly(value.denom)
         for i in self.signs:  # no sign in the denominator: d0 + d1 s times d0 - d1 s is d0^2 - d1^2
             if denom.degree(i) > 0:

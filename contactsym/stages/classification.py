@@ -31,7 +31,7 @@ import sympy as sp
 from ..algebra.basic import known_sign, normalize
 from ..algebra.hurwitz import EXPAND_TERMS, expansion_bound
 from ..arguments import checked
-from .minors import equality_matrix, polynomial_factors, positive_multiple
+from .minors import entry_numerators, equality_matrix, polynomial_factors, positive_multiple
 
 __all__ = ["classification_matrix", "proved_regions", "sign_equivalent"]
 
@@ -124,7 +124,8 @@ def classification_matrix(linearization) -> tuple[sp.Matrix, bool]:
     - k = 2 with polynomial factors whose entries' product may pass :data:`EXPAND_TERMS` terms: the
       positive multiple |det M| A (:func:`~contactsym.stages.minors.positive_multiple`). The regions of
       Proposition 6 are those of any positive multiple c A: the signs of a_ii, of det(c A) = c^2 det A
-      (det A itself is given) and of c^2 a_12 a_21 are A's.
+      (det A itself is given) and of c^2 a_12 a_21 are A's. Where the sign of det M is not proved, the
+      matrix of the next case: a_12 a_21 = N_12 N_21 / (det M)^2 has the sign of N_12 N_21.
     - k >= 3 with polynomial factors and a det M that is not a number: a_ii (the principal minors of
       size 1) on the diagonal and N_ij = a_ij det M off it (:func:`~contactsym.stages.minors.equality_matrix`):
       Propositions 7 and 8 read the signs of a_ii and the equalities a_ij = a_ji only.
@@ -141,9 +142,13 @@ def classification_matrix(linearization) -> tuple[sp.Matrix, bool]:
     k = linearization.fast.k
     found = None
     if k == 2 and polynomial_factors(factors):
-        found = positive_multiple(factors, linearization.fast.positive, linearization.minors)
-        found = (found[0], found[2]) if found is not None and found[1] ** 2 > EXPAND_TERMS else None
-    elif k >= 3 and polynomial_factors(factors):
+        numerators, minors = entry_numerators(factors, linearization.minors)
+        if max(len(x) for row in numerators for x in row) ** 2 <= EXPAND_TERMS:
+            return linearization.A, bool(linearization.A.free_symbols)
+        found = positive_multiple(factors, linearization.fast.positive, minors)
+        if found is not None:
+            return found[0], not found[2]
+    if k >= 2 and polynomial_factors(factors):  # k = 2 here: det M of unproved sign; N_12 N_21 has a_12 a_21's sign
         minors = linearization.principal_minors
         found = equality_matrix(factors, [minors[(i,)] for i in range(k)], linearization.minors)
     if found is not None:

@@ -260,6 +260,14 @@ class Linearization(LatexReprMixin):
         """det A in the canonical form, by fraction-free expansion in a polynomial ring."""
         return self.minors.field.present(self.minors.minor(tuple(range(self.fast.k))))
 
+    def __getstate__(self) -> dict:
+        """Pickled (an atlas's workers get the scene) without :attr:`minors`: they hold SymPy polynomial
+        rings, which do not pickle reliably (PolyRing.__getstate__ changes the dict it iterates), and
+        are derived again where needed."""
+        state = self.__dict__.copy()
+        state.pop("minors", None)
+        return state
+
     @cached_property
     def minors(self) -> MinorsInRing:
         """A's minors (:func:`~contactsym.stages.minors.minors_of`; with polynomial factors a

@@ -116,14 +116,18 @@ def test_k1_and_k3_regions():
     assert np.all(np.linalg.eigvalsh(as_float(A)) > 0)  # Proposition 7: symmetric positive definite
 
 
+@pytest.mark.parametrize("sign_of_det_m", ["proved", "not proved"])
 @pytest.mark.parametrize("name", ["brake", "two-leg-block", "painleve-klein-guides"])
-def test_the_factored_path_agrees_with_the_canonical_form_on_the_built_in_scenes(name, monkeypatch):
-    """With every k = 2 A sent through |det M| A (the path of the large arms), each region of a built-in
-    scene is the same set as with A's canonical entries: compared at random parameter points."""
+def test_the_factored_path_agrees_with_the_canonical_form_on_the_built_in_scenes(name, sign_of_det_m, monkeypatch):
+    """With every k = 2 A sent through |det M| A (the path of the large arms), or, where the sign of det M
+    is not proved, through a_11, a_22 and N_12 N_21 (N = det M A), each region of a built-in scene is
+    the same set as with A's canonical entries: compared at random parameter points."""
     default = cs.scene(name).stability()
     expected = default._classification
     monkeypatch.setattr(stability_module, "EXPAND_TERMS", -1)
     monkeypatch.setattr(classification_module, "EXPAND_TERMS", -1)
+    if sign_of_det_m == "not proved":
+        monkeypatch.setattr(classification_module, "positive_multiple", lambda *args: None)
     forced = Stability(default.linearization)
     assert not forced._sign_matrix.has(sp.Pow(sp.Wild("d"), -1))  # |det M| A: no division
     got = forced._classification

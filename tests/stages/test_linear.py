@@ -393,3 +393,16 @@ def test_a_charpoly_with_large_coefficients_keeps_them_as_derived_and_is_the_jac
         J = np.block([[np.diag(point[8:]) @ An, np.diag(point[6:8])], [An, np.zeros((2, 2))]])
         c = np.array(coefficients(*point), dtype=float)
         assert c / c[0] == pytest.approx(np.poly(J), rel=1e-8, abs=1e-8)
+
+
+def test_a_linearization_pickles_without_its_minors_and_derives_them_again():
+    """An atlas sends the scene to its workers: the minors' polynomial rings stay behind (SymPy's
+    PolyRing does not pickle reliably) and the unpickled linearization gives the same det A and (4.6)."""
+    import pickle
+
+    lin = cs.scene("brake").linearization()
+    det_A, p = lin.det_A, lin.charpoly
+    assert "minors" in lin.__dict__ and "minors" not in lin.__getstate__()
+    again = pickle.loads(pickle.dumps(lin))
+    assert "minors" not in again.__dict__
+    assert again.det_A == det_A and again.charpoly == p and again.minors.size == 2
