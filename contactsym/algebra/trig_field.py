@@ -311,12 +311,14 @@ class TrigField:
 
     def reduce_poly(self, poly):
         """The normal form of an element of this field's ring (sin^2 + cos^2 = 1, s^2 = 1)."""
-        require(self._owns(poly, "ring"), "TrigField.reduce_poly", "poly", poly, "an element of this field's ring")
+        if getattr(poly, "ring", None) is not self.ring:  # the check costs an attribute read where it holds
+            require(self._owns(poly, "ring"), "TrigField.reduce_poly", "poly", poly, "an element of this field's ring")
         return _reduce(poly, self.pairs, self.signs)
 
     def reduce(self, value):
         """The normal form of a field element: signs moved up, both parts reduced, cancelled."""
-        require(self._owns(value, "field"), "TrigField.reduce", "value", value, "an element of this field")
+        if getattr(value, "field", None) is not self.field:
+            require(self._owns(value, "field"), "TrigField.reduce", "value", value, "an element of this field")
         numer, denom = self.reduce_poly(value.numer), self.reduce_poly(value.denom)
         for i in self.signs:  # no sign in the denominator: d0 + d1 s times d0 - d1 s is d0^2 - d1^2
             if denom.degree(i) > 0:

@@ -398,11 +398,11 @@ def test_a_charpoly_with_large_coefficients_keeps_them_as_derived_and_is_the_jac
 def test_a_linearization_pickles_without_its_minors_and_derives_them_again():
     """An atlas sends the scene to its workers: the minors' polynomial rings stay behind (SymPy's
     PolyRing does not pickle reliably) and the unpickled linearization gives the same det A and (4.6)."""
-    import pickle
+    cloudpickle = pytest.importorskip("cloudpickle")  # how dask sends a scene (lambdified functions too)
 
     lin = cs.scene("brake").linearization()
     det_A, p = lin.det_A, lin.charpoly
     assert "minors" in lin.__dict__ and "minors" not in lin.__getstate__()
-    again = pickle.loads(pickle.dumps(lin))
+    again = cloudpickle.loads(cloudpickle.dumps(lin))
     assert "minors" not in again.__dict__
     assert again.det_A == det_A and again.charpoly == p and again.minors.size == 2
