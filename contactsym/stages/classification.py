@@ -140,17 +140,17 @@ def classification_matrix(linearization) -> tuple[sp.Matrix, bool]:
     """
     factors = linearization.factors
     k = linearization.fast.k
-    found = None
-    if k == 2 and polynomial_factors(factors):
-        numerators, minors = entry_numerators(factors, linearization.minors)
-        if max(len(x) for row in numerators for x in row) ** 2 <= EXPAND_TERMS:
-            return linearization.A, bool(linearization.A.free_symbols)
-        found = positive_multiple(factors, linearization.fast.positive, minors)
+    if k >= 2 and polynomial_factors(factors):
+        if k == 2:
+            numerators, minors = entry_numerators(factors, linearization.minors)
+            if max(len(x) for row in numerators for x in row) ** 2 <= EXPAND_TERMS:  # A's entries are small
+                return linearization.A, bool(linearization.A.free_symbols)
+            found = positive_multiple(factors, linearization.fast.positive, minors)
+            if found is not None:
+                return found[0], not found[2]
+        # k >= 3, or k = 2 with det M of unproved sign (N_12 N_21 has the sign of a_12 a_21)
+        principal = linearization.principal_minors
+        found = equality_matrix(factors, [principal[(i,)] for i in range(k)], linearization.minors)
         if found is not None:
-            return found[0], not found[2]
-    if k >= 2 and polynomial_factors(factors):  # k = 2 here: det M of unproved sign; N_12 N_21 has a_12 a_21's sign
-        minors = linearization.principal_minors
-        found = equality_matrix(factors, [minors[(i,)] for i in range(k)], linearization.minors)
-    if found is not None:
-        return found[0], not found[1]
+            return found[0], not found[1]
     return linearization.A, bool(linearization.A.free_symbols)
