@@ -16,8 +16,10 @@ mode, run as a script with the tree's ``contactsym`` on PYTHONPATH), both measur
 side in one run. Each measurement is a fresh process (scene build included, import
 excluded) with a time limit, ours and the baseline alternating, best of two (one with
 ``--quick``); a baseline that does not finish counts as the limit (the ratio is then a lower
-bound). The notes give the CPU seconds too: on a loaded machine they vary less than the wall
-time. The plot ``closed_forms_k3.png`` shows both trees' wall times by row, with the targets, and their CPU times.
+bound). When the baseline is this very tree (the benchmark run in ``/work/main`` itself) it is not
+run: the same code twice measures only noise; the rows then say so and have no baseline. The
+notes give the CPU seconds too: on a loaded machine they vary less than the wall time. The plot
+``closed_forms_k3.png`` shows both trees' wall times by row, with the targets, and their CPU times.
 """
 
 from __future__ import annotations
@@ -64,27 +66,31 @@ def run(quick: bool, out_dir) -> list[dict]:
     cases = [c for c in CASES if not (quick and c[0] in ("stool-masses", "stool-feet", "generic-4"))]
     rows, measured = [], []
     repeats = 1 if quick else 2
+    # the same tree twice is no comparison (only the noise of a shared machine): then ours alone
+    baseline = BASELINE.is_dir() and BASELINE.resolve() != ROOT.resolve()
     for scene, stage, target in cases:
         ours, old = [], []
         for _ in range(repeats):  # alternating, best of each: the load of a shared machine drifts
             ours.append(_worker(ROOT, scene, stage, limit))
-            old.append(_worker(BASELINE, scene, stage, limit) if BASELINE.is_dir() else None)
+            old.append(_worker(BASELINE, scene, stage, limit) if baseline else None)
         ours, old = _best(ours), _best(old)
         ours_s = ours["seconds"] if ours else float(limit)
-        old_s = old["seconds"] if old else float(limit)
-        notes = (
-            f"cold, fresh process, scene build included, best of {repeats}; time limit {limit} s; baseline {BASELINE}"
+        old_s = (old["seconds"] if old else float(limit)) if baseline else None
+        notes = f"cold, fresh process, scene build included, best of {repeats}; time limit {limit} s; " + (
+            f"baseline {BASELINE}"
+            if baseline
+            else f"no baseline: {BASELINE} is {'this tree' if BASELINE.is_dir() else 'missing'} (set CONTACTSYM_BASELINE)"
         )
         if target is not None:
             notes += f"; target < {target:.0f} s; within target: {ours is not None and ours_s < target}"
         if ours:
             notes += f"; CPU ours {ours['cpu_s']:.3g} s" + (f", baseline {old['cpu_s']:.3g} s" if old else "")
             notes += f"; ops ours {ours['ops']}" + (f", baseline {old['ops']}" if old else "")
-        if old is None:
+        if baseline and old is None:
             notes += "; the baseline timed out: baseline_s is the limit and the ratio a lower bound"
         rows.append(record(f"closed forms/{scene} {stage}", ours_s, old_s, None, 1, notes))
         cpu = (ours["cpu_s"] if ours else float("nan"), old["cpu_s"] if old else float("nan"))
-        measured.append((f"{scene}\n{stage}", ours_s, old_s, target, *cpu))
+        measured.append((f"{scene}\n{stage}", ours_s, old_s if old_s is not None else float("nan"), target, *cpu))
     closed_forms_plot(measured, Path(out_dir) / "closed_forms_k3.png")
     return rows
 
