@@ -211,8 +211,9 @@ def _floor_rows(classifier, values, ours_s, name: str = "classification") -> lis
             f"{len(values)} float64 inputs, {n} points; baseline = the memory floor (read every input once, "
             f"write one byte per point: {floor_s / n * 1e9:.2f} ns/point); ours = {ours / floor_s:.1f}x the floor "
             f"(target <= 3x), {ours / n * 1e9:.1f} ns/point: input checks (2 reductions per input), functions "
-            f"{functions} ({'float32 pre-pass' if classifier._cheap else 'float64'}), {ops} ufunc passes of the "
-            "generated code, the sign test and the verdicts, each pass over a cache-sized chunk; best of 3-5",
+            f"{functions}, {ops} ufunc passes of the generated code, the sign test and the verdicts "
+            f"({'in float32, the undecided points again in float64' if classifier._single else 'in float64'}), "
+            "each pass over a cache-sized chunk; best of 3-5",
         ),
         record(
             "classification/no-input-copy",
@@ -224,17 +225,18 @@ def _floor_rows(classifier, values, ours_s, name: str = "classification") -> lis
             "(baseline); best of 3, in one run",
         ),
     ]
-    if classifier._cheap:
+    if classifier._single:
         rows.append(_prepass_row(classifier, values, ours, floor_s))
     return rows
 
 
 def _prepass_row(classifier, values, ours_s: float, floor_s: float) -> dict:
-    """The float32 pre-pass for sines and cosines against float64 throughout, in one run: the same results."""
+    """The float32 pass (inputs rounded, sines and cosines, generated code and sign test in float32) against
+    float64 throughout, in one run: the same results."""
     import copy
 
     float64 = copy.copy(classifier)
-    float64._cheap = False
+    float64._single = False
     float64_s, theirs = _best_of(3, lambda: float64(*values))
     ours = classifier(*values)
     differ = int(np.sum(ours.signs != theirs.signs)) + int(np.sum(ours.in_band != theirs.in_band))
@@ -244,10 +246,10 @@ def _prepass_row(classifier, values, ours_s: float, floor_s: float) -> dict:
         float64_s,
         differ,
         len(values[0]),
-        f"sines and cosines from NumPy's float32 SIMD loops, certified with their error bound, the points left "
-        f"undecided recomputed in float64 (ours, {ours_s / floor_s:.1f}x the floor) against float64 sines "
-        f"throughout (baseline, {float64_s / floor_s:.1f}x the floor); error = signs or band membership that "
-        "differ; best of 3, in one run",
+        f"inputs rounded to float32, sines and cosines from NumPy's float32 SIMD loops, the generated code and the "
+        f"sign test in float32, certified with float32's unit; the points left undecided recomputed in float64 "
+        f"(ours, {ours_s / floor_s:.1f}x the floor) against float64 throughout (baseline, {float64_s / floor_s:.1f}x "
+        "the floor); error = signs or band membership that differ; best of 3, in one run",
     )
 
 

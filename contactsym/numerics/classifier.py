@@ -5,7 +5,6 @@ from __future__ import annotations
 import math
 import threading
 from collections.abc import Sequence
-from dataclasses import dataclass
 
 import mpmath
 import numpy as np
@@ -19,18 +18,10 @@ from ..progress import Budget, Progress
 from .buffered import BufferedCode, cheapest_trig
 from .certified import _gamma, certified_sign
 from .codegen import lambdify_cse
-from .float_stage import (
-    _CHEAP_ERROR,
-    _as_array,
-    _certain_sign,
-    _function_values,
-    _functions_as_arguments,
-    _given,
-    _undecided,
-    cheap_functions,
-)
+from .float_stage import _as_array, _certain_sign, _function_values, _functions_as_arguments, _given, _undecided
 from .one_signed import _one_signed_form, _roundings
-from .values import _UNIT
+from .single import single_functions, single_widths, to_single
+from .verdicts import PointsResult, Verdicts
 
 
 @checked(conditions="list | tuple | sp.MatrixBase")
@@ -49,9 +40,11 @@ class PointClassifier:
     operation: the float stage runs with these trapped, in chunks that stay in the
     cache, and a chunk that traps is halved until the points that cause it are found.
     A function of one parameter (``sin(alpha)``) is computed once per chunk (or given:
-    ``function_values``); sines and cosines come from a float32 pre-pass with their own
-    certified bound where it applies, and the points it leaves undecided from float64.
-    Those points and the points inside ``max(band, 2 gamma)`` relative are decided
+    ``function_values``). Where it applies (:mod:`.single`), a chunk is first evaluated in
+    float32: inputs rounded, sines and cosines from float32 loops with their own bound, with
+    a width that makes its certain points certain in float64 too; the points it leaves
+    undecided are evaluated again in float64, so the result is the float64 one.
+    Points that trap and the points inside ``max(band, 2 gamma)`` relative are decided
     exactly: the binary inputs are exact rationals, F is evaluated in 256-bit
     arithmetic, and where even that leaves |F| < 2^-200 (P + M + |U|) the point is
     recomputed in SymPy rationals.
@@ -115,18 +108,33 @@ class PointClassifier:
         except NumericsError:  # a part without a buffered form (e.g. a symbolic exponent)
             self._buffered, self._function = None, lambdify_cse(self.parameters, flat)
             self.functions = ()
-        # the float32 pre-pass (see _cheap_functions): its sine or cosine counts as k roundings, k u >= its error
-        self._cheap = self._buffered is not None and bool(self.functions)
-        self._cheap &= all(ufunc in ("sin", "cos") for _, ufunc in self.functions)
-        cost = math.ceil(_CHEAP_ERROR / _UNIT)
-        widths = [max(self.band, 2 * g) for g in self.gammas]
-        self._widths = widths
-        self._cheap_widths = [  # certain there => certain, with the same sign, in float64 (see _cheap_functions)
-            2 * _gamma(max(_roundings(g, cost) for g in p) + 3) + 2 * w + 2 * g
-            for p, w, g in zip(code, widths, self.gammas)
-        ]
+        self._widths = [max(self.band, 2 * g) for g in self.gammas]
+        self._single_widths = self._float32_widths(arguments, len(code))
+        self._single = self._single_widths is not None  # False: float64 throughout (same results, slower)
+        self._verdicts = Verdicts(self.uses, len(self.conditions), self.always_false)
+        self._declared = [(s, bool(s.is_positive), bool(s.is_negative)) for s in self.parameters]  # looked up once
+        self._names = [f"the values of {s}" for s in self.parameters]  # printed once: SymPy's printer is slow
+        self._zeros = [(part[0] == 0, part[1] == 0) for part in self.parts]  # SymPy comparisons: once, not per chunk
         self._mp_function = self._mp_functions()
         self._workspaces = threading.local()
+
+    def _float32_widths(self, arguments: tuple, count: int) -> tuple | None:
+        """The float32 pass's widths (:mod:`.single`), with the functions computed (if they are all sines and
+        cosines, else None) and given; None where the code has no float32 bound."""
+        if self._buffered is None:
+            return None
+        names, flat = arguments
+        sizes = [len(p) for p in self.parts]
+        code = [tuple(flat[sum(sizes[:k]) : sum(sizes[: k + 1])]) for k in range(count)]
+        try:
+            given = single_widths(code, names, False, self._widths, self.gammas)
+            computed = single_widths(code, names, True, self._widths, self.gammas)
+        except NumericsError:
+            return None
+        if max(given, default=0.0) > 1e-3:  # a pass that would decide little is not worth its cost
+            return None
+        sines = all(ufunc in ("sin", "cos") for _, ufunc in self.functions)
+        return (computed if sines and max(computed, default=0.0) <= 1e-3 else None), given
 
     def _mp_functions(self) -> list:
         return [sp.lambdify(self.parameters, list(p), modules="mpmath") for p in self.parts]
@@ -189,31 +197,23 @@ class PointClassifier:
             raise NumericsError(
                 f"give {len(self.parameters)} arrays, one per parameter {list(map(str, self.parameters))}."
             )
-        return [validate.real_array(array, what) for what, array in zip(self._what(), arrays)]
-
-    def _what(self) -> list[str]:
-        """The parameters' names for messages, printed once (SymPy's printer costs more than a small chunk)."""
-        if getattr(self, "_names", None) is None:
-            self._names = [f"the values of {symbol}" for symbol in self.parameters]
-        return self._names
+        return [validate.real_array(array, what) for what, array in zip(self._names, arrays)]
 
     def _check_values(self, arrays) -> list[float]:
         """Refuse values that are not finite or break a declared sign; the largest |value| of each array."""
         reach = []
-        for symbol, a in zip(self.parameters, arrays):
-            if a.size == 0:
-                reach.append(0.0)
-                continue
-            if a.strides == (0,):  # one value for every point
-                a = a[:1]
-            low, high = np.minimum.reduce(a), np.maximum.reduce(a)  # NaN propagates; +-inf shows in the extremes
+        for (symbol, positive, negative), a in zip(self._declared, arrays):
+            a = a[:1] if a.strides == (0,) else a  # one value for every point
+            # NaN propagates; +-inf shows in the extremes
+            low, high = (float(np.minimum.reduce(a)), float(np.maximum.reduce(a))) if a.size else (0.0, 0.0)
             if not (math.isfinite(low) and math.isfinite(high)):
                 raise NumericsError(f"the values of {symbol} are not all finite.")
-            if symbol.is_positive and not low > 0:
-                raise NumericsError(f"{symbol} is declared positive; some values are <= 0.")
-            if symbol.is_negative and not high < 0:
-                raise NumericsError(f"{symbol} is declared negative; some values are >= 0.")
-            reach.append(max(-float(low), float(high)))
+            if a.size and ((positive and not low > 0) or (negative and not high < 0)):
+                raise NumericsError(
+                    f"{symbol} is declared {'positive' if positive else 'negative'}; some values are "
+                    f"{'<=' if positive else '>='} 0."
+                )
+            reach.append(max(-low, high))
         return reach
 
     def _float_stage(self, arrays, known, out: np.ndarray, widths: list) -> None:
@@ -235,9 +235,11 @@ class PointClassifier:
             self._float_stage([a[:half] for a in arrays], [k[:half] for k in known], out[:, :half], widths)
             self._float_stage([a[half:] for a in arrays], [k[half:] for k in known], out[:, half:], widths)
 
-    def _signs(self, arrays, known, out: np.ndarray, widths: list) -> None:
+    def _signs(self, arrays, known, out: np.ndarray, widths: list, floats: np.ndarray | None = None) -> None:
+        """The generated code and the sign test, in float64 or (``floats``: float32 rows) float32."""
         size = out.shape[1]
-        floats, small = self._workspace(size)
+        floats64, small = self._workspace(size)
+        floats = floats64 if floats is None else floats
         if self._buffered is not None:
             rows = floats[: self._buffered.buffers + len(self.functions)]
             functions = [
@@ -250,13 +252,7 @@ class PointClassifier:
         scratch = (floats[-2, :size], floats[-1, :size], small[0, :size], small[1, :size])
         for position, part in enumerate(self.parts):
             groups = [next(values) for _ in part]
-            _certain_sign(groups, widths[position], self._zero_parts()[position], out[position], scratch)
-
-    def _zero_parts(self) -> list[tuple[bool, bool]]:
-        """Per kept factor, (P = 0, M = 0): compared once, not per chunk (a SymPy comparison of large sums)."""
-        if getattr(self, "_zeros", None) is None:
-            self._zeros = [(part[0] == 0, part[1] == 0) for part in self.parts]
-        return self._zeros
+            _certain_sign(groups, widths[position], self._zeros[position], out[position], scratch)
 
     def _high_precision_sign(self, position: int, point: list[float]) -> int | None:
         """Sign of a kept factor in 256-bit arithmetic from the exact binary inputs, or None."""
@@ -277,7 +273,7 @@ class PointClassifier:
         progress: Progress | None = None,
         max_seconds: float | None = None,
         function_values: Sequence | None = None,
-    ) -> _PointsResult:
+    ) -> PointsResult:
         """Classify the points; ``progress(fraction, message)`` follows the exact path, which
         ``max_seconds`` bounds (a NumericsError then says how many points were decided).
 
@@ -299,7 +295,6 @@ class PointClassifier:
         ]
         size = int(np.prod(shape))
         factor_signs = np.empty((len(self.kept), size), dtype=np.int8)
-        signs = np.empty((len(self.conditions), size), dtype=np.int8)
         stable = np.empty(size, dtype=np.int8)
         in_band = np.empty(size, dtype=bool)
         left: list[np.ndarray] = []  # points the float32 pre-pass leaves to float64, all chunks in one go
@@ -307,15 +302,14 @@ class PointClassifier:
             stop = min(start + chunk, size)
             part = factor_signs[:, start:stop]
             pieces = [a[start:stop] for a in arrays]
-            reach = self._check_values(pieces)
             known = [None if g is None else g[start:stop] for g in given]
-            prepass = self._chunk_signs(pieces, known, reach, part)
-            self._combine(part, signs[:, start:stop], stable[start:stop])
+            single = self._chunk_signs(pieces, known, part)
+            self._verdicts.stable(part, stable[start:stop], self._workspace(stop - start)[1])
             undecided = _undecided(part, in_band[start:stop])
-            if prepass:
+            if single:
                 left.append(start + np.nonzero(undecided)[0])
         if left:
-            self._in_float64(np.concatenate(left), arrays, chunk, (factor_signs, signs, stable, in_band))
+            self._in_float64(np.concatenate(left), arrays, given, chunk, (factor_signs, stable, in_band))
         points = np.nonzero(in_band)[0]
         for done, i in enumerate(points):
             if budget.report(done / len(points), f"{done} of {len(points)} points decided exactly"):
@@ -327,65 +321,72 @@ class PointClassifier:
             point = [float(a[i]) for a in arrays]
             for position in np.nonzero(factor_signs[:, i] == 0)[0]:
                 factor_signs[position, i] = self._exact_factor_sign(position, point)
-            self._combine(factor_signs[:, i : i + 1], signs[:, i : i + 1], stable[i : i + 1])
+            self._verdicts.stable(factor_signs[:, i : i + 1], stable[i : i + 1], self._workspace(1)[1])
         budget.report(1.0, f"{size} points, {len(points)} decided exactly")
-        bands = self._widths
-        return _PointsResult(
-            stable.reshape(shape),
-            signs.reshape((len(self.conditions), *shape)),
-            in_band.reshape(shape),
-            len(points),
-            max(bands, default=self.band),
+        band = max(self._widths, default=self.band)
+        return PointsResult(
+            stable.reshape(shape), factor_signs, self._verdicts, in_band.reshape(shape), len(points), band
         )
 
-    def _chunk_signs(self, pieces, known, reach, part) -> bool:
-        """Signs of the kept factors on a chunk (0: not certain), in float64 or by the float32 pre-pass for sines
-        and cosines where it applies (then True: the points it leaves undecided go to :meth:`_in_float64`)."""
-        cheap = self._cheap_functions(pieces, known, reach)
-        if cheap is None:
-            self._float_stage(pieces, known, part, self._widths)
-            return False
-        self._float_stage(pieces, cheap, part, self._cheap_widths)
-        return True
+    def _chunk_signs(self, pieces, known, part) -> bool:
+        """Checks and signs of the kept factors on a chunk (0: not certain): by the float32 pass where it applies
+        (then True: the points it leaves undecided go to :meth:`_in_float64`), else in float64."""
+        checked = False
+        if self._single and len(pieces[0]):
+            floats, singles = self._single_workspace(len(pieces[0]))
+            inputs = [*pieces, *[k for k in known if k is not None]]
+            try:
+                with np.errstate(all="raise"):  # a value outside float32's normal range: float64 for this chunk
+                    rounded = to_single(inputs, singles)
+                    reach = self._check_values(rounded[: len(pieces)])  # the float32 values keep signs and finiteness
+                    checked = True
+                    functions, widths = self._single_functions(rounded, known, reach, singles[len(inputs) :])
+                    if functions is not None:
+                        self._signs(rounded[: len(pieces)], functions, part, widths, floats)
+                        return True
+            except FloatingPointError:
+                pass
+        if not checked:
+            self._check_values(pieces)
+        self._float_stage(pieces, known, part, self._widths)
+        return False
 
-    def _in_float64(self, index: np.ndarray, arrays, chunk: int, results: tuple) -> None:
-        """The points ``index`` that the pre-pass left undecided, in float64 (a chunk at a time), into ``results``
-        (factor signs, signs, stable, in_band): the same as float64 throughout (:func:`.float_stage.cheap_functions`)."""
-        factor_signs, signs, stable, in_band = results
+    def _single_functions(self, rounded, known, reach, rows) -> tuple:
+        """(the functions' float32 values, the widths that count them), or (None, None): float64 for this chunk."""
+        computed, given = self._single_widths
+        if any(k is not None for k in known):  # given values (rounded as inputs are): each counts for one rounding
+            if not all(k is not None for k in known):
+                return None, None
+            return rounded[len(self.parameters) :], given
+        if not self.functions:
+            return [], given
+        if computed is None:
+            return None, None
+        return single_functions(self.functions, rounded, reach, rows), computed
+
+    def _single_workspace(self, size: int) -> tuple[np.ndarray, np.ndarray]:
+        """Float32 rows: the generated code's buffers, two for the sign test; the rounded inputs and functions."""
+        found = getattr(self._workspaces, "single", None)
+        if found is None or found[0].shape[1] < size:
+            code = self._buffered.buffers + len(self.functions) + 2
+            inputs = len(self.parameters) + 2 * len(self.functions)
+            found = (np.empty((code, size), dtype=np.float32), np.empty((inputs, size), dtype=np.float32))
+            self._workspaces.single = found
+        return found
+
+    def _in_float64(self, index: np.ndarray, arrays, given, chunk: int, results: tuple) -> None:
+        """The points ``index`` that the float32 pass left undecided, in float64 (a chunk at a time), into
+        ``results`` (factor signs, stable, in_band): the same as float64 throughout (:mod:`.single`)."""
+        factor_signs, stable, in_band = results
         for start in range(0, len(index), chunk):
             some = index[start : start + chunk]
             again = np.empty((len(self.kept), len(some)), dtype=np.int8)
-            self._float_stage([a[some] for a in arrays], [None] * len(self.functions), again, self._widths)
-            verdicts = np.empty((len(self.conditions), len(some)), dtype=np.int8)
+            known = [None if g is None else g[some] for g in given]
+            self._float_stage([a[some] for a in arrays], known, again, self._widths)
             least = np.empty(len(some), dtype=np.int8)
-            self._combine(again, verdicts, least)
-            factor_signs[:, some], signs[:, some], stable[some] = again, verdicts, least
+            self._verdicts.stable(again, least, self._workspace(len(some))[1])
+            factor_signs[:, some], stable[some] = again, least
             in_band[some] = _undecided(again, np.empty(len(some), dtype=bool))
-
-    def _cheap_functions(self, pieces, known, reach) -> list | None:
-        """The float32 pre-pass's sines and cosines for a chunk, or None (see :func:`.float_stage.cheap_functions`)."""
-        if not self._cheap or any(k is not None for k in known) or not len(pieces[0]):
-            return None
-        return cheap_functions(self.functions, pieces, reach, *self._cheap_workspace(len(pieces[0])))
-
-    def _cheap_workspace(self, size: int) -> tuple[np.ndarray, np.ndarray]:
-        found = getattr(self._workspaces, "cheap", None)
-        if found is None or found[0].shape[1] < size:
-            found = (np.empty((2, size), dtype=np.float32), np.empty((len(self.functions), size)))
-            self._workspaces.cheap = found
-        return found
-
-    def _combine(self, factor_signs, signs, stable) -> None:
-        """Signs of the conditions from those of their factors; stable = the least of them."""
-        signs[...] = 1
-        for index, sign, position in self.uses:
-            signs[index] *= factor_signs[position]
-            if sign < 0:
-                np.negative(signs[index], out=signs[index])
-        signs[self.always_false] = 0
-        stable[...] = 1
-        for row in signs:  # a chain of minimum: a third of the time of np.min over axis 0 (int8 rows)
-            np.minimum(stable, row, out=stable)
 
     def _exact_factor_sign(self, position: int, point: list[float]) -> int:
         """The exact sign of one kept factor at one point: 256-bit first, then rationals."""
@@ -393,16 +394,3 @@ class PointClassifier:
         if found is not None:
             return found
         return certified_sign(self.kept[position], dict(zip(self.parameters, point)), band=0.0)[0]
-
-
-@dataclass(frozen=True, eq=False)
-class _PointsResult:
-    """Result of :class:`PointClassifier`: ``stable`` (+1, -1, 0 per point), per-condition
-    ``signs``, the mask ``in_band`` of points decided exactly, their number, and the
-    relative band half-width used."""
-
-    stable: np.ndarray
-    signs: np.ndarray
-    in_band: np.ndarray
-    exact_points: int
-    band: float

@@ -1,5 +1,5 @@
 """The classifier's float stage, piece by piece: functions of a parameter as arguments of the generated
-code, the float32 pre-pass for sines and cosines, and the certified sign test."""
+code and the certified sign test (the float32 pass: :mod:`.single`)."""
 
 from __future__ import annotations
 
@@ -12,41 +12,10 @@ from .buffered import NUMPY_FUNCTIONS
 
 __all__: list[str] = []  # helpers of contactsym.numerics.classifier
 
-#: The float32 pre-pass: the relative error it allows a sine or cosine (checked per chunk), the largest |argument|,
+#: The float32 pass (:mod:`.single`): the relative error it allows a sine or cosine (checked per chunk), the largest |argument|,
 #: and the absolute error of NumPy's float32 sin and cos there (its SIMD loops claim 1.49 units in the last place,
 #: under 2^-23; tests/numerics/test_classifier.py checks 2^-21 on a dense sample).
 _CHEAP_ERROR, _CHEAP_RANGE, _CHEAP_ABSOLUTE = 2.0**-14, 2.0**10, 2.0**-21
-
-
-def cheap_functions(functions, pieces, reach, singles: np.ndarray, cheap: np.ndarray) -> list | None:
-    """The sines and cosines from NumPy's float32 SIMD loops (7x faster than float64's scalar ones), or None.
-
-    With x32 the argument x rounded to float32 (|x32 - x| <= 2^-24 |x|) and NumPy's float32 sine within
-    _CHEAP_ABSOLUTE of sin(x32), the value v is within e = 2^-24 |x| + _CHEAP_ABSOLUTE of sin(x); relative
-    to |sin(x)| >= min |v| - e, at most _CHEAP_ERROR when checked here (else None: float64 throughout).
-    A point certain with the widths of the classifier's ``_cheap_widths`` is certain with the same sign in
-    float64, so the result is the same as float64 throughout (the band too, but for a point whose float64
-    evaluation would underflow or overflow where this one does not: its sign is certain either way). ``singles``: two float32 rows, ``cheap`` one
-    float64 row per function, each at least as long as the chunk."""
-    size, values = len(pieces[0]), []
-    with np.errstate(all="ignore"):
-        for number, (index, ufunc) in enumerate(functions):
-            argument = pieces[index]
-            if argument.strides == (0,):  # one value: float64, once
-                values.append(_function_values(argument, ufunc, cheap[number, :size]))
-                continue
-            if not reach[index] <= _CHEAP_RANGE:
-                return None
-            x32, v32 = singles[0, :size], singles[1, :size]
-            np.copyto(x32, argument, casting="same_kind")
-            getattr(np, ufunc)(x32, out=v32)
-            error = reach[index] * 2.0**-24 + _CHEAP_ABSOLUTE
-            smallest = float(np.minimum.reduce(np.absolute(v32, out=x32)))
-            if not (smallest > error and error / (smallest - error) <= _CHEAP_ERROR):
-                return None
-            np.copyto(cheap[number, :size], v32)
-            values.append(cheap[number, :size])
-    return values
 
 
 def _functions_as_arguments(flat: list, parameters: tuple) -> tuple[tuple, tuple]:

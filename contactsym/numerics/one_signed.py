@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
+import numpy as np
 import sympy as sp
 
 from ..errors import NumericsError
@@ -62,32 +63,35 @@ def _one_signed_sums(expr: sp.Expr) -> bool:
     return True
 
 
-def _roundings(expr: sp.Expr, function: int = 4) -> int:
+def _roundings(expr: sp.Expr, function: int = 4, leaves: dict | None = None) -> int:
     """Roundings along the longest path of the evaluation of ``expr`` in floating point:
     its computed value is within gamma_r relative of the exact one when every sum of
     ``expr`` has terms of one sign. ``function``: the roundings a function of an exact argument counts for
-    (4: NumPy's float64 ones; a value with relative error at most k u counts for k, as gamma_k >= k u)."""
+    (4: NumPy's float64 ones; a value with relative error at most k u counts for k, as gamma_k >= k u).
+    ``leaves``: in float32 (u the float32 unit), per symbol the roundings its value counts for (1 if not
+    given: a float64 input rounded to float32); a number not exact in float32 then counts for 2 (a float64
+    literal, rounded again), and a function must be an argument (a symbol), not an operation."""
     if expr.is_Symbol:
-        return 0
+        return 0 if leaves is None else leaves.get(expr, 1)
     if expr.is_Number or expr.is_NumberSymbol:
         if expr.is_Rational and _exact_float(float(expr), Fraction(int(expr.p), int(expr.q))):
-            return 0
-        return 1
+            return 0 if leaves is None or float(np.float32(float(expr))) == float(expr) else 2
+        return 1 if leaves is None else 2
     if expr.is_Add:
-        return max(_roundings(a, function) for a in expr.args) + len(expr.args) - 1
+        return max(_roundings(a, function, leaves) for a in expr.args) + len(expr.args) - 1
     if expr.is_Mul:  # a product of k factors: k - 1 roundings, none for a power of two
         exact = sum(1 for f in expr.args if f.is_Integer and f != 0 and abs(int(f)).bit_count() == 1)
-        return sum(_roundings(f, function) for f in expr.args) + len(expr.args) - 1 - exact
+        return sum(_roundings(f, function, leaves) for f in expr.args) + len(expr.args) - 1 - exact
     if expr.is_Pow:
         base, exponent = expr.args
         if exponent.is_Integer:
             n = abs(int(exponent))
-            return n * _roundings(base, function) + n + (1 if exponent < 0 else 0)
-        if exponent.is_Rational:
-            return _roundings(base, function) + 2
+            return n * _roundings(base, function, leaves) + n + (1 if exponent < 0 else 0)
+        if exponent.is_Rational and leaves is None:  # NumPy's float32 powers promise no bound
+            return _roundings(base, function, leaves) + 2
     if isinstance(expr, sp.Abs):
-        return _roundings(expr.args[0], function)
-    if isinstance(expr, sp.Function) and len(expr.args) == 1:
+        return _roundings(expr.args[0], function, leaves)
+    if isinstance(expr, sp.Function) and len(expr.args) == 1 and leaves is None:
         if _roundings(expr.args[0], function) == 0:
             return function  # NumPy's elementary functions: at most 4 units in the last place (its SIMD ones)
         raise NumericsError(

@@ -220,22 +220,39 @@ def test_numpys_float32_sine_and_cosine_are_within_the_prepass_bound():
         assert np.max(np.abs(function(x32).astype(float) - function(x32.astype(float)))) <= _CHEAP_ABSOLUTE / 4
 
 
-def test_the_float32_prepass_gives_the_float64_result_and_leaves_the_close_points_to_it():
+@pytest.mark.parametrize("given", [False, True])
+def test_the_float32_pass_gives_the_float64_result_and_leaves_the_close_points_to_it(given):
+    """sin(alpha) computed by the float32 pass or given by the caller (then rounded to float32 as an input)."""
     import copy
 
     values = _brake_points(np.random.default_rng(8), 3000, on_line=3000)
     phi1 = values[3]
     phi1 *= 1 + 10.0 ** np.random.default_rng(9).uniform(-9, -1, 3000) * np.resize([1, -1], 3000)  # both sides
+    functions = [np.sin(values[0])] if given else None
     float64 = copy.copy(BRAKE_CLASSIFIER)
-    float64._cheap = False
-    prepass = copy.copy(BRAKE_CLASSIFIER)
-    assert prepass._cheap
-    widths = []
-    stage = prepass._float_stage
-    prepass._float_stage = lambda *args: (widths.append(args[3]), stage(*args))
+    float64._single = False
+    single = copy.copy(BRAKE_CLASSIFIER)
+    assert single._single and all(w is not None for w in single._single_widths)
+    again = []  # points evaluated in float64
+    stage = single._float_stage
+    single._float_stage = lambda *args: (again.append(len(args[0][0])), stage(*args))
     for chunk in (3000, 256):
-        widths.clear()
-        ours, theirs = prepass(*values, chunk=chunk), float64(*values, chunk=chunk)
+        again.clear()
+        ours = single(*values, chunk=chunk, function_values=functions)
+        theirs = float64(*values, chunk=chunk, function_values=functions)
         assert np.array_equal(ours.stable, theirs.stable) and np.array_equal(ours.signs, theirs.signs)
         assert np.array_equal(ours.in_band, theirs.in_band)
-        assert any(w is prepass._cheap_widths for w in widths) and any(w is prepass._widths for w in widths)
+        assert 0 < sum(again) < 3000  # the close points, and only a part of the others
+
+
+def test_the_float32_pass_steps_aside_outside_float32s_range():
+    """A chunk with a value that under- or overflows float32 is evaluated in float64 (the others in float32)."""
+    F = a * b - c**2
+    classifier = nm.PointClassifier([F], [a, b, c])
+    assert classifier._single
+    A, B, C = np.random.default_rng(4).uniform(1, 2, (3, 64))
+    A[40], B[40], C[40] = 1e-50, 2e-50, 1e-50
+    A[50], B[50], C[50] = 1e50, 2e50, 1e50
+    result = classifier(A, B, C, chunk=16)
+    exact = [_exact_sign(F, point, (a, b, c)) for point in zip(A, B, C)]
+    assert result.signs[0].tolist() == exact and result.exact_points == 0
