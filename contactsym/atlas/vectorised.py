@@ -118,9 +118,9 @@ class _Classification(Kernel):
         """The grid's columns as they are made (no matrix of points), each function of an axis once per axis value."""
         try:
             with np.errstate(all="ignore"):
-                columns = grid.columns(start, stop)
-                functions = [grid.column(j, start, stop, along=ufunc(grid.axes[j])) for j, ufunc in self.of_axes]
-                given = [self._of_axis(grid, j, ufunc, start, stop) for j, ufunc in self._classifier_functions()]
+                columns, laid = grid.columns(start, stop), {}  # a function of an axis laid out once for both codes
+                functions = [self._of_axis(grid, j, f.__name__, start, stop, laid)[0] for j, f in self.of_axes]
+                given = [self._of_axis(grid, j, f, start, stop, laid)[1] for j, f in self._classifier_functions()]
                 return self._values(columns, functions, given), Reasons.none(stop - start)
         except Exception:  # noqa: BLE001 - point by point, each failure with its reason (Kernel.__call__)
             return self(grid.points(start, stop))
@@ -128,29 +128,37 @@ class _Classification(Kernel):
     def _classifier_functions(self) -> tuple:
         return self.classifier.functions if self.classifier is not None else ()
 
-    def _of_axis(self, grid: Grid, j: int, ufunc: str, start: int, stop: int):
-        """The classifier's function of a grid axis, once per axis value; None (computed per point by the classifier)
-        for a fixed argument, or where the axis values under- or overflow (the certificate assumes neither)."""
+    def _of_axis(self, grid: Grid, j: int, ufunc: str, start: int, stop: int, laid: dict) -> tuple:
+        """A function of a grid axis, once per axis value, laid out as the axis is (kept in ``laid``): (for the robust
+        regions' code, for the classifier). The classifier's is None (computed per point by the classifier) for a
+        fixed argument, or where the axis values under- or overflow (its certificate assumes neither)."""
         if j >= len(grid.axes):
-            return None
-        try:
-            with np.errstate(all="raise"):
-                along = getattr(np, ufunc)(grid.axes[j])
-        except FloatingPointError:
-            return None
-        return grid.column(j, start, stop, along=along)
+            return None, None
+        if (j, ufunc) not in laid:
+            try:
+                with np.errstate(all="raise"):
+                    along, certified = getattr(np, ufunc)(grid.axes[j]), True
+            except FloatingPointError:
+                along, certified = getattr(np, ufunc)(grid.axes[j]), False
+            column = grid.column(j, start, stop, along=along)
+            laid[j, ufunc] = column, column if certified else None
+        return laid[j, ufunc]
 
     def _values(self, columns: list, functions: list, given: list | None = None) -> np.ndarray:
         n = len(columns[0]) if columns else 0
         buffers = self.scratch("robust", (getattr(self.function, "buffers", 0), n))
         # truth values as arrays of the points or, where constant, as one value (copyto broadcasts it)
         stable, unstable, dependent = (np.asarray(m) != 0 for m in self.function(columns + functions, buffers))
-        out = np.full((2, n), np.nan).T  # column-major: each output's column is contiguous
+        out = np.empty((2, n)).T  # column-major: each output's column is contiguous
         region = out[:, 0]
+        region.fill(np.nan)
         for value, mask in ((0.0, dependent), (-1.0, unstable), (1.0, stable)):  # the first that holds wins
-            np.copyto(region, value, where=mask)
+            if mask.ndim or mask:  # a mask that is one False changes nothing: no pass over the points
+                np.copyto(region, value, where=mask)
         if self.classifier is not None:
             out[:, 1] = self.classifier(*columns, *self.setup.fixed_columns(n), function_values=given).stable
+        else:
+            out[:, 1] = np.nan
         return out
 
 
