@@ -24,6 +24,9 @@ from . import fresh_process, record
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES = ("painleve-klein-guides", "two-leg-block", "generic-k2", "generic-stool-k3")
+#: --quick: the old way only where it finishes within the cut; for the guides, generic-k2 and the stool it only ran
+#: into the 5 s cut (2026-11-28), so --quick leaves it out and the full bench (600 s) runs it
+OLD_QUICK = ("two-leg-block",)
 OURS_LIMIT = 600  # seconds of wall time for ours, in both modes (the untimed check of generic-k2 included)
 LABELS = {"unique": {1}, "two or none": {0, 2}, "one or three": {1, 3}, "none, two or four": {0, 2, 4}}
 
@@ -84,24 +87,30 @@ def _worker(mode: str, target: str, timeout: float, points: int = 4000) -> dict 
 
 
 def run(quick: bool, out_dir) -> list[dict]:
-    limit = 5 if quick else 600  # --quick: the old way's time-outs cut at 5 s (a lower bound on the ratio)
+    limit = 5 if quick else 600  # --quick: the old way cut at 5 s (a lower bound on the ratio), run for OLD_QUICK only
     records, bars = [], []
     for target in CASES:
         # the cut is for the old way: ours gets time on a loaded machine
         ours = _worker("ours", target, OURS_LIMIT, 1000 if quick else 4000)  # --quick: 1000 random points checked
-        old = _worker("old", target, limit)
+        old_run = not quick or target in OLD_QUICK
+        old = _worker("old", target, limit) if old_run else None
         ours_s = ours["seconds"] if ours else float(OURS_LIMIT)
-        old_s = old["seconds"] if old else float(limit)
+        old_s = (old["seconds"] if old else float(limit)) if old_run else None
         notes = f"cold, fresh process, scene build and derivation included; time limit of the old way {limit} s"
+        if not old_run:
+            notes += (
+                f"; the old way not run in --quick: it does not finish in {limit} s (2026-11-28); the full bench runs "
+                "it with a 600 s limit"
+            )
         if ours:
             notes += f"; regions: {', '.join(ours['regions'])}"
         else:
             notes += f"; ours timed out at {OURS_LIMIT} s: ours_s is that bound"
-        if old is None:
+        if old_run and old is None:
             notes += "; the old way timed out: baseline_s is the limit and the ratio a lower bound"
         error = ours.get("errors") if ours else None
         records.append(record(f"counts/{target}", ours_s, old_s, error, ours.get("points", 1) if ours else 1, notes))
-        bars.append((target, ours_s, old_s, old is None))
+        bars.append((target, ours_s, old_s if old_run else float("nan"), old_run and old is None))
     _plot(out_dir, bars)
     return records
 
