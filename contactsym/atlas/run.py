@@ -56,6 +56,8 @@ def _chunk(kernel: Kernel, grid: Grid, chunk: int, index: int) -> tuple:
 def _explained(kernel: Kernel, values: np.ndarray, reasons: Reasons) -> Reasons:
     """``reasons`` with a text for every NaN that has none: which outputs are NaN, and why if the kernel says."""
     with np.errstate(all="ignore"):  # a row sum is NaN where a value is (or where inf - inf: sorted out below)
+        if not np.isnan(np.add.reduce(values, axis=None)):  # no NaN at all (the usual case): one pass, no lookup
+            return reasons
         candidates = np.nonzero(np.isnan(values @ np.ones(values.shape[1])) & (reasons.codes == 0))[0]
     nan = np.isnan(values[candidates])
     missing = np.zeros(len(values), dtype=bool)

@@ -203,9 +203,10 @@ class PointClassifier:
         """Refuse values that are not finite or break a declared sign; the largest |value| of each array."""
         reach = []
         for (symbol, positive, negative), a in zip(self._declared, arrays):
-            a = a[:1] if a.strides == (0,) else a  # one value for every point
-            # NaN propagates; +-inf shows in the extremes
-            low, high = (float(np.minimum.reduce(a)), float(np.maximum.reduce(a))) if a.size else (0.0, 0.0)
+            if a.strides == (0,) or not a.size:  # one value for every point (or none): no reductions
+                low = high = float(a[0]) if a.size else 0.0
+            else:  # NaN propagates; +-inf shows in the extremes
+                low, high = float(np.minimum.reduce(a)), float(np.maximum.reduce(a))
             if not (math.isfinite(low) and math.isfinite(high)):
                 raise NumericsError(f"the values of {symbol} are not all finite.")
             if a.size and ((positive and not low > 0) or (negative and not high < 0)):
@@ -269,7 +270,7 @@ class PointClassifier:
     def __call__(
         self,
         *arrays,
-        chunk: int = 1 << 15,
+        chunk: int = 1 << 16,
         progress: Progress | None = None,
         max_seconds: float | None = None,
         function_values: Sequence | None = None,
