@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import threading
 import weakref
 from dataclasses import dataclass
@@ -104,7 +105,7 @@ class Kernel:
         local = self.__dict__.get("_scratch")
         if local is None:
             local = self.__dict__["_scratch"] = threading.local()
-        size = int(np.prod(shape))
+        size = math.prod(shape)
         found = getattr(local, name, None)
         if found is None or found.size < size:
             found = np.empty(size)

@@ -294,7 +294,7 @@ class PointClassifier:
             else np.broadcast_to(a.reshape(()) if a.size == 1 else a, shape).reshape(-1)
             for a in arrays
         ]
-        size = int(np.prod(shape))
+        size = math.prod(shape)
         factor_signs = np.empty((len(self.kept), size), dtype=np.int8)
         stable = np.empty(size, dtype=np.int8)
         in_band = np.empty(size, dtype=bool)

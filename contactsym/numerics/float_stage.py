@@ -3,6 +3,8 @@ code and the certified sign test (the float32 pass: :mod:`.single`)."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import sympy as sp
 
@@ -96,7 +98,7 @@ def _given(function_values, functions: tuple, arrays) -> list:
         return [None] * len(functions)
     if len(function_values) != len(functions):
         raise NumericsError(f"give {len(functions)} function_values (or None), one per {functions}.")
-    size = int(np.prod(np.broadcast(*arrays).shape)) if arrays else 0
+    size = math.prod(np.broadcast(*arrays).shape) if arrays else 0
     given = [None if v is None else validate.real_array(v, "function_values").reshape(-1) for v in function_values]
     if any(g is not None and len(g) != size for g in given):
         raise NumericsError(f"each of function_values needs one value per point ({size}).")
