@@ -199,12 +199,15 @@ class PointClassifier:
             )
         return [validate.real_array(array, what) for what, array in zip(self._names, arrays)]
 
-    def _check_values(self, arrays) -> list[float]:
-        """Refuse values that are not finite or break a declared sign; the largest |value| of each array."""
+    def _check_values(self, arrays, extremes=None) -> list[float]:
+        """Refuse values that are not finite or break a declared sign; the largest |value| of each array.
+        ``extremes``: if known, (least, largest) of each array of more than one value, in order."""
         reach = []
         for (symbol, positive, negative), a in zip(self._declared, arrays):
             if a.strides == (0,) or not a.size:  # one value for every point (or none): no reductions
                 low = high = float(a[0]) if a.size else 0.0
+            elif extremes is not None:
+                low, high = next(extremes)
             else:  # NaN propagates; +-inf shows in the extremes
                 low, high = float(np.minimum.reduce(a)), float(np.maximum.reduce(a))
             if not (math.isfinite(low) and math.isfinite(high)):
@@ -339,7 +342,10 @@ class PointClassifier:
             try:
                 with np.errstate(all="raise"):  # a value outside float32's normal range: float64 for this chunk
                     rounded = to_single(inputs, singles)
-                    reach = self._check_values(rounded[: len(pieces)])  # the float32 values keep signs and finiteness
+                    # float32 keeps signs and finiteness; the arrays of the points are the first rows: two reductions
+                    block = singles[: sum(a.strides != (0,) for a in rounded[: len(pieces)]), : len(pieces[0])]
+                    extremes = zip(np.minimum.reduce(block, axis=1).tolist(), np.maximum.reduce(block, axis=1).tolist())
+                    reach = self._check_values(rounded[: len(pieces)], extremes)
                     checked = True
                     functions, widths = self._single_functions(rounded, known, reach, singles[len(inputs) :])
                     if functions is not None:
@@ -356,14 +362,10 @@ class PointClassifier:
         """(the functions' float32 values, the widths that count them), or (None, None): float64 for this chunk."""
         computed, given = self._single_widths
         if any(k is not None for k in known):  # given values (rounded as inputs are): each counts for one rounding
-            if not all(k is not None for k in known):
-                return None, None
-            return rounded[len(self.parameters) :], given
+            return (rounded[len(self.parameters) :], given) if all(k is not None for k in known) else (None, None)
         if not self.functions:
             return [], given
-        if computed is None:
-            return None, None
-        return single_functions(self.functions, rounded, reach, rows), computed
+        return (None, None) if computed is None else (single_functions(self.functions, rounded, reach, rows), computed)
 
     def _single_workspace(self, size: int) -> tuple[np.ndarray, np.ndarray]:
         """Float32 rows: the generated code's buffers, two for the sign test; the rounded inputs and functions."""

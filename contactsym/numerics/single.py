@@ -62,8 +62,8 @@ def single_widths(
 
 
 def to_single(arrays: Sequence[np.ndarray], rows: np.ndarray) -> list[np.ndarray]:
-    """Each float64 array rounded to float32 into a row of ``rows`` (float32, at least as long); an array of
-    one value for every point (stride 0) is rounded once and stays one value.
+    """Each float64 array rounded to float32 into a row of ``rows`` (float32, at least as long), the first rows
+    in order; an array of one value for every point (stride 0) is rounded once and stays one value.
 
     Run under ``np.errstate(all="raise")``: a value that overflows or underflows float32 raises
     ``FloatingPointError`` (its rounding error would not be relative). NaN and infinities pass through,
@@ -77,16 +77,17 @@ def to_single(arrays: Sequence[np.ndarray], rows: np.ndarray) -> list[np.ndarray
     >>> a.dtype.name, a.tolist() == [np.float32(0.1), 2.0, -3.5], b.strides, b.tolist()
     ('float32', True, (0,), [0.5, 0.5, 0.5])
     """
-    out = []
-    for array, row in zip(arrays, rows):
+    out, used = [], 0
+    for array in arrays:
         n = len(array)
         if array.strides == (0,) and n > 1:
             one = np.empty(1, dtype=np.float32)
             np.copyto(one, array[:1], casting="same_kind")
             out.append(np.ndarray((n,), dtype=np.float32, buffer=one, strides=(0,)))
-        else:
-            np.copyto(row[:n], array, casting="same_kind")
-            out.append(row[:n])
+        else:  # the arrays of the points fill the first rows, in order: one reduction can check them all
+            np.copyto(rows[used, :n], array, casting="same_kind")
+            out.append(rows[used, :n])
+            used += 1
     return out
 
 

@@ -101,6 +101,27 @@ def test_bad_values_get_a_clear_error(values, message):
         classifier(*values)
 
 
+@pytest.mark.parametrize(
+    "where, value, message",
+    [
+        (900, np.inf, "not all finite"),
+        (901, np.nan, "not all finite"),
+        (902, -np.inf, "not all finite"),
+        (903, 0.0, "declared positive"),
+    ],
+)
+def test_bad_values_anywhere_in_any_chunk_get_a_clear_error(where, value, message):
+    """The float32 pass checks all of a chunk's arrays in two reductions; one value for all points is checked too."""
+    classifier = nm.PointClassifier([a * b - c**2 + p], [a, b, c, p])
+    values = [np.ones(1000), np.ones(1000), np.full(1000, 0.5), np.broadcast_to(-0.5, (1000,))]
+    values[1] = values[1].copy()
+    values[1][where] = value
+    with pytest.raises(nm.NumericsError, match=message):
+        classifier(*values, chunk=256)
+    with pytest.raises(nm.NumericsError, match="declared negative"):
+        classifier(np.ones(1000), np.ones(1000), np.ones(1000), np.broadcast_to(0.5, (1000,)), chunk=256)
+
+
 def test_a_function_of_a_rounded_argument_is_refused_with_a_fix():
     with pytest.raises(nm.NumericsError, match="introduce a parameter"):
         nm.PointClassifier([sp.sin(a / 3) - b], [a, b])
