@@ -210,10 +210,16 @@ def _floor_rows(classifier, values, ours_s, name: str = "classification") -> lis
             n,
             f"{len(values)} float64 inputs, {n} points; baseline = the memory floor (read every input once, "
             f"write one byte per point: {floor_s / n * 1e9:.2f} ns/point); ours = {ours / floor_s:.1f}x the floor "
-            f"(target <= 3x), {ours / n * 1e9:.1f} ns/point: input checks (2 reductions per input), functions "
-            f"{functions}, {ops} ufunc passes of the generated code, the sign test and the verdicts "
-            f"({'in float32, the undecided points again in float64' if classifier._single else 'in float64'}), "
-            "each pass over a cache-sized chunk; best of 3-5",
+            f"(target <= 3x), {ours / n * 1e9:.1f} ns/point: "
+            + (
+                "inputs rounded to float32 (one pass each, the floor's read), checked by 2 reductions over them all, "
+                f"functions {functions}, {ops} ufunc passes of the generated code, the sign test and the verdicts in "
+                "float32, the undecided points again in float64"
+                if classifier._single
+                else f"input checks (2 reductions per input), functions {functions}, {ops} ufunc passes of the "
+                "generated code, the sign test and the verdicts in float64"
+            )
+            + "; each pass over a cache-sized chunk; best of 3-5",
         ),
         record(
             "classification/no-input-copy",
