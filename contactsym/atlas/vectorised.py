@@ -53,10 +53,56 @@ def _robust_function(robust: tuple, symbols: tuple):
     robust = [b.xreplace(dict(zip(found, names))) for b in robust]
     of_axes = tuple((symbols.index(f.args[0]), getattr(np, NUMPY_FUNCTIONS[type(f)])) for f in found)
     try:
+        return _Truths(symbols + names, robust), of_axes
+    except numerics.NumericsError:
+        pass
+    try:
         return BufferedCode(symbols + names, robust), of_axes
     except numerics.NumericsError:
         function = numerics.lambdify_cse(symbols + names, list(robust))
         return (lambda columns, buffers: function(*columns)), of_axes
+
+
+_COMPARISONS = {sp.StrictGreaterThan: np.greater, sp.GreaterThan: np.greater_equal}
+_COMPARISONS |= {sp.StrictLessThan: np.less, sp.LessThan: np.less_equal}
+_CONNECTIVES = {sp.And: np.logical_and, sp.Or: np.logical_or}
+
+
+def _is_truth(b) -> bool:
+    """Whether ``b`` is true, false, or And, Or and Not of <, <=, >, >=."""
+    if b in (sp.true, sp.false) or type(b) in _COMPARISONS:
+        return True
+    return (isinstance(b, sp.Not) or type(b) in _CONNECTIVES) and all(_is_truth(a) for a in b.args)
+
+
+class _Truths:
+    """Truth values of And, Or and Not of <, <=, >, >= as bool arrays (or one bool): the sides of the relations
+    by buffered code, each comparison and connective into a byte per point (not a float64 1.0 or 0.0)."""
+
+    def __init__(self, arguments: tuple, booleans: list):
+        if not all(_is_truth(b) for b in booleans):
+            raise numerics.NumericsError("no truth code for these conditions")
+        self.relations = sorted({r for b in booleans for r in b.atoms(sp.Rel)}, key=sp.default_sort_key)
+        self.code = BufferedCode(arguments, [side for r in self.relations for side in (r.lhs, r.rhs)])
+        self.booleans, self.buffers = booleans, self.code.buffers
+
+    def __call__(self, columns: list, buffers: np.ndarray) -> list:
+        sides = self.code(columns, buffers)
+        truth = {r: _COMPARISONS[type(r)](sides[2 * k], sides[2 * k + 1]) for k, r in enumerate(self.relations)}
+        return [self._value(b, truth) for b in self.booleans]
+
+    def _value(self, b, truth: dict):
+        if b in (sp.true, sp.false):
+            return np.bool_(b is sp.true)
+        if isinstance(b, sp.Not):
+            return np.logical_not(self._value(b.args[0], truth))
+        if type(b) in _CONNECTIVES:
+            values = [self._value(a, truth) for a in b.args]
+            out = _CONNECTIVES[type(b)](values[0], values[1])
+            for value in values[2:]:
+                out = _CONNECTIVES[type(b)](out, value, out=out) if out.ndim else _CONNECTIVES[type(b)](out, value)
+            return out
+        return truth[b]
 
 
 def _strict(condition) -> list:
@@ -148,7 +194,8 @@ class _Classification(Kernel):
         n = len(columns[0]) if columns else 0
         buffers = self.scratch("robust", (getattr(self.function, "buffers", 0), n))
         # truth values as arrays of the points or, where constant, as one value (copyto broadcasts it)
-        stable, unstable, dependent = (np.asarray(m) != 0 for m in self.function(columns + functions, buffers))
+        masks = (np.asarray(m) for m in self.function(columns + functions, buffers))
+        stable, unstable, dependent = (m if m.dtype == bool else m != 0 for m in masks)
         out = np.empty((2, n)).T  # column-major: each output's column is contiguous
         region = out[:, 0]
         region.fill(np.nan)
