@@ -301,7 +301,7 @@ class PointClassifier:
         factor_signs = np.empty((len(self.kept), size), dtype=np.int8)
         stable = np.empty(size, dtype=np.int8)
         in_band = np.empty(size, dtype=bool)
-        left: list[np.ndarray] = []  # points the float32 pre-pass leaves to float64, all chunks in one go
+        left: list[np.ndarray] = []  # points the float32 pass leaves to float64, all chunks in one go
         for start in range(0, size, chunk):  # one pass per chunk: checks, generated code, signs, all in the cache
             stop = min(start + chunk, size)
             part = factor_signs[:, start:stop]
