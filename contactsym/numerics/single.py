@@ -42,8 +42,8 @@ def single_widths(
     ``code``: per factor, its generated expressions (P, M[, U, |U|]) with each function of a parameter
     replaced by its symbol in ``functions``; those count as :data:`SINE_ROUNDINGS` roundings if
     ``computed`` (:func:`single_functions`) and as one (a float64 value rounded to float32) if given.
-    The margin is the float64 pre-pass's: 2 gamma32 + 2 width + 2 gamma64, gamma32 over the roundings
-    of the longest path plus the sign test's three. Raises ``NumericsError`` for code without a float32
+    The width is 2 gamma32 + 2 width + 2 gamma64, gamma32 over the roundings of the longest path plus the
+    sign test's three: certain with it, |F| > (2 width + gamma64) (P + M + |U|), so float64 is certain too. Raises ``NumericsError`` for code without a float32
     bound (a function computed inside the code, a fractional power).
 
     Examples
