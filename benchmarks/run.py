@@ -28,9 +28,9 @@ RESULTS = Path(__file__).resolve().parent / "results"
 
 #: The modules by their CPU seconds under ``--quick`` (the last measured run), longest first: with
 #: several jobs the longest starts first, so the others fill the remaining cores around it. Measured
-#: 2026-11-28 (2 at a time, load 3-8): atlas ~75, work_precision ~50, scaling ~43, squeal ~41 (before its
-#: baseline's cut), spatial ~34, derivation ~33, hopf_direction ~32, classification ~21, counts ~17,
-#: robustness ~15, closed_forms_k3 ~14, imports ~13, regions_k3 ~9, region_evaluate ~7; flint not measured
+#: 2026-11-28 (2 at a time, load 5-7; CPU seconds vary by ~20% at that load): atlas ~75, work_precision ~52,
+#: scaling ~45, hopf_direction ~35-40, derivation ~35, spatial ~36, squeal ~35, classification ~22, counts ~20,
+#: robustness ~16, closed_forms_k3 ~15, imports ~13, regions_k3 ~10, region_evaluate ~7; flint not measured
 #: (python-flint not installed there: no rows), kept after spatial where it stood.
 LONGEST_FIRST = (
     "atlas",
@@ -166,7 +166,9 @@ def _in_fresh_interpreters(names: list[str], quick: bool, out: Path, jobs: int):
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="contactsym bench", description="Run the contactsym benchmarks.")
     parser.add_argument(
-        "--quick", action="store_true", help="smaller sweeps: under 3 minutes on 2 quiet cores (~200 CPU s)"
+        "--quick",
+        action="store_true",
+        help="smaller sweeps (aim: under 3 minutes on 2 quiet cores; ~430 CPU s at load 6)",
     )
     parser.add_argument("--json", metavar="FILE", help="write the records as a JSON list to FILE")
     parser.add_argument("--only", nargs="*", choices=BENCHMARKS, help="run only these benchmarks")
