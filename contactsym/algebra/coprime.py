@@ -37,7 +37,7 @@ from math import gcd, lcm
 from sympy import ZZ
 from sympy.polys.euclidtools import dup_gcd
 
-__all__ = ["cancel", "cofactors", "proved_coprime"]
+__all__ = ["cancel", "cofactors", "divided_by_term", "proved_coprime"]
 
 #: The values given to the variables, one per variable (cycled): small primes keep the images small.
 POINTS = (3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73)
@@ -122,11 +122,23 @@ def _without_common_monomial(f, g):
     ring = f.ring
     if not any(least):
         return ring.one, f, g
+    monomial = ring({tuple(least): ring.domain.one})
+    return monomial, divided_by_term(f, monomial), divided_by_term(g, monomial)
 
-    def divided(poly):
-        return ring.from_dict({tuple(a - b for a, b in zip(m, least)): c for m, c in poly.items()})
 
-    return ring({tuple(least): ring.domain.one}), divided(f), divided(g)
+def divided_by_term(poly, term):
+    """``poly.exquo(term)`` for a one-term ``term`` that divides ``poly``: exponents subtracted, one
+    pass (SymPy's division looks for the leading term of every remainder: quadratic in the terms).
+
+    >>> from sympy.polys.rings import ring
+    >>> from sympy import ZZ
+    >>> R, x, y = ring("x, y", ZZ)
+    >>> divided_by_term(6*x**3*y + 4*x*y**2, 2*x*y)
+    3*x**2 + 2*y
+    """
+    ((monom, coefficient),) = term.items()
+    exquo = poly.ring.domain.exquo
+    return poly.ring.from_dict({tuple(a - b for a, b in zip(m, monom)): exquo(c, coefficient) for m, c in poly.items()})
 
 
 def _integer_terms(poly, point) -> list[tuple[tuple, int, int]]:

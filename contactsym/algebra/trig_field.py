@@ -38,7 +38,7 @@ from sympy.polys.fields import FracField
 
 from ..arguments import checked, require
 from ..parse import sympy_only
-from .coprime import cancel
+from .coprime import cancel, divided_by_term
 from .fourier import fourier_sum, shorter_fourier_terms
 from .reductions import SignSymbol, known_sign
 
@@ -132,7 +132,7 @@ class TrigFraction:
         """The presented expression (see the module docstring)."""
         monomial, rest = _split_monomial(self.denom)
         if rest == 1:
-            return _roots_back(sp.expand(self.numer.as_expr() / monomial.as_expr()))
+            return _roots_back(_over_monomial(self.numer, monomial))
         numer, scale_n = present_factor(self.numer, self.pairs)
         denom, scale_d = present_factor(rest, self.pairs)
         return (scale_n / scale_d) * numer / (_roots_back(monomial.as_expr()) * denom)
@@ -247,13 +247,27 @@ def _sum_terms(terms) -> dict:
     return total
 
 
+def _over_monomial(poly, monomial) -> sp.Expr:
+    """``expand(poly.as_expr() / monomial.as_expr())`` for a one-term ``monomial``, term by term:
+    expand would walk a sum of thousands of terms again (10 s of a five-link chain's (4.6))."""
+    ((divisor, scale),) = monomial.items()
+    to_sympy, gens = poly.ring.domain.to_sympy, poly.ring.symbols
+    scale = to_sympy(scale)
+    return sp.Add(
+        *(
+            sp.Mul(to_sympy(c) / scale, *(g ** (a - b) for g, a, b in zip(gens, m, divisor) if a != b))
+            for m, c in poly.items()
+        )
+    )
+
+
 def _split_monomial(poly):
     """poly = content * monomial * rest, with rest = 1 for a monomial."""
     ring = poly.ring
     content, primitive = poly.primitive()
     exponents = [min(e) for e in zip(*primitive.monoms())] if primitive else [0] * ring.ngens
     monomial = ring({tuple(exponents): ring.domain.one})
-    rest = primitive.exquo(monomial)
+    rest = divided_by_term(primitive, monomial)
     return ring({(0,) * ring.ngens: content}) * monomial, rest
 
 

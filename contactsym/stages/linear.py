@@ -19,7 +19,7 @@ import sympy as sp
 
 from ..algebra.basic import EXPAND_NODES, PaperSymbol, node_count, normalize, sign_symbols
 from ..algebra.canonical_form import TrigFraction, to_fraction
-from ..algebra.coprime import proved_coprime
+from ..algebra.coprime import cofactors, divided_by_term
 from ..arguments import checked, require
 from ..deprecation import deprecated_property
 from ..errors import ContactsymError
@@ -166,11 +166,20 @@ def _cancelled_in(numerator, denominator, x) -> tuple:
     for c in coefficients:
         if common.is_ground:
             break
-        if c:  # most of these gcds are 1, and proving that (algebra.coprime) is cheaper than computing them
-            common = common.ring.one if proved_coprime(common, c) else common.gcd(c)
+        if not c or _number_multiple(c, common):  # lambda^(2k)'s coefficient: det M times a number
+            continue
+        # most of these gcds are 1 or a monomial (a rod's l^2 in det M): proved or read, not computed
+        common = cofactors(common, c)[0]
     if common.is_ground:
         return numerator, denominator
+    if len(common) == 1:  # a monomial: exponents subtracted (exquo's division would search each remainder)
+        return divided_by_term(numerator, common), divided_by_term(denominator, common)
     return numerator.exquo(common), denominator.exquo(common)
+
+
+def _number_multiple(f, g) -> bool:
+    """f = c g for a number c (f, g of one ring)."""
+    return len(f) == len(g) and f.mul_ground(g.LC) == g.mul_ground(f.LC)
 
 
 def _same_size(minors, A: sp.Matrix, label: str) -> None:

@@ -76,7 +76,8 @@ class MinorsInRing:
 
     def minor(self, S: tuple):
         """det(A_S) as a reduced field element."""
-        return self.field.reduce(self.field.field.new(self.numerator(S), self.denominator ** self.power(S)))
+        # raw: reduce cancels, proving the gcd 1 first where it can (field.new would compute it)
+        return self.field.reduce(self.field.field.raw_new(self.numerator(S), self.denominator ** self.power(S)))
 
     def numerator(self, S: tuple):
         """det(A_S) = numerator(S) / denominator^power(S)."""
@@ -263,7 +264,7 @@ def product_of(M: sp.Matrix, W: sp.Matrix, V: sp.Matrix) -> sp.Matrix | None:
 
     def entry(i, j):
         numerator = field.reduce_poly(sum((left[i][r] * adj_v[j][r] for r in range(n)), field.ring.zero))
-        return normalize(field.present(field.field.new(numerator, det)))
+        return normalize(field.present(field.field.raw_new(numerator, det)))  # present cancels (coprime first)
 
     return sp.Matrix(W.cols, V.cols, entry)
 

@@ -7,7 +7,7 @@ from hypothesis import strategies as st
 from sympy import QQ, ZZ
 from sympy.polys.rings import ring
 
-from contactsym.algebra.coprime import cancel, cofactors, proved_coprime
+from contactsym.algebra.coprime import cancel, cofactors, divided_by_term, proved_coprime
 from tests.helpers import small_fractions
 
 RINGS = {domain: ring("x, y, z", domain)[0] for domain in (ZZ, QQ)}
@@ -55,3 +55,13 @@ def test_the_certificate_decides_a_coprime_pair_and_refuses_a_shared_factor():
     assert proved_coprime(x**3 * y + z + 1, x * y * z - 2)
     assert not proved_coprime((x - y) * (z + 1), (x - y) * (z + 2))
     assert not proved_coprime(x * (y + 1), x * (z + 1))  # a monomial factor counts too
+
+
+@settings(max_examples=60)
+@given(st.sampled_from([ZZ, QQ]).flatmap(lambda d: st.tuples(polynomials(d), polynomials(d))))
+def test_division_by_a_term_is_sympys_exact_division(pair):
+    f, g = pair
+    if not g:
+        return
+    term = g.ring({max(g.monoms()): g.LC})  # g's leading term
+    assert divided_by_term(f * term, term) == (f * term).exquo(term)
