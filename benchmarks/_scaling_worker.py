@@ -174,6 +174,8 @@ def main(argv: list[str]) -> int:
     hurwitz_s, hurwitz_cpu = time.perf_counter() - started, time.process_time() - cpu
     claims = (st.robustly_stable, st.robustly_unstable)
     seconds, cpu_s = time.perf_counter() - started, time.process_time() - cpu
+    # the times first (stderr): the operation counts below need A's entries, minutes on a six-link chain
+    print(json.dumps({"seconds": seconds, "cpu_s": cpu_s, "hurwitz_cpu_s": hurwitz_cpu}), file=sys.stderr, flush=True)
     info = {
         "seconds": seconds,
         "hurwitz_s": hurwitz_s,
