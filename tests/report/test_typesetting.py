@@ -78,3 +78,16 @@ def test_a_fraction_whose_cancelled_numerator_has_hundreds_of_terms_is_shown_as_
     assert _tidy(long) is long
     shorter = x[0] / (x[0] + 1) - x[1] / (x[1] - 2)
     assert _tidy(shorter) != shorter and sp.cancel(_tidy(shorter) - shorter) == 0  # a short one is still joined
+
+
+def test_a_long_fraction_with_a_common_factor_is_still_cancelled():
+    """The cheap rule (a long numerator proved coprime to the denominator is shown as derived) does
+    not fire where numerator and denominator share a factor: cancel shortens that one."""
+    from contactsym.report.typesetting import TIDY_TERMS, _tidy
+
+    x = sp.symbols("x_0:10")
+    total = sp.Add(*x[1:])
+    numerator = total**3 * (x[0] + 2)  # the same factor written two ways: SymPy does not cancel it
+    denominator = sp.expand(total**2) * total * (x[1] - 2)
+    assert len(sp.Add.make_args(sp.expand(numerator))) > TIDY_TERMS
+    assert _tidy(numerator / denominator) == (x[0] + 2) / (x[1] - 2)
