@@ -28,19 +28,19 @@ RESULTS = Path(__file__).resolve().parent / "results"
 
 #: The modules by their CPU seconds under ``--quick`` (the last measured run), longest first: with
 #: several jobs the longest starts first, so the others fill the remaining cores around it. Measured
-#: 2026-11-28 (2 at a time, load 5-7; CPU seconds vary by ~20% at that load): atlas ~75, work_precision ~52,
-#: scaling ~45, hopf_direction ~35-40, derivation ~35, spatial ~36, squeal ~35, classification ~22, counts ~20,
-#: robustness ~16, closed_forms_k3 ~15, imports ~13, regions_k3 ~10, region_evaluate ~7; flint not measured
-#: (python-flint not installed there: no rows), kept after spatial where it stood.
+#: 2026-11-28 15:14-15:21 UTC (2 at a time, load 4-7; CPU seconds vary by ~20% at that load): work_precision ~43,
+#: atlas ~32, scaling ~26, hopf_direction ~25, squeal ~25, spatial ~24, derivation ~23, classification ~20,
+#: counts ~16, robustness ~13, closed_forms_k3 ~13, imports ~10, regions_k3 ~7, region_evaluate ~7 (289 CPU s in
+#: all); flint not measured (python-flint not installed there: no rows), kept after spatial where it stood.
 LONGEST_FIRST = (
-    "atlas",
     "work_precision",
+    "atlas",
     "scaling",
+    "hopf_direction",
     "squeal",
     "spatial",
     "flint",
     "derivation",
-    "hopf_direction",
     "classification",
     "counts",
     "robustness",
@@ -168,7 +168,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--quick",
         action="store_true",
-        help="smaller sweeps (aim: under 3 minutes on 2 quiet cores; ~430 CPU s at load 6)",
+        help="smaller sweeps (aim: under 3 minutes on 2 quiet cores; ~290 CPU s at load 4-7)",
     )
     parser.add_argument("--json", metavar="FILE", help="write the records as a JSON list to FILE")
     parser.add_argument("--only", nargs="*", choices=BENCHMARKS, help="run only these benchmarks")
