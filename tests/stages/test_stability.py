@@ -140,10 +140,17 @@ nonzero_entries = st.builds(
 magnitudes = st.builds(lambda m, e: sp.Rational(m) * sp.Rational(10) ** e, st.integers(1, 9), st.integers(-2, 2))
 
 
+# strategies are built once per argument (cache): tests that draw them from st.data() would otherwise
+# build and validate a fresh strategy tree at every example (a fifth of test_hurwitz_iff_...'s time);
+# the draws are the same
+
+
+@cache
 def general_matrices(k, entry=entries):
     return st.lists(entry, min_size=k * k, max_size=k * k).map(lambda xs: sp.Matrix(k, k, xs))
 
 
+@cache
 def spd_matrices(k):
     """B^T B + D with D > 0 diagonal: symmetric positive definite (Proposition 7)."""
     small = st.integers(-2, 2)
@@ -154,10 +161,12 @@ def spd_matrices(k):
     )
 
 
+@cache
 def matrices(k):
     return st.one_of(general_matrices(k), spd_matrices(k))
 
 
+@cache
 def laws(k):
     vector = st.lists(magnitudes, min_size=k, max_size=k)
     return st.tuples(vector.map(lambda xs: [-x for x in xs]), vector.map(lambda xs: [-x for x in xs]))
