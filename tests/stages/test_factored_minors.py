@@ -52,15 +52,15 @@ def test_factored_minors_are_the_determinants_of_w_m_inverse_v(seed, n, k):
     minors = principal_minors(product(M, W, V), (M, W, V))
     rng = random.Random(seed)
     factors = sp.lambdify([q1, q2, m, a, s], [M, W, V], "numpy")
+    subsets = [S for size in range(1, k + 1) for S in itertools.combinations(range(k), size)]
+    values_of_minors = sp.lambdify([q1, q2, m, a, s], [minors[S] for S in subsets], "numpy")  # once, not per point
     for _ in range(3):
         point = random_point(rng)
         Mn, Wn, Vn = (np.array(x, dtype=float) for x in factors(*point.values()))
         An = Wn.T @ np.linalg.solve(Mn, Vn)
-        for size in range(1, k + 1):
-            for S in itertools.combinations(range(k), size):
-                expected = np.linalg.det(An[np.ix_(S, S)])
-                value = float(sp.lambdify([q1, q2, m, a, s], minors[S])(*point.values()))
-                assert value == pytest.approx(expected, rel=1e-9, abs=1e-9)
+        for S, value in zip(subsets, values_of_minors(*point.values()), strict=True):
+            expected = np.linalg.det(An[np.ix_(S, S)])
+            assert float(value) == pytest.approx(expected, rel=1e-9, abs=1e-9)
 
 
 def test_factored_and_plain_minors_agree_exactly():
