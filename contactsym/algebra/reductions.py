@@ -24,6 +24,7 @@ from ..errors import SignPatternError
 from ..parse import sympy_only
 from .fourier import _fourier_terms
 from .sign_bounds import as_fraction, group_ranges, plain_term_range, ranges_sign
+from .sign_samples import sampled_signs
 
 __all__ = ["PaperSymbol", "SignSymbol", "sign_symbols", "reduce_signs", "reduce_trig", "known_sign", "quotient_sign"]
 
@@ -215,6 +216,9 @@ def _known_sign(expr: sp.Expr, positive: tuple, depth: int = 0) -> int | None:
     sign = _assumed_sign(expr, positive)
     if sign is not None or expr.is_number or depth > 2 or _too_large(expr):
         return sign
+    seen = _sampled(expr, positive) if depth == 0 else set()
+    if 0 in seen or {-1, 1} <= seen:  # a point of the domain where no strict sign holds: nothing to prove
+        return None
     numer, denom = sp.fraction(sp.factor_terms(expr))
     factors = [f for f in sp.Mul.make_args(numer) + sp.Mul.make_args(denom) if f != 1]
     if len(factors) > 1 or factors[0].is_Pow:
@@ -224,6 +228,13 @@ def _known_sign(expr: sp.Expr, positive: tuple, depth: int = 0) -> int | None:
         if sign is not None:
             return sign
     return _dominated_sign(expr, positive, depth)
+
+
+def _sampled(expr: sp.Expr, positive: tuple) -> set[int]:
+    """:func:`~contactsym.algebra.sign_samples.sampled_signs` of the expressions with their angles expanded."""
+    exprs = [_expand_angles(e) for e in (expr, *positive)]
+    units = {s for e in exprs for s in e.free_symbols if isinstance(s, SignSymbol)}
+    return sampled_signs(exprs[0], exprs[1:], units)
 
 
 def _assumed_sign(expr: sp.Expr, positive: tuple) -> int | None:
