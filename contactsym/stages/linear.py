@@ -24,7 +24,7 @@ from ..arguments import checked, require
 from ..deprecation import deprecated_property
 from ..errors import ContactsymError
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering
-from .minors import MinorsInRing, minors_of, polynomial_factors, product_of
+from .minors import FactoredMinors, MinorsInRing, minors_of, polynomial_factors, product_of
 
 __all__ = ["lam", "charpoly", "principal_minors", "Linearization", "linearization_of"]
 
@@ -259,6 +259,8 @@ class Linearization(LatexReprMixin):
     @cached_property
     def A(self) -> sp.Matrix:
         if self.factors is not None:
+            if self.fast.k == 1 and isinstance(self.minors, FactoredMinors):  # A = (det A): no adjugate of M
+                return sp.Matrix([[normalize(self.det_A)]])
             product = product_of(*self.factors)
             if product is not None:
                 return product

@@ -406,3 +406,22 @@ def test_a_linearization_pickles_without_its_minors_and_derives_them_again():
     again = cloudpickle.loads(cloudpickle.dumps(lin))
     assert "minors" not in again.__dict__
     assert again.det_A == det_A and again.charpoly == p and again.minors.size == 2
+
+
+@pytest.mark.parametrize("name", ["sliding-point", "painleve-rod", "double-pendulum-tip", "chain-3"])
+def test_one_contact_a_is_its_minor_and_the_adjugate_path_gives_the_same(name):
+    """k = 1: A = (det A), read off the bordered determinant over det M without adj(M); the same
+    canonical entry as W^T adj(M) V / det M (minors.product_of), and the same value at a random point."""
+    from contactsym.scenes.link_chain import build_chain
+    from contactsym.stages.minors import product_of
+
+    scene = build_chain(3) if name == "chain-3" else cs.scene(name)
+    lin = scene.linearization()
+    assert lin.fast.k == 1 and lin.factors is not None
+    assert lin.A == product_of(*lin.factors)
+    M, W, V = lin.factors
+    symbols = sorted(set().union(*(X.free_symbols for X in (M, W, V))), key=str)
+    point = {x: -1 if isinstance(x, SignSymbol) else sp.Rational(3 + i, 5 + 2 * i) for i, x in enumerate(symbols)}
+    numeric = [np.array(X.xreplace(point).evalf(30).tolist(), dtype=float) for X in (M, W, V)]
+    direct = numeric[1].T @ np.linalg.solve(numeric[0], numeric[2])
+    assert float(lin.A[0, 0].xreplace(point)) == pytest.approx(direct[0, 0], rel=1e-9)
