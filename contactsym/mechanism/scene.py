@@ -16,52 +16,19 @@ import sympy as sp
 
 from ..algebra.basic import expanded_if_small, known_sign, present
 from ..algebra.canonical_form import present_factor
-from ..arguments import checked, require
+from ..arguments import checked
 from ..errors import SceneError
 from ..parse import sympy_only
-from ..printing.latex_output import Formula, LatexReprMixin, Numbering, tex
-from ..stages import equilibria as _equilibria
-from ..stages import fast as _fast
-from ..stages import linear as _linear
-from ..stages import regularize as _regularize
-from ..stages import stability as _stability
+from ..printing.latex_output import Formula, LatexReprMixin, tex
 from ..validate import lagrangian_parts, scene_options, scene_parts, shorten
 from .checks import check_eps, check_equations, check_inertia, check_scene, user_names, with_friction
 from .contact import Contact, contact_manifold, frozen_symbol, plain_symbol
 from .contact_space import contact_space, mass_determinant, t
+from .equation_numbers import NUMBERS, paper_equations
 from .fixed_values import checked_values, substituted
 from .scene_stages import SceneStages
 
 __all__ = ["Contact", "Scene", "paper_equations", "plain_symbol", "t"]
-
-#: The scene's own formulas: the accelerations (1.4), for any number of contacts.
-NUMBERS = Numbering({"accelerations": (("1.4",),) * 3, "contact accelerations": (("1.4",),) * 3})
-
-#: The general theory's numbers of every stage's formulas.
-GENERAL_NUMBERS = (
-    NUMBERS | _regularize.NUMBERS | _fast.NUMBERS | _equilibria.NUMBERS | _linear.NUMBERS | _stability.NUMBERS
-)
-
-
-@checked
-def paper_equations(scene, key: str, detail: str | None = None) -> tuple[tuple, str]:
-    """The paper's equation numbers and a note for a formula of ``scene`` (any object with ``k``).
-
-    The general theory's numbers (by the number of contacts k) come first, then the numbers
-    of the paper's example that the scene reproduces (its ``equations``).
-
-    Examples
-    --------
-    >>> import contactsym as cs
-    >>> paper_equations(cs.scene("painleve-klein-guides"), "A")
-    (('4.3', '5.4'), '')
-    >>> paper_equations(cs.scene("brake"), "stable for every law")
-    (('4.4', '6.3'), 'Proposition 6; with equality allowed: erratum 12')
-    """
-    k, equations = getattr(scene, "k", 2), getattr(scene, "equations", None)
-    usable = isinstance(k, int) and not isinstance(k, bool) and k >= 1 and isinstance(equations, (dict, type(None)))
-    require(usable, "paper_equations", "scene", scene, "a scene (an object with k contacts)")
-    return GENERAL_NUMBERS(key, k, equations, detail)
 
 
 class Scene(SceneStages, LatexReprMixin):

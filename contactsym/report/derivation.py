@@ -18,7 +18,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ..errors import ContactsymError
-from ..mechanism.scene import paper_equations
+from ..mechanism.equation_numbers import paper_equations
 from ..printing.latex_output import Formula, formulas, tex
 from ..stages.stability import generic_minors, hurwitz_names, robustness_formulas
 from .plain_text import _escape

@@ -26,7 +26,8 @@ from pathlib import Path
 
 from ..counts.one_sided import one_sided_cases
 from ..errors import ContactsymError
-from ..mechanism.scene import Scene, paper_equations
+from ..mechanism.equation_numbers import paper_equations
+from ..mechanism.scene import Scene
 from ..printing.latex_output import Formula, formulas, tex
 from ..scenes import paper_name
 from ..validate import checked_fields, cut, instance_of

@@ -21,7 +21,8 @@ import sympy as sp
 from ..algebra.basic import node_count
 from ..algebra.reductions import known_sign, quotient_sign
 from ..errors import ContactsymError
-from ..mechanism.scene import Scene, paper_equations
+from ..mechanism.equation_numbers import paper_equations
+from ..mechanism.scene import Scene
 from ..printing.shared import sstr_shared
 from ..stages.regions import REGION_NAMES, Region
 from ..stages.stability import UNDECIDED_TEX, hurwitz_names
