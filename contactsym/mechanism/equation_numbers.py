@@ -1,5 +1,7 @@
-"""The paper's equation numbers of a scene's formulas: the general theory's by the number of contacts,
-then those of the paper's example that the scene reproduces.
+"""The paper's equation numbers of a scene's formulas.
+
+The general theory's numbers (by the number of contacts) come first, then those of the paper's
+example that the scene reproduces.
 """
 
 from __future__ import annotations
