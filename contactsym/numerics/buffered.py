@@ -271,14 +271,20 @@ class BufferedCode:
         """An argument that holds one value for every point (a view of stride 0) is read once: the
         operations on such arguments alone run once, on numbers, not once per point."""
         n = len(arrays[0]) if arrays else 0
-        constant = frozenset(i for i, a in enumerate(arrays) if n > 1 and a.strides == (0,))
+        function = self.function(frozenset(i for i, a in enumerate(arrays) if n > 1 and a.strides == (0,)))
+        return function(*arrays, *[row[:n] for row in buffers])
+
+    def function(self, constant: frozenset):
+        """The compiled code for the arguments ``constant`` (their indices) of one value, the others arrays:
+        ``function(*arrays, *buffers)`` with ``buffers`` rows cut to the arrays' length (what ``code(arrays,
+        buffers)`` calls; a caller that evaluates chunk after chunk of one layout looks it up once)."""
         function = self._variants.get(constant)
         if function is None:
             count, lines = _assigned(self._code, self._results, len(self.arguments), constant)
             if count > self.buffers:  # never more buffers than promised: then every argument is an array
                 count, lines = _assigned(self._code, self._results, len(self.arguments), frozenset())
             function = self._variants[constant] = _compiled(lines)
-        return function(*arrays, *[row[:n] for row in buffers])
+        return function
 
     def __getstate__(self) -> dict:
         return {k: v for k, v in self.__dict__.items() if k != "_variants"}  # the code travels, not the functions

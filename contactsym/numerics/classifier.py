@@ -20,7 +20,8 @@ from .certified import _gamma, certified_sign
 from .codegen import lambdify_cse
 from .float_stage import _as_array, _certain_sign, _function_values, _functions_as_arguments, _given, _undecided
 from .one_signed import _one_signed_form, _roundings
-from .single import single_functions, single_widths, to_single
+from .single import single_widths
+from .single_pass import SinglePass
 from .verdicts import PointsResult, Verdicts
 
 
@@ -115,6 +116,10 @@ class PointClassifier:
         self._declared = [(s, bool(s.is_positive), bool(s.is_negative)) for s in self.parameters]  # looked up once
         self._names = [f"the values of {s}" for s in self.parameters]  # printed once: SymPy's printer is slow
         self._zeros = [(part[0] == 0, part[1] == 0) for part in self.parts]  # SymPy comparisons: once, not per chunk
+        self._single_pass = None
+        if self._single:
+            declared, parts = [d[1:] for d in self._declared], [(len(p), z) for p, z in zip(self.parts, self._zeros)]
+            self._single_pass = SinglePass(self._buffered, self.functions, declared, self._single_widths, parts)
         self._mp_function = self._mp_functions()
         self._workspaces = threading.local()
 
@@ -335,47 +340,13 @@ class PointClassifier:
     def _chunk_signs(self, pieces, known, part) -> bool:
         """Checks and signs of the kept factors on a chunk (0: not certain): by the float32 pass where it applies
         (then True: the points it leaves undecided go to :meth:`_in_float64`), else in float64."""
-        checked = False
-        if self._single and len(pieces[0]):
-            floats, singles = self._single_workspace(len(pieces[0]))
-            inputs = [*pieces, *[k for k in known if k is not None]]
-            try:
-                with np.errstate(all="raise"):  # a value outside float32's normal range: float64 for this chunk
-                    rounded = to_single(inputs, singles)
-                    # float32 keeps signs and finiteness; the arrays of the points are the first rows: two reductions
-                    block = singles[: sum(a.strides != (0,) for a in rounded[: len(pieces)]), : len(pieces[0])]
-                    extremes = zip(np.minimum.reduce(block, axis=1).tolist(), np.maximum.reduce(block, axis=1).tolist())
-                    reach = self._check_values(rounded[: len(pieces)], extremes)
-                    checked = True
-                    functions, widths = self._single_functions(rounded, known, reach, singles[len(inputs) :])
-                    if functions is not None:
-                        self._signs(rounded[: len(pieces)], functions, part, widths, floats)
-                        return True
-            except FloatingPointError:
-                pass
-        if not checked:
+        done = self._single_pass.run(pieces, known, part) if self._single and len(pieces[0]) else None
+        if done:
+            return True
+        if done is None:  # not checked (or a value the float32 check refused): the check that says why
             self._check_values(pieces)
         self._float_stage(pieces, known, part, self._widths)
         return False
-
-    def _single_functions(self, rounded, known, reach, rows) -> tuple:
-        """(the functions' float32 values, the widths that count them), or (None, None): float64 for this chunk."""
-        computed, given = self._single_widths
-        if any(k is not None for k in known):  # given values (rounded as inputs are): each counts for one rounding
-            return (rounded[len(self.parameters) :], given) if all(k is not None for k in known) else (None, None)
-        if not self.functions:
-            return [], given
-        return (None, None) if computed is None else (single_functions(self.functions, rounded, reach, rows), computed)
-
-    def _single_workspace(self, size: int) -> tuple[np.ndarray, np.ndarray]:
-        """Float32 rows: the generated code's buffers, two for the sign test; the rounded inputs and functions."""
-        found = getattr(self._workspaces, "single", None)
-        if found is None or found[0].shape[1] < size:
-            code = self._buffered.buffers + len(self.functions) + 2
-            inputs = len(self.parameters) + 2 * len(self.functions)
-            found = (np.empty((code, size), dtype=np.float32), np.empty((inputs, size), dtype=np.float32))
-            self._workspaces.single = found
-        return found
 
     def _in_float64(self, index: np.ndarray, arrays, given, chunk: int, results: tuple) -> None:
         """The points ``index`` that the float32 pass left undecided, in float64 (a chunk at a time), into

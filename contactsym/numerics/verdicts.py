@@ -52,25 +52,27 @@ class Verdicts:
         """Into ``out``: per point the least sign of the conditions (1 stable, -1 unstable, 0 undecided).
 
         ``scratch``: an int8 row at least as long, overwritten."""
-        first = True
+        least = None  # the row of the least so far: a factor's own row, or out
         for sign, positions in self.products:
             if sign > 0 and len(positions) == 1:
                 row = factor_signs[positions[0]]
-            else:  # a product of factors, or a factor of changed sign: into scratch
-                row = scratch[0, : len(out)]
+            else:  # a product of factors, or a factor of changed sign: into out (the first) or scratch
+                row = out if least is None else scratch[0, : len(out)]
                 second = sign if len(positions) == 1 else factor_signs[positions[1]]
                 np.multiply(factor_signs[positions[0]], second, out=row)
                 for position in positions[2:]:
                     np.multiply(row, factor_signs[position], out=row)
                 if sign < 0 and len(positions) > 1:
                     np.negative(row, out=row)
-            if first:
-                np.copyto(out, row)
-                first = False
-            else:
-                np.minimum(out, row, out=out)
-        if first:  # no condition depends on the point
+            if least is None:
+                least = row
+            else:  # one pass: the least of two rows straight into out
+                np.minimum(least, row, out=out)
+                least = out
+        if least is None:  # no condition depends on the point
             out[...] = 1
+        elif least is not out:  # a single condition, one factor
+            np.copyto(out, least)
         if self.always_false:
             np.minimum(out, 0, out=out)
 

@@ -277,3 +277,22 @@ def test_the_float32_pass_steps_aside_outside_float32s_range():
     result = classifier(A, B, C, chunk=16)
     exact = [_exact_sign(F, point, (a, b, c)) for point in zip(A, B, C)]
     assert result.signs[0].tolist() == exact and result.exact_points == 0
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(0, 2**32 - 1), st.integers(1, 97), st.lists(st.booleans(), min_size=7, max_size=7), st.booleans())
+def test_the_float32_pass_of_any_layout_gives_the_float64_result(seed, chunk, lone, given):
+    """Chunks of any length (a last chunk of one point too), any parameters of one value for every point
+    (stride 0), sin(alpha) computed or given: the float32 pass's layouts give the float64 result."""
+    import copy
+
+    n = 3 * chunk + 1
+    values = _brake_points(np.random.default_rng(seed), n, on_line=3)
+    values = [np.broadcast_to(v[:1], (n,)) if one else v for v, one in zip(values, lone)]
+    functions = [np.sin(values[0])] if given else None
+    float64 = copy.copy(BRAKE_CLASSIFIER)
+    float64._single = False
+    ours = BRAKE_CLASSIFIER(*values, chunk=chunk, function_values=functions)
+    theirs = float64(*values, chunk=chunk, function_values=functions)
+    assert np.array_equal(ours.stable, theirs.stable) and np.array_equal(ours.signs, theirs.signs)
+    assert np.array_equal(ours.in_band, theirs.in_band)
