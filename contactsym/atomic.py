@@ -283,7 +283,9 @@ def _again(signum: int) -> None:
     """Deliver ``signum`` to the main thread once more, from outside the finalizer that swallowed it."""
     if not _STATE["active"]:
         return
-    if signum == signal.SIGINT:
+    if hasattr(signal, "pthread_kill"):  # a real signal to the main thread: it also ends a sleep or a wait there
+        signal.pthread_kill(threading.main_thread().ident, signum)
+    elif signum == signal.SIGINT:  # no pthread_kill (Windows): noticed once the blocking call returns
         _thread.interrupt_main()
     else:
         signal.raise_signal(signum)
