@@ -80,8 +80,14 @@ def test_notebook_runs_top_to_bottom(path, kernel_env, monkeypatch):
     nbclient = pytest.importorskip("nbclient")
     monkeypatch.setenv("JUPYTER_PATH", kernel_env["JUPYTER_PATH"])  # where the kernel spec is looked up
     notebook = nbformat.read(path, as_version=4)
+    # shutdown_kernel="immediate": the kernel is killed once the last cell has run; the default graceful
+    # shutdown waits ~1 s per notebook for an interpreter whose outputs are already collected
     client = nbclient.NotebookClient(
-        notebook, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(NOTEBOOK_DIR)}}
+        notebook,
+        timeout=600,
+        kernel_name="python3",
+        shutdown_kernel="immediate",
+        resources={"metadata": {"path": str(NOTEBOOK_DIR)}},
     )
     client.execute(env=kernel_env)  # a failing cell raises CellExecutionError with its traceback
     code = [cell for cell in notebook.cells if cell.cell_type == "code"]
