@@ -84,21 +84,32 @@ def _second_order(
     G = sp.Matrix(accelerations)
     acc_value = lambdify_cse(args + N, list(G))
     acc_jac = lambdify_cse(args + N, [G.jacobian(z), G.jacobian(N)])
-    clamp = np.asarray(clamp, dtype=bool)
-    any_clamp = bool(clamp.any())
+    clamp = tuple(bool(c) for c in clamp)
+    any_clamp = any(clamp)
+    zero = np.float64(0.0)
+
+    def reaction_list(t, y) -> list:
+        """The N_j at one state, NumPy floats in a list. The solver calls this a few times per step with
+        k of them: NumPy's operations on arrays that small cost several times the arithmetic, so the
+        clamp is plain comparisons (a NaN reaction of a clamped contact is 0, as with ``np.where``)."""
+        out = np.asarray(law_value(t, *y), dtype=float)
+        if not any_clamp:
+            return list(out[:k])
+        return [r if not c or (g <= 0 and r >= 0) else zero for c, r, g in zip(clamp, out[:k], out[k:])]
 
     def reactions_and_active(t, y):
         out = np.asarray(law_value(t, *y), dtype=float)
         raw, g = out[:k], out[k:]
         if not any_clamp:
             return raw, None
-        active = ~clamp | ((g <= 0) & (raw >= 0))
+        active = ~np.array(clamp) | ((g <= 0) & (raw >= 0))
         return np.where(active, raw, 0.0), active
 
     def fun(t, y):
-        Nv, _ = reactions_and_active(t, y)
-        acc = np.asarray(acc_value(t, *y, *Nv), dtype=float)
-        return np.concatenate([y[n:], acc])
+        out = np.empty(2 * n)
+        out[:n] = y[n:]
+        out[n:] = acc_value(t, *y, *reaction_list(t, y))
+        return out
 
     def jac(t, y):
         Nv, active = reactions_and_active(t, y)
@@ -114,7 +125,7 @@ def _second_order(
         return J
 
     def reactions(t, y):
-        return reactions_and_active(t, y)[0]
+        return np.array(reaction_list(t, y))
 
     extra = {"law_value": law_value, "law_jac": law_jac, "acc_value": acc_value, "acc_jac": acc_jac, "n": n, "k": k}
     return OdeSystem(tuple(names), fun, jac, reactions, tuple(str(s) for s in N), time, description, extra)

@@ -22,6 +22,8 @@ def fast_trajectories_data(
     starts=None,
     span=(0.0, 30.0),
     grid: int = 21,
+    method: str = "DOP853",
+    rtol: float = 1e-9,
 ) -> dict:
     """Simulated trajectories of the fast subsystem (2.1) and its vector field.
 
@@ -30,6 +32,12 @@ def fast_trajectories_data(
     For one contact the plane is (u, v) (or (Q, V)) with the vector field on a
     ``grid x grid`` mesh; for more contacts the trajectories are drawn in the plane of
     the first two reactions. The consistent equilibria are included.
+
+    The trajectories are :func:`simulate_fast` runs with ``method`` and ``rtol``. DOP853 by default, as
+    in :func:`fast_cycle`: in tau the fast subsystem is not stiff, and where a reaction changes sign the
+    friction (or an opening contact) makes the force discontinuous, which Radau, simulate_fast's default,
+    passes only with many small implicit steps (the cusp portrait of notebook 02: 0.4 s, Radau 2.6 s, the
+    trajectories 4e-7 apart).
 
     Examples
     --------
@@ -59,6 +67,8 @@ def fast_trajectories_data(
             laws=laws,
             unilateral=unilateral,
             form=chosen,
+            method=method,
+            rtol=rtol,
             t_eval=samples,
             reaction_bound=50 * N_scale,
             dense_output=False,
