@@ -8,6 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
+from sympy.printing.numpy import NumPyPrinter
 
 from ..arguments import checked
 from ..errors import NumericsError
@@ -37,9 +38,43 @@ def _has_text(exprs) -> bool:
     return isinstance(exprs, (list, tuple)) and any(_has_text(e) for e in exprs)
 
 
-@checked(exprs="list | tuple | sp.Basic | sp.MatrixBase")
-def lambdify_cse(args: Sequence, exprs) -> Callable:
+class _PointPrinter(NumPyPrinter):
+    """NumPy code for one point at a time (the right-hand side of an ODE): a Piecewise is Python's
+    conditional expression, which evaluates the one branch that applies (NumPy's ``select`` evaluates
+    every branch and costs ~20 us a call on scalars: 90 % of a Hertz pad's reaction), Max and Min are
+    nested ``maximum`` and ``minimum`` (NaN-propagating, as before) instead of ``reduce`` over a list."""
+
+    def _print_Piecewise(self, expr):
+        text = self._print(sp.nan)  # no condition holds: NaN, as NumPy's select(..., default=nan)
+        for piece in reversed(expr.args):
+            value = self._print(piece.expr)
+            if piece.cond == sp.true:
+                text = value
+            else:
+                cond = sp.simplify_logic(piece.cond) if piece.cond.has(sp.ITE) else piece.cond
+                text = f"(({value}) if ({self._print(cond)}) else ({text}))"
+        return text
+
+    def _nested(self, name: str, args) -> str:
+        op = self._module_format(f"{self._module}.{name}")
+        text = self._print(args[-1])
+        for arg in reversed(args[:-1]):
+            text = f"{op}({self._print(arg)}, {text})"
+        return text
+
+    def _print_Max(self, expr):
+        return self._nested("maximum", expr.args)
+
+    def _print_Min(self, expr):
+        return self._nested("minimum", expr.args)
+
+
+@checked(exprs="list | tuple | sp.Basic | sp.MatrixBase", point="bool")
+def lambdify_cse(args: Sequence, exprs, *, point: bool = False) -> Callable:
     """``sympy.lambdify`` to NumPy with common-subexpression elimination.
+
+    ``point=True``: code for one point at a time (scalar arguments, as an ODE solver calls a right-hand
+    side), where a Piecewise is a conditional expression; the same values, several times faster.
 
     Examples
     --------
@@ -48,10 +83,17 @@ def lambdify_cse(args: Sequence, exprs) -> Callable:
     >>> f = lambdify_cse([x, y], [x**2*y + 1, x**2*y*sp.sin(x)])
     >>> [round(float(v), 6) for v in f(2.0, 3.0)]
     [13.0, 10.911569]
+    >>> hertz = sp.Piecewise((sp.Max(0, -x) ** sp.Rational(3, 2) - y, x < 0), (0, True))
+    >>> g = lambdify_cse([x, y], [hertz], point=True)
+    >>> [float(g(-4.0, 1.0)[0]), float(g(1.0, 1.0)[0])]
+    [7.0, 0.0]
     """
     if isinstance(args, (str, bytes)) or not all(isinstance(a, sp.Basic) for a in args) or _has_text(exprs):
         raise NumericsError("lambdify_cse takes SymPy symbols and SymPy expressions (text is never evaluated).")
-    return sp.lambdify(list(args), exprs, modules="numpy", cse=True)
+    if not point:
+        return sp.lambdify(list(args), exprs, modules="numpy", cse=True)
+    settings = {"fully_qualified_modules": False, "inline": True, "allow_unknown_functions": True, "user_functions": {}}
+    return sp.lambdify(list(args), exprs, modules="numpy", cse=True, printer=_PointPrinter(settings))
 
 
 @checked

@@ -127,7 +127,7 @@ def _field(scene, signs: tuple, laws, functions: dict) -> dict:
         return {
             "params": params,
             "tensors": lambdify_cse(args, [J.tolist(), H, T, dN]),
-            "N_rest": [lambdify_cse([Q[j], *params], N_cut[j].subs(V[j], 0)) for j in range(k)],
+            "N_rest": [lambdify_cse([Q[j], *params], N_cut[j].subs(V[j], 0), point=True) for j in range(k)],
             "N_QV": [
                 lambdify_cse([Q[j], *params], [N[j].diff(x).subs(V[j], 0) for x in (Q[j], V[j])]) for j in range(k)
             ],

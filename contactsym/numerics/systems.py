@@ -31,7 +31,8 @@ class OdeSystem:
     names : tuple of str
         State components.
     fun, jac : callable
-        ``fun(t, z)`` and its Jacobian ``jac(t, z)`` (analytic).
+        ``fun(t, z)`` and its Jacobian ``jac(t, z)`` (analytic), at one state ``z`` (a 1-D array, as
+        ``solve_ivp`` passes it): generated code for one point (:func:`lambdify_cse` with ``point=True``).
     reactions : callable
         ``reactions(t, z)``: the normal reactions N_j (u_j for the fast subsystem).
     reaction_names : tuple of str
@@ -79,11 +80,11 @@ def _second_order(
     args = [time_symbol, *z]
     N = list(reaction_symbols)
     law_matrix = sp.Matrix(laws)
-    law_value = lambdify_cse(args, [*laws, *gaps])
-    law_jac = lambdify_cse(args, law_matrix.jacobian(z))
+    law_value = lambdify_cse(args, [*laws, *gaps], point=True)
+    law_jac = lambdify_cse(args, law_matrix.jacobian(z), point=True)
     G = sp.Matrix(accelerations)
-    acc_value = lambdify_cse(args + N, list(G))
-    acc_jac = lambdify_cse(args + N, [G.jacobian(z), G.jacobian(N)])
+    acc_value = lambdify_cse(args + N, list(G), point=True)
+    acc_jac = lambdify_cse(args + N, [G.jacobian(z), G.jacobian(N)], point=True)
     clamp = tuple(bool(c) for c in clamp)
     any_clamp = any(clamp)
     zero = np.float64(0.0)
@@ -134,9 +135,9 @@ def _second_order(
 def _first_order(time_symbol, state, rhs, reaction_exprs, *, names, reaction_names, time, description) -> OdeSystem:
     args = [time_symbol, *state]
     rhs = sp.Matrix(rhs)
-    value = lambdify_cse(args, list(rhs))
-    jacobian = lambdify_cse(args, rhs.jacobian(list(state)))
-    reaction_value = lambdify_cse(args, list(reaction_exprs))
+    value = lambdify_cse(args, list(rhs), point=True)
+    jacobian = lambdify_cse(args, rhs.jacobian(list(state)), point=True)
+    reaction_value = lambdify_cse(args, list(reaction_exprs), point=True)
     m = len(state)
 
     def fun(t, y):
