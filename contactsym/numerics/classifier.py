@@ -15,6 +15,7 @@ from ..arguments import checked
 from ..errors import NumericsError
 from ..parse import sympy_only
 from ..progress import Budget, Progress
+from . import fused
 from .buffered import BufferedCode, cheapest_trig
 from .certified import _gamma, certified_sign
 from .codegen import lambdify_cse
@@ -44,7 +45,9 @@ class PointClassifier:
     ``function_values``). Where it applies (:mod:`.single`), a chunk is first evaluated in
     float32: inputs rounded, sines and cosines from float32 loops with their own bound, with
     a width that makes its certain points certain in float64 too; the points it leaves
-    undecided are evaluated again in float64, so the result is the float64 one.
+    undecided are evaluated again in float64, so the result is the float64 one. With numba installed
+    (``contactsym[fast]``), a call of at least :data:`.fused.FUSED_MIN_POINTS` points runs that float32 pass
+    as one compiled loop over the points (:mod:`.fused`): the same values, the same results.
     Points that trap and the points inside ``max(band, 2 gamma)`` relative are decided
     exactly: the binary inputs are exact rationals, F is evaluated in 256-bit
     arithmetic, and where even that leaves |F| < 2^-200 (P + M + |U|) the point is
@@ -116,10 +119,11 @@ class PointClassifier:
         self._declared = [(s, bool(s.is_positive), bool(s.is_negative)) for s in self.parameters]  # looked up once
         self._names = [f"the values of {s}" for s in self.parameters]  # printed once: SymPy's printer is slow
         self._zeros = [(part[0] == 0, part[1] == 0) for part in self.parts]  # SymPy comparisons: once, not per chunk
-        self._single_pass = None
+        self._single_pass = self._fused = None
         if self._single:
             declared, parts = [d[1:] for d in self._declared], [(len(p), z) for p, z in zip(self.parts, self._zeros)]
             self._single_pass = SinglePass(self._buffered, self.functions, declared, self._single_widths, parts)
+            self._fused = fused.FusedPass(self._buffered, self.functions, declared, self._single_widths, parts)
         self._mp_function = self._mp_functions()
         self._workspaces = threading.local()
 
@@ -307,12 +311,13 @@ class PointClassifier:
         stable = np.empty(size, dtype=np.int8)
         in_band = np.empty(size, dtype=bool)
         left: list[np.ndarray] = []  # points the float32 pass leaves to float64, all chunks in one go
+        fast = self._fused_run(size, given)
         for start in range(0, size, chunk):  # one pass per chunk: checks, generated code, signs, all in the cache
             stop = min(start + chunk, size)
             part = factor_signs[:, start:stop]
             pieces = [a[start:stop] for a in arrays]
             known = [None if g is None else g[start:stop] for g in given]
-            single = self._chunk_signs(pieces, known, part)
+            single = self._chunk_signs(pieces, known, part, fast)
             self._verdicts.stable(part, stable[start:stop], self._workspace(stop - start)[1])
             undecided = _undecided(part, in_band[start:stop])
             if single:
@@ -337,10 +342,18 @@ class PointClassifier:
             stable.reshape(shape), factor_signs, self._verdicts, in_band.reshape(shape), len(points), band
         )
 
-    def _chunk_signs(self, pieces, known, part) -> bool:
+    def _fused_run(self, size: int, given: list):
+        """The fused float32 loop's ``run`` (:mod:`.fused`) for a call of ``size`` points, or None: NumPy passes."""
+        if not (self._single and self.parts and size >= fused.FUSED_MIN_POINTS and fused.available()):
+            return None
+        return self._fused.run if self._fused.applies(given) else None
+
+    def _chunk_signs(self, pieces, known, part, fast=None) -> bool:
         """Checks and signs of the kept factors on a chunk (0: not certain): by the float32 pass where it applies
-        (then True: the points it leaves undecided go to :meth:`_in_float64`), else in float64."""
-        done = self._single_pass.run(pieces, known, part) if self._single and len(pieces[0]) else None
+        (``fast``: its fused loop; then True: the points it leaves undecided go to :meth:`_in_float64`), else in
+        float64."""
+        run = fast or (self._single_pass.run if self._single else None)
+        done = run(pieces, known, part) if run is not None and len(pieces[0]) else None
         if done:
             return True
         if done is None:  # not checked (or a value the float32 check refused): the check that says why
