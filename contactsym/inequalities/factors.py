@@ -42,8 +42,43 @@ def factor_list(expr: sp.Expr) -> tuple[sp.Expr, list[tuple[sp.Expr, int]]]:
     >>> factor_list(x**2 - y**2)  # no variable of degree 1: sympy.factor_list
     (1, [(x - y, 1), (x + y, 1)])
     """
+    if isinstance(expr, sp.Mul):
+        numerator, denominator = sp.together(expr).as_numer_denom()  # as sympy.factor_list begins
+        if denominator == 1 and isinstance(numerator, sp.Mul):
+            product = _factored_product(numerator)
+            if product is not None:
+                return product
     cheap = _factored_by_degree_one(expr) if isinstance(expr, sp.Add) else None
     return cheap if cheap is not None else sp.factor_list(expr)
+
+
+def _factored_product(expr: sp.Mul) -> tuple[sp.Expr, list[tuple[sp.Expr, int]]] | None:
+    """A product factored as ``sympy.factor_list`` factors it, each factor here by :func:`factor_list`.
+
+    SymPy makes each argument of the Mul its own polynomial and merges two factors only where they are
+    equal as polynomials, generators and domain included (so ``(x + 1)(x y + x + y + 1)`` lists ``x + 1``
+    twice); the same rule here gives the same list, while a large argument of degree 1 in some variable is
+    split without Wang's algorithm. None where an argument is not a polynomial to a positive integer power
+    (SymPy then takes the whole over one denominator first).
+    """
+    coefficient, merged = sp.S.One, {}
+    for arg in expr.args:
+        if arg.is_Number:
+            coefficient *= arg
+            continue
+        base, power = arg.as_base_exp() if arg.is_Pow else (arg, sp.S.One)
+        if not (power.is_Integer and power > 0) or base.is_Number or not base.is_polynomial():
+            return None
+        try:
+            poly = sp.Poly(base)
+        except PolynomialError:
+            return None
+        inner, factors = factor_list(base)
+        coefficient *= inner**power
+        for factor, multiplicity in factors:
+            key = (factor, poly.gens, poly.domain)
+            merged[key] = merged.get(key, 0) + multiplicity * power
+    return coefficient, [(factor, multiplicity) for (factor, _, _), multiplicity in merged.items()]
 
 
 @checked

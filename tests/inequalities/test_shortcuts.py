@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections import Counter
 
+import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -54,6 +55,34 @@ def products(draw):
 @given(products())
 def test_factor_list_is_sympys(expr):
     ours, plain = factor_list(expr), sp.factor_list(expr)
+    assert ours[0] == plain[0]
+    assert Counter(ours[1]) == Counter(plain[1])
+
+
+@st.composite
+def unexpanded_products(draw):
+    """Products left as products: each argument its own polynomial, some repeated, some sharing factors,
+    a rational coefficient and now and then a power or a reciprocal (not a polynomial: SymPy's whole path)."""
+    factors = [draw(polynomials(max_degree=draw(st.integers(1, 2)))) for _ in range(draw(st.integers(2, 3)))]
+    if draw(st.booleans()):  # the same factor hidden in an expanded argument: merged only where SymPy merges
+        factors.append(sp.expand(factors[0] * draw(polynomials(max_terms=2))))
+    if draw(st.booleans()):
+        factors[-1] = factors[-1] ** draw(st.integers(2, 3))
+    if draw(st.integers(0, 5)) == 0:
+        factors.append(1 / draw(st.sampled_from(SYMBOLS)))
+    return sp.Mul(draw(coefficients), *factors)
+
+
+@settings(max_examples=40, deadline=None)
+@given(unexpanded_products())
+def test_factor_list_of_a_product_is_sympys(expr):
+    try:
+        plain = sp.factor_list(expr)
+    except sp.PolynomialError:  # a reciprocal: SymPy refuses it, and so does factor_list
+        with pytest.raises(sp.PolynomialError):
+            factor_list(expr)
+        return
+    ours = factor_list(expr)
     assert ours[0] == plain[0]
     assert Counter(ours[1]) == Counter(plain[1])
 
