@@ -159,9 +159,10 @@ class Facts:
 
     def _views(self, expr: sp.Expr) -> Iterator[sp.Expr]:
         """The forms of one number that are tried in turn, without their positive expressions."""
-        forms = (normalize(expr), self.present(expr)) if self.present else (expr,)
+        # lazily: the presentation is computed only when the canonical form proved nothing
+        forms = (lambda: normalize(expr), lambda: self.present(expr)) if self.present else (lambda: expr,)
         for form in forms:
-            yield sp.sympify(form).subs({p: sp.Dummy(positive=True) for p in self.positive})
+            yield sp.sympify(form()).subs({p: sp.Dummy(positive=True) for p in self.positive})
 
     def sign(self, condition: Condition) -> int | None:
         """+1 or -1 when the sign of the condition's number is known."""
