@@ -250,7 +250,8 @@ def _floor_rows(classifier, values, ours_s, name: str = "classification") -> lis
         f"one compiled loop per point: the inputs read, checked and rounded to float32, the {ops} operations "
         "of the generated code and the sign test in float32 (the NumPy pass's values, bit for bit), "
         + (f"functions {functions} from NumPy's float32 loops per chunk, " if classifier.functions else "")
-        + "the verdicts in NumPy, the undecided points again in float64"
+        + "the verdicts in NumPy, the undecided points again in float64; the loop runs unchecked under the "
+        "processor's floating-point status flags, and a chunk that raises one runs again with every value checked"
     )
     rows = [
         record(

@@ -11,22 +11,29 @@ NumPy rounds a Python float against a float32 array). Sines and cosines still co
 loops, once per chunk, with the same error bound, checked per point.
 
 The NumPy pass evaluates a chunk under ``np.errstate(all="raise")`` and sends a chunk that traps to float64.
-Here each point checks its own values: one (an input rounded, a result) that is not a normal float32 number,
-with a margin (so an overflow, an underflow and also an exact 0 or a zero input), leaves the point undecided
+Here a chunk runs first without checks under the processor's floating-point status flags, cleared before and
+read after through the C library (as NumPy reads them): a chunk without an overflow, underflow, invalid
+operation or division by zero is done. A chunk that raised one (or every chunk, where the flags cannot be read)
+runs again in a checked loop, where each point checks its own values: one (an input rounded, a result) that
+is not a normal float32 number, with a margin (so also an exact 0 or a zero input), leaves the point undecided
 (0), and the classifier evaluates it again in float64 as it does every point the float32 pass leaves
 undecided. The results are therefore the float64 stage's, exactly. An input that is not finite or breaks
 its declared sign makes :meth:`FusedPass.run` return None: the classifier's own check then raises its usual
 error.
 
-Compiling takes a second or two per layout of the inputs (arrays or views, computed or given functions);
+Compiling takes a second or two per loop and layout of the inputs (arrays or views, computed or given functions);
 :class:`~contactsym.numerics.classifier.PointClassifier` compiles once, and only for calls of at least
 :data:`FUSED_MIN_POINTS` points.
 """
 
 from __future__ import annotations
 
+import ctypes
+import ctypes.util
 import functools
 import math
+import platform
+import sys
 import threading
 import time
 from collections.abc import Sequence
@@ -74,25 +81,24 @@ def available() -> bool:
     return True
 
 
-def _literal(operand: str) -> str:
-    return f"np.float32({operand})"
-
-
-def _source(code: BufferedCode, functions: tuple, declared: Sequence, widths: Sequence, parts: Sequence, given: bool):
+def _source(code: BufferedCode, functions, declared: Sequence, widths, parts: Sequence, given: bool, checked: bool):
     """The kernel's Python source, or None where an operation has no float32 form here.
 
-    Every float32 value of a point (inputs rounded, results of operations) must be a normal number, with a
-    margin: the least and the largest magnitude are kept (``lo``, ``hi``). A NaN changes neither; but every
+    ``checked``: every float32 value of a point (inputs rounded, results of operations) must be a normal number,
+    with a margin: the least and the largest magnitude are kept (``lo``, ``hi``). A NaN changes neither; but every
     value computed from a NaN is NaN, and a sign test that meets one is false both ways (0), so a factor whose
-    sign is decided was computed from values that ``lo`` and ``hi`` saw."""
+    sign is decided was computed from values that ``lo`` and ``hi`` saw. Else no value is checked: the chunk
+    runs under the status flags (:func:`_status_flags`)."""
     p, f = len(declared), len(functions)
     names = [f"a{i}" for i in range(p + f)]
     outs = [f"out{k}" for k in range(len(parts))]
     body = ["    n = len(out0)", "    bad = False", "    for i in range(n):"]
-    body += ["        ok = True", "        lo = HUGE", "        hi = TINY"]
+    body += ["        ok = True"] + (["        lo = HUGE", "        hi = TINY"] if checked else [])
     value: dict[str, str] = {}
 
     def seen(name: str) -> None:
+        if not checked:
+            return
         body.append(f"        m = abs({name})")
         body.append("        lo = m if m < lo else lo")
         body.append("        hi = m if m > hi else hi")
@@ -121,7 +127,7 @@ def _source(code: BufferedCode, functions: tuple, declared: Sequence, widths: Se
         form = _OPERATIONS.get(ufunc) or _UNARY[ufunc]
         body.append(f"        {result} = {form.format(*[shown(o) for o in operands])}")
         seen(result)
-        if ufunc == "sqrt":  # of a negative number: NaN
+        if ufunc == "sqrt" and checked:  # of a negative number: NaN
             body.append(f"        ok = ok & (abs({result}) <= HUGE)")
         value[result] = result
 
@@ -149,7 +155,8 @@ def _source(code: BufferedCode, functions: tuple, declared: Sequence, widths: Se
             emit("multiply", (M, shrink), f"h{k}")
             sign = f"np.int8(g{k} > {shown(M)}) - np.int8(h{k} > {shown(P)})"
         body.append(f"        s{k} = {sign}")
-    body.append("        ok = ok & (lo >= TINY) & (hi <= HUGE)")
+    if checked:
+        body.append("        ok = ok & (lo >= TINY) & (hi <= HUGE)")
     for k in range(len(parts)):
         body.append(f"        out{k}[i] = s{k} * np.int8(ok)")
     body.append("    return bad")
@@ -211,25 +218,43 @@ class FusedPass:
         return self.widths[mode] is not None and self.kernel(mode) is not None
 
     def kernel(self, given: bool):
-        """The compiled loop with the functions ``given`` or computed (None: no float32 form), made once."""
+        """The compiled loops, unchecked and checked (:func:`_source`), with the functions ``given`` or computed
+        (None: no float32 form), made once; numba compiles each at its first call with a new layout."""
         if given not in self._kernels:
-            source = _source(self.code, self.functions, self.declared, self.widths[given], self.parts, given)
-            self._kernels[given] = None if source is None else _compiled(source)
+            sources = [
+                _source(self.code, self.functions, self.declared, self.widths[given], self.parts, given, checked)
+                for checked in (False, True)
+            ]
+            self._kernels[given] = None if sources[0] is None else tuple(map(_compiled, sources))
         return self._kernels[given]
 
     def run(self, pieces: Sequence[np.ndarray], known: Sequence, out: np.ndarray) -> bool | None:
         """Into ``out`` (int8, one row per kept factor): the float32 signs (+1/-1 certain, 0 not) and True; or
-        None where a value is not finite or breaks its declared sign (the classifier's check says which)."""
+        None where a value is not finite or breaks its declared sign (the classifier's check says which).
+
+        The unchecked loop runs first, under the status flags; where it raised one (or the flags cannot be
+        read here), the checked loop runs again over the chunk."""
         given = bool(known) and known[0] is not None
         n = len(pieces[0])
-        functions = list(known) if given else self._functions(pieces, n)
-        kernel = self.kernel(given)
-        compiled = len(kernel.signatures)
-        started = time.perf_counter()
-        bad = kernel(*pieces, *functions, *out)
-        if len(kernel.signatures) > compiled:  # this call compiled a new layout
-            self.compile_seconds += time.perf_counter() - started
+        arguments = (*pieces, *(known if given else self._functions(pieces, n)), *out)
+        unchecked, checked = self.kernel(given)
+        flags = _status_flags()
+        if flags is not None:
+            compiled, started = len(unchecked.signatures), time.perf_counter()
+            flags[0]()
+            bad = unchecked(*arguments)
+            raised = flags[1]()
+            self._compiled(unchecked, compiled, started)
+            if not raised:
+                return None if bad else True
+        compiled, started = len(checked.signatures), time.perf_counter()
+        bad = checked(*arguments)
+        self._compiled(checked, compiled, started)
         return None if bad else True
+
+    def _compiled(self, kernel, compiled: int, started: float) -> None:
+        if len(kernel.signatures) > compiled:  # this call compiled a new layout: count its time
+            self.compile_seconds += time.perf_counter() - started
 
     def _functions(self, pieces, n: int) -> list[np.ndarray]:
         """NumPy's float32 sines and cosines of the chunk's arguments rounded to float32 (one value for an
@@ -247,6 +272,44 @@ class FusedPass:
                 getattr(np, ufunc)(row, out=row)
                 values.append(np.ndarray((n,), dtype=np.float32, buffer=row, strides=(0,)) if one else row)
         return values
+
+
+@functools.cache
+def _status_flags():
+    """(clear, raised): clear this thread's floating-point status flags, and whether an overflow, underflow,
+    invalid operation or division by zero has raised one since, through the C library's ``feclearexcept`` and
+    ``fetestexcept`` (what NumPy reads for ``np.errstate``); None where these or their bits are not known here
+    (then every chunk runs the checked loop). The bits are checked once: each exception, raised by NumPy, must
+    set its own."""
+    bits = {"x86_64": (1, 4, 8, 16), "amd64": (1, 4, 8, 16), "aarch64": (1, 2, 4, 8), "arm64": (1, 2, 4, 8)}
+    found = bits.get(platform.machine().lower())
+    if found is None or sys.platform not in ("linux", "darwin"):
+        return None
+    try:
+        library = ctypes.CDLL(ctypes.util.find_library("m") or ctypes.util.find_library("c"))
+        clear, test = library.feclearexcept, library.fetestexcept
+    except (OSError, AttributeError, TypeError):
+        return None
+    clear.argtypes, test.argtypes, clear.restype, test.restype = (
+        [ctypes.c_int],
+        [ctypes.c_int],
+        ctypes.c_int,
+        ctypes.c_int,
+    )
+    mask = sum(found)
+    one, zero, big, small = np.float32(1), np.float32(0), np.float32(3e38), np.float32(1e-30)
+    raising = (lambda: np.sqrt(-one), lambda: one / zero, lambda: big * big, lambda: small * small)
+    with np.errstate(all="ignore"):
+        for bit, operation in zip(found, raising):
+            clear(mask)
+            operation()
+            if test(mask) != bit:
+                return None
+        clear(mask)
+        one * one
+        if test(mask):
+            return None
+    return (lambda: clear(mask)), (lambda: test(mask) != 0)
 
 
 def _compiled(source: str):
