@@ -318,9 +318,26 @@ def _prepass_row(classifier, values, ours_s: float, floor_s: float) -> dict:
 
 def _atlas_rows(quick: bool) -> list[dict]:
     """The atlas's classification per point against the bare classifier on the same points: in all at the larger
-    grid, and per point as the slope between two grids (what a point adds; the fixed cost of a sweep apart)."""
+    grid, and per point as the slope between two grids (what a point adds; the fixed cost of a sweep apart). Both
+    by the fused loop where numba is installed, and both by the NumPy passes (the fused loop off), in one run."""
+    from contactsym.numerics import fused
+
+    rows = _atlas_path_rows(quick, "")
+    if fused.available():
+        kept = fused.FUSED_MIN_POINTS
+        fused.FUSED_MIN_POINTS = float("inf")  # both sides by the NumPy passes
+        try:
+            rows += _atlas_path_rows(quick, "-numpy")
+        finally:
+            fused.FUSED_MIN_POINTS = kept
+    return rows
+
+
+def _atlas_path_rows(quick: bool, suffix: str) -> list[dict]:
     from contactsym import atlas
     from contactsym.atlas import vectorised
+    from contactsym.atlas.run import VECTOR_CHUNK
+    from contactsym.numerics import fused
 
     law = {"m": 1.0, "Phi_1": -2.0, "Phi_2": -2.0, "Psi_1": -1.0, "Psi_2": -1.0}
     scene = cs.scene("brake")
@@ -330,27 +347,39 @@ def _atlas_rows(quick: bool) -> list[dict]:
     measured = []
     for side in (300, 1000) if quick else (1000, 2000):
         grid = {"alpha": np.linspace(0.3, 2.8, side), "mu": np.linspace(0.1, 3.0, side)}
-        atlas.sweep("brake", "classification", grid, values=law, scheduler="sync")  # kernel built and kept
+        atlas.sweep("brake", "classification", grid, values=law, scheduler="sync")  # kernel built (and compiled)
         swept_s, ds = _best_of(
             5, lambda g=grid: atlas.sweep("brake", "classification", g, values=law, scheduler="sync")
         )
         A, M = np.meshgrid(grid["alpha"], grid["mu"], indexing="ij")
         columns = [A.ravel(), M.ravel()] + [np.full(A.size, v) for v in law.values()]
+        bare(*columns)  # compiled, where the fused loop runs
         bare_s, result = _best_of(5, lambda c=columns: bare(*c))
         wrong = int(np.sum(result.stable.reshape(A.shape) != ds.stable.values))
         measured.append((A.size, swept_s, bare_s, wrong))
     (n1, s1, b1, w1), (n2, s2, b2, w2) = measured
     cache = vectorised._built_classifier.cache_info()
     slope_ours, slope_bare = (s2 - s1) / (n2 - n1), (b2 - b1) / (n2 - n1)
+    path = (
+        "both by the NumPy passes (the fused loop off)"
+        if suffix
+        else (
+            f"both as installed: the fused loop (numba) in calls of >= {fused.FUSED_MIN_POINTS} points, so the bare "
+            f"classifier's; the atlas's tasks of {VECTOR_CHUNK} points by the "
+            + ("fused loop" if VECTOR_CHUNK >= fused.FUSED_MIN_POINTS else "NumPy passes")
+            if fused.available()
+            else "both by the NumPy passes (numba not installed)"
+        )
+    )
     common = (
         "brake, grid (alpha, mu), fixed law; ours = atlas.sweep(classification, scheduler='sync') in all (robust "
         "regions, certified Hurwitz verdicts, reason codes, Dataset), baseline = the bare PointClassifier on the same "
-        f"points (7 full columns); classifier cache {cache.hits} hits, {cache.misses} builds; error = verdicts that "
-        "differ; best of 5"
+        f"points (7 full columns); {path}; classifier cache {cache.hits} hits, {cache.misses} builds; error = "
+        "verdicts that differ; best of 5"
     )
     return [
         record(
-            "classification/atlas-vs-bare",
+            f"classification/atlas-vs-bare{suffix}",
             s2,
             b2,
             w2,
@@ -358,7 +387,7 @@ def _atlas_rows(quick: bool) -> list[dict]:
             f"{common}; {n2} points in all: atlas = {s2 / b2:.2f}x the bare classifier (target <= 1.5x per point)",
         ),
         record(
-            "classification/atlas-vs-bare-per-point",
+            f"classification/atlas-vs-bare-per-point{suffix}",
             slope_ours * 1e6,
             slope_bare * 1e6,
             w1 + w2,

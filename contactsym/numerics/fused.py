@@ -48,7 +48,7 @@ __all__ = ["FUSED_MIN_POINTS", "FusedPass", "available"]
 
 #: Calls of at least this many points take the fused loop when numba is installed; smaller calls (the many
 #: small ones of tests, atlas tiles) never pay its compile time.
-FUSED_MIN_POINTS = 1 << 18
+FUSED_MIN_POINTS = 1 << 16
 
 _OPERATIONS = {"add": "{} + {}", "subtract": "{} - {}", "multiply": "{} * {}", "divide": "{} / {}"}
 _UNARY = {"square": "{0} * {0}", "negative": "-{}", "absolute": "abs({})", "sqrt": "np.sqrt({})"}
@@ -81,15 +81,22 @@ def available() -> bool:
     return True
 
 
-def _source(code: BufferedCode, functions, declared: Sequence, widths, parts: Sequence, given: bool, checked: bool):
+def _source(
+    code: BufferedCode, functions, declared: Sequence, widths, parts: Sequence, given: bool, checked: bool, constant=()
+):
     """The kernel's Python source, or None where an operation has no float32 form here.
 
     ``checked``: every float32 value of a point (inputs rounded, results of operations) must be a normal number,
     with a margin: the least and the largest magnitude are kept (``lo``, ``hi``). A NaN changes neither; but every
     value computed from a NaN is NaN, and a sign test that meets one is false both ways (0), so a factor whose
     sign is decided was computed from values that ``lo`` and ``hi`` saw. Else no value is checked: the chunk
-    runs under the status flags (:func:`_status_flags`)."""
+    runs under the status flags (:func:`_status_flags`). ``constant``: per argument, whether it is one value for
+    every point (passed as one element and read once: a stride-0 array in the loop would keep it from SIMD)."""
     p, f = len(declared), len(functions)
+
+    def at(i: int) -> str:
+        return f"a{i}[0]" if i < len(constant) and constant[i] else f"a{i}[i]"
+
     names = [f"a{i}" for i in range(p + f)]
     outs = [f"out{k}" for k in range(len(parts))]
     body = ["    n = len(out0)", "    bad = False", "    for i in range(n):"]
@@ -104,7 +111,7 @@ def _source(code: BufferedCode, functions, declared: Sequence, widths, parts: Se
         body.append("        hi = m if m > hi else hi")
 
     for i, (positive, negative) in enumerate(declared):
-        body.append(f"        x{i} = a{i}[i]")
+        body.append(f"        x{i} = {at(i)}")
         test = f"(x{i} > 0.0) & (x{i} <= MAX64)" if positive else f"(x{i} < 0.0) & (x{i} >= -MAX64)"
         body.append(f"        bad = bad | ~({test if positive or negative else f'abs(x{i}) <= MAX64'})")
         body.append(f"        y{i} = np.float32(x{i})")
@@ -112,7 +119,7 @@ def _source(code: BufferedCode, functions, declared: Sequence, widths, parts: Se
         value[f"a{i}"] = f"y{i}"
     for number, (index, _) in enumerate(functions):
         i = p + number
-        body.append(f"        y{i} = np.float32(a{i}[i])")
+        body.append(f"        y{i} = np.float32({at(i)})")
         if given:  # a float64 value rounded, one rounding as for an input
             seen(f"y{i}")
         else:  # NumPy's float32 sine or cosine of the rounded argument within its bound (:data:`_SINE`)
@@ -217,16 +224,20 @@ class FusedPass:
         mode = bool(some) and all(some)
         return self.widths[mode] is not None and self.kernel(mode) is not None
 
-    def kernel(self, given: bool):
+    def kernel(self, given: bool, constant: tuple = ()):
         """The compiled loops, unchecked and checked (:func:`_source`), with the functions ``given`` or computed
-        (None: no float32 form), made once; numba compiles each at its first call with a new layout."""
-        if given not in self._kernels:
+        and the arguments ``constant`` (one value for every point) read once (None: no float32 form), made once
+        per such layout; numba compiles each at its first call with new array types."""
+        key = (given, constant)
+        if key not in self._kernels:
             sources = [
-                _source(self.code, self.functions, self.declared, self.widths[given], self.parts, given, checked)
+                _source(
+                    self.code, self.functions, self.declared, self.widths[given], self.parts, given, checked, constant
+                )
                 for checked in (False, True)
             ]
-            self._kernels[given] = None if sources[0] is None else tuple(map(_compiled, sources))
-        return self._kernels[given]
+            self._kernels[key] = None if sources[0] is None else tuple(map(_compiled, sources))
+        return self._kernels[key]
 
     def run(self, pieces: Sequence[np.ndarray], known: Sequence, out: np.ndarray) -> bool | None:
         """Into ``out`` (int8, one row per kept factor): the float32 signs (+1/-1 certain, 0 not) and True; or
@@ -236,8 +247,10 @@ class FusedPass:
         read here), the checked loop runs again over the chunk."""
         given = bool(known) and known[0] is not None
         n = len(pieces[0])
-        arguments = (*pieces, *(known if given else self._functions(pieces, n)), *out)
-        unchecked, checked = self.kernel(given)
+        inputs = (*pieces, *(known if given else self._functions(pieces, n)))
+        constant = tuple(a.strides == (0,) and n > 1 for a in inputs)
+        arguments = (*(a[:1] if one else a for a, one in zip(inputs, constant)), *out)
+        unchecked, checked = self.kernel(given, constant)
         flags = _status_flags()
         if flags is not None:
             compiled, started = len(unchecked.signatures), time.perf_counter()

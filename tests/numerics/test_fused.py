@@ -97,6 +97,18 @@ def test_the_fused_loop_gives_the_numpy_results(always_fused, seed, chunk, lone,
     assert _same(ours, _numpy_paths()[1](*values, chunk=chunk, function_values=functions))
 
 
+@pytest.mark.parametrize("constant", [(0,), (0, 2, 6), (1, 3, 4, 5)])
+def test_arguments_of_one_value_are_read_once_with_the_same_results(always_fused, constant):
+    """Parameters of one value for every point (stride 0, as an atlas passes its fixed values), alpha among them
+    with sin(alpha) computed from it: the loop reads each once (its own layout) and gives the NumPy results."""
+    n = 301
+    values = _points(np.random.default_rng(11), n, on_line=3)
+    values = [np.broadcast_to(v[:1], (n,)) if i in constant else v for i, v in enumerate(values)]
+    ours = CLASSIFIER(*values, chunk=64)
+    assert always_fused
+    assert _same(ours, _numpy_paths()[1](*values, chunk=64))
+
+
 @pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf, 0.0, 1.0])
 def test_values_the_classifier_refuses_are_refused_with_the_same_error(always_fused, bad):
     """NaN, infinities and values that break a declared sign, in a later chunk: the same error as without numba."""
