@@ -106,7 +106,9 @@ class MemoryResults:
 
     def __init__(self, size: int, outputs: tuple, chunk: int):
         self.chunk = chunk
-        self.values = np.full((len(outputs), size), np.nan)  # one contiguous row per output: the Dataset's arrays
+        # one contiguous row per output (the Dataset's arrays), NaN only where no chunk was written (read): a
+        # NaN fill first would touch every page twice
+        self.values = np.empty((len(outputs), size))
         self.codes = np.zeros(size, dtype=np.uint8)
         self.table = _Table()
         self.done = np.zeros(-(-size // chunk), dtype=bool)
@@ -126,6 +128,8 @@ class MemoryResults:
         self.done[index] = True
 
     def read(self) -> tuple[np.ndarray, Reasons]:
+        for index in np.flatnonzero(~self.done):
+            self.values[:, index * self.chunk : (index + 1) * self.chunk] = np.nan
         return self.values.T, Reasons(self.codes, list(self.table.texts))
 
 
