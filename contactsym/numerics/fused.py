@@ -2,7 +2,7 @@
 
 The NumPy pass (:mod:`.single_pass`) makes some fifty passes over a chunk: the rounding to float32, the
 checks, each operation of the generated code, the sign test. Each pass reads and writes the cache; together
-they cost about three times reading the inputs once (the memory floor of issue #23). Here one loop, compiled
+they cost about three times reading the inputs once (the memory floor). Here one loop, compiled
 by numba, does all of it per point: it reads the float64 inputs once, rounds them to float32, evaluates the
 generated code's operations in the same order in float32, and applies the same sign test with the same widths
 (:func:`.single.single_widths`), writing one int8 sign per kept factor. The values are those of the NumPy
@@ -21,7 +21,8 @@ undecided. The results are therefore the float64 stage's, exactly. An input that
 its declared sign makes :meth:`FusedPass.run` return None: the classifier's own check then raises its usual
 error.
 
-Compiling takes a second or two per loop and layout of the inputs (arrays or views, computed or given functions);
+Compiling takes about a second per loop and layout of the inputs (arrays, or one value for every point;
+functions computed or given);
 :class:`~contactsym.numerics.classifier.PointClassifier` compiles once, and only for calls of at least
 :data:`FUSED_MIN_POINTS` points.
 """
@@ -46,8 +47,8 @@ from .single import _ULP_BELOW
 
 __all__ = ["FUSED_MIN_POINTS", "FusedPass", "available"]
 
-#: Calls of at least this many points take the fused loop when numba is installed; smaller calls (the many
-#: small ones of tests, atlas tiles) never pay its compile time.
+#: Calls of at least this many points (an atlas task's size) take the fused loop when numba is installed;
+#: smaller calls (the many small ones of tests and of interactive work) never pay its compile time.
 FUSED_MIN_POINTS = 1 << 16
 
 _OPERATIONS = {"add": "{} + {}", "subtract": "{} - {}", "multiply": "{} * {}", "divide": "{} / {}"}
