@@ -174,20 +174,7 @@ def _source(
 class FusedPass:
     """``run(pieces, known, out)``: the float32 pass of :class:`~contactsym.numerics.classifier.PointClassifier`
     over one chunk, as one compiled loop (numba); the same arguments and results as
-    :meth:`.single_pass.SinglePass.run`.
-
-    Parameters
-    ----------
-    code : BufferedCode
-        The kept factors' parts (P, M[, U, |U|]) over the parameters, then one argument per function.
-    functions : tuple of (int, str)
-        Per function argument, the index of its parameter and its NumPy ufunc (sine or cosine if computed).
-    declared : sequence of (bool, bool)
-        Per parameter, whether it is declared positive, negative.
-    widths : (list or None, list)
-        The float32 sign test's widths with the functions computed (None: not available) and given.
-    parts : sequence of (int, (bool, bool))
-        Per kept factor, the number of its parts and whether P and M are identically 0.
+    :meth:`.single_pass.SinglePass.run`, and the same parameters as :class:`.single_pass.SinglePass`.
 
     Examples
     --------
