@@ -1,7 +1,10 @@
 """The documentation site (docs/) builds with warnings as errors, and documents every public name.
 
-The build is the command the README gives, ``python3 -m sphinx -W -b html docs docs/_build/html``
-(here into a temporary folder), with the notebooks rendered as committed
+The build is the command the README gives, ``python3 -m sphinx -W -b html docs docs/_build/html``,
+run on a copy of docs/ in a temporary folder: a build writes into its source folder (the API
+pages of api/generated, emptied first by conf.py; the intersphinx inventories), so a build of
+the checkout's own docs/ at the same time (the README's command, an editor's preview, another
+test run) cannot remove pages under this one. The notebooks are rendered as committed
 (``CONTACTSYM_DOCS_EXECUTE=off``): tests/test_notebooks.py executes each notebook, one test per
 notebook, in a kernel of this interpreter, as the README's build does with myst-nb. This folder
 is collected early, so the longest test starts first.
@@ -13,6 +16,7 @@ import importlib
 import inspect
 import os
 import pkgutil
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -24,7 +28,7 @@ import contactsym
 ROOT = Path(__file__).resolve().parents[2]
 DOCS = ROOT / "docs"
 
-# one worker builds the site for all of them (two builds at once would write docs/api/generated together)
+# one worker builds the site for all of them (once per run)
 pytestmark = pytest.mark.xdist_group("site")
 
 pytest.importorskip("sphinx")
@@ -48,6 +52,8 @@ def site(tmp_path_factory) -> Path:
     """The site, built once from this checkout, the notebooks not executed (they run in
     tests/test_notebooks.py)."""
     out = tmp_path_factory.mktemp("site")
+    source = out / "docs"
+    shutil.copytree(DOCS, source, ignore=shutil.ignore_patterns("_build", "generated", ".ipynb_checkpoints"))
     env = {**os.environ, "PYTHONPATH": str(ROOT), "MPLBACKEND": "Agg", "CONTACTSYM_DOCS_EXECUTE": "off"}
     run = subprocess.run(
         [
@@ -59,7 +65,7 @@ def site(tmp_path_factory) -> Path:
             "-q",
             "-b",
             "html",
-            str(DOCS),
+            str(source),
             str(out / "html"),
             "-d",
             str(out / "doctrees"),
