@@ -101,8 +101,9 @@ def fast_cycle(
     (DOP853 by default: in tau the fast subsystem is not stiff, and a contact that opens
     and closes makes the force discontinuous, which implicit methods pass only with tiny
     steps) until successive upward crossings of ``v_1 = 0`` (``V_1 = 0``) agree to ``tol``
-    (relative to the typical magnitudes); the last period is then sampled and the
-    reactions averaged over it.
+    (relative to the typical magnitudes) and are near their limit: a slow spiral into a
+    stable equilibrium, whose returns agree to ``tol`` long before it arrives, is no cycle.
+    The last period is then sampled and the reactions averaged over it.
 
     Examples
     --------
@@ -155,9 +156,15 @@ def _section(k: int):
 def _returns(
     system: OdeSystem, z, z_eq, scale, T0: float, periods: int, tol: float, N_scale, section, solve
 ) -> tuple | str:
-    """(last return to the section, period) once successive returns agree to ``tol``, else why not.
+    """(last return to the section, period) once the returns have converged to a cycle, else why not.
 
     The system is integrated in blocks of 50 linear periods ``T0``, at most ``periods`` of them.
+    Successive returns that agree to ``tol`` are not enough: near a weakly damped equilibrium
+    they agree to ``tol`` while still spiralling in, a "cycle" of amplitude ~ tol / (1 - r) for a
+    contraction r per turn. So the returns also have to be close to their limit, estimated from
+    the contraction of the last two steps (`_distance_to_limit`): within ``tol`` or 1% of their
+    distance from the equilibrium, whichever is larger. A spiral into the equilibrium never
+    passes (its limit is the equilibrium itself) and ends as "settles on the equilibrium".
     """
     hits: list[np.ndarray] = []
     times: list[float] = []
@@ -176,11 +183,32 @@ def _returns(
         elapsed += block
         if len(hits) >= 3:
             change = np.max(np.abs(hits[-1] - hits[-2]) / scale)
-            if np.max(np.abs(hits[-1] - z_eq) / scale) < tol:
+            distance = np.max(np.abs(hits[-1] - z_eq) / scale)
+            if distance < tol:
                 return "the fast motion settles on the equilibrium: it is stable, no cycle."
-            if change < tol and abs((times[-1] - times[-2]) - (times[-2] - times[-3])) < 1e2 * tol * T0:
+            steady = abs((times[-1] - times[-2]) - (times[-2] - times[-3])) < 1e2 * tol * T0
+            near_limit = _distance_to_limit(hits[-3:], scale) < max(tol, 1e-2 * distance)
+            if change < tol and steady and near_limit:
                 return hits[-1], times[-1] - times[-2]
     return f"no convergence to a cycle within {periods} linear periods."
+
+
+def _distance_to_limit(last: list, scale) -> float:
+    """How far the last of three successive returns is from their limit (scaled max norm).
+
+    For returns converging geometrically, h_n - h_inf = (h_n - h_(n-1)) r / (1 - r) with r the
+    contraction per return, estimated as |h_n - h_(n-1)| / |h_(n-1) - h_(n-2)|. Returns that do not
+    contract (r >= 1) are as far from a limit as the step they just made, at least; identical
+    returns are at it.
+    """
+    step = np.max(np.abs(last[2] - last[1]) / scale)
+    before = np.max(np.abs(last[1] - last[0]) / scale)
+    if step == 0:
+        return 0.0
+    if before == 0 or step >= before:
+        return float(step) if before == 0 else math.inf
+    r = step / before
+    return float(step * r / (1 - r))
 
 
 def _sampled_cycle(system: OdeSystem, found: tuple, samples: int, N_scale: float, section, solve) -> Cycle:

@@ -106,3 +106,19 @@ def test_hunt_crossley_law_on_the_brake_gives_a_bounded_oscillation():
     cycle = nm.fast_cycle(brake, values, laws={0: law, 1: law}, tol=1e-6, samples=1024)
     assert cycle.converged, cycle.message
     assert np.all(np.isfinite(cycle.reactions)) and cycle.reactions.max() < 20
+
+
+def test_a_slow_spiral_into_a_stable_equilibrium_is_not_a_cycle():
+    """Just inside the Hopf line the equilibrium is a weakly damped focus: successive returns to
+    the section agree to ``tol`` long before they reach the equilibrium. That is no cycle (it was
+    once reported as one, of amplitude ~1e-5): the returns must also be near their limit."""
+    values = {"m": 1, "mu": 1, "alpha": math.pi / 2, "F_x": 2, "F_y": -4}
+    values |= {"Phi_1": -2.1, "Phi_2": -2.1, "Psi_1": -1, "Psi_2": -1}
+    critical = nm.hopf_point(brake, values, "mu").value  # derived: the crossing of the critical pair
+    for inside in (0.975, 0.985):
+        point = values | {"mu": inside * critical}
+        assert nm.classify(brake, point).stable == 1  # Routh-Hurwitz: a stable equilibrium
+        cycle = nm.fast_cycle(brake, point, samples=64)
+        assert not cycle.converged and "settles on the equilibrium" in cycle.message, cycle.message
+    beyond = nm.fast_cycle(brake, values | {"mu": 1.01 * critical}, samples=64)
+    assert beyond.converged and np.ptp(beyond.states, axis=1).max() > 1  # the squeal cycle, of finite size
