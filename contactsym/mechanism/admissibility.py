@@ -14,7 +14,8 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.polys.matrices import DomainMatrix
 
-from ..algebra.basic import known_sign
+from ..algebra.basic import known_sign, node_count
+from ..algebra.reductions import reduce_trig
 from ..errors import SceneError
 from ..validate import shorten
 
@@ -28,7 +29,9 @@ _CIRCLE = ((4, 3, 5), (12, 5, 13), (15, 8, 17), (24, 7, 25), (40, 9, 41), (60, 1
 def _sample_points(exprs, positive=(), count: int = 3) -> list[dict]:
     """Exact points for the free symbols of ``exprs`` (after ``expand_trig``), consistent with assumptions.
 
-    A symbol gets a rational of its declared sign (positive when undeclared); an angle's sin and
+    A symbol gets a rational of its declared sign (positive when undeclared); a symbol declared
+    real, of either sign, is negative at the second point (a mass declared real may be negative,
+    and a matrix positive definite only for its positive values is not so in the domain); an angle's sin and
     cos get a rational point of the unit circle, in the quadrant where the declared positive
     expressions hold. Returns substitutions for :func:`_at`.
     """
@@ -45,7 +48,8 @@ def _sample_points(exprs, positive=(), count: int = 3) -> list[dict]:
         point = {}
         for i, s in enumerate(symbols):
             value = sp.Rational(i + n + 2, 2 * i + n + 3) + n
-            point[s] = -value if (s.is_negative or s.is_nonpositive) else value
+            either_sign = s.is_real and s.is_nonnegative is None and s.is_nonpositive is None
+            point[s] = -value if (s.is_negative or s.is_nonpositive or (either_sign and n == 1)) else value
         for quadrants in _quadrant_choices(len(trig)):
             angles = {}
             for i, (x, (cs, sn)) in enumerate(zip(trig, quadrants)):
@@ -127,6 +131,11 @@ def _exact_det(matrix: sp.Matrix) -> sp.Expr:
     return matrix.det(method="berkowitz")
 
 
+def _shown(entry: sp.Expr, limit: int = 200) -> str:
+    """An entry for a message: sin^2 + cos^2 reduced where it is small enough to expand."""
+    return shorten(reduce_trig(entry) if node_count(entry, limit) <= limit else entry)
+
+
 def _shown_point(point: dict) -> str:
     shown = {str(k): v for k, v in point.items() if not isinstance(k, (sp.sin, sp.cos))}
     shown.update({str(k): v for k, v in point.items() if isinstance(k, (sp.sin, sp.cos))})
@@ -153,7 +162,7 @@ def check_inertia(scene) -> str:
         where = f" at {_shown_point(point)}" if point else ""
         if point is None or i == 0 or _sign_at(M[i, i], point) != 1:
             raise SceneError(
-                f"the mass matrix is not positive definite: its entry M[{names[i]}, {names[i]}] = {shorten(M[i, i])}"
+                f"the mass matrix is not positive definite: its entry M[{names[i]}, {names[i]}] = {_shown(M[i, i])}"
                 f"{where} is not positive, so moving {names[i]} alone has no positive kinetic energy; masses and "
                 'moments of inertia must be positive: declare them positive (e.g. m = "positive") and give each '
                 "body a positive mass and inertia."

@@ -42,6 +42,14 @@ def test_negative_or_zero_mass_or_inertia_is_refused(tmp_path, old, new, coordin
         leaning_rod(tmp_path, old, new)
 
 
+def test_a_mass_declared_real_is_refused(tmp_path):
+    """A real m may be negative: the mass matrix is not positive definite in the declared domain (the
+    sample points give a symbol declared real both signs), so the file is refused, not derived with
+    regions that carry a factor m."""
+    with pytest.raises(SceneError, match=r"mass matrix is not positive definite.*m = -"):
+        leaning_rod(tmp_path, 'm = "positive"', 'm = "real"')
+
+
 def test_the_leaning_rod_itself_is_proved_admissible(tmp_path):
     assert leaning_rod(tmp_path, 'm = "positive"', 'm = "positive"').inertia == "proved"
 
@@ -117,6 +125,22 @@ def test_random_mechanism_with_one_negative_mass_is_refused(J, weights, which):
         SceneError, match=r"mass matrix is (not positive definite|singular).*q_"
     ):  # singular: m_i cancel
         chain(J, masses)
+
+
+@settings(max_examples=15, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(J=matrices, which=st.integers(0, 2), squared=st.booleans())
+def test_a_symbol_declared_real_is_accepted_only_where_both_signs_are_admissible(J, which, squared):
+    """Python API: a mass symbol declared real is refused; the same symbol entering the masses
+    squared (a length, say, m_i = l**2) is accepted, both signs giving a positive definite matrix."""
+    assume(J.det() != 0)
+    n = J.rows
+    free = sp.Symbol("l", real=True)
+    masses = [(free**2 if squared else free) if i == which % n else i + 1 for i in range(n)]
+    if squared:
+        assert chain(J, masses).inertia in ("proved", "sampled")
+    else:
+        with pytest.raises(SceneError, match=r"mass matrix is (not positive definite|singular)"):
+            chain(J, masses)
 
 
 # --- scenes given by their accelerations: the frictionless coefficients (Delassus matrix) ------
