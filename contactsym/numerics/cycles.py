@@ -121,7 +121,7 @@ def fast_cycle(
     system, N_scale = problem.system, problem.reaction_scale
     k = scene.k
     if problem.branch is None:
-        return _no_cycle(system, "no consistent equilibrium: an impact-type catastrophe, not a cycle.")
+        return _no_cycle(system, f"no cycle is sought: {problem.why_no_branch()}")
     z_eq = problem.state_at(problem.u_star)
     scale = problem.scales(z_eq)
     eigenvalues = np.linalg.eigvals(system.jac(0.0, z_eq))

@@ -22,7 +22,7 @@ from ..laws import ImplicitDeformation
 from ..validate import shorten
 from .codegen import _cached, lambdify_cse
 from .integration import Simulation, integrate_with_impact_bound
-from .reduced import _branch_at, _reaction_scale, _try_branch
+from .reduced import _branch_at, _reaction_scale, _try_branch, _why_no_branch
 from .systems import (
     OdeSystem,
     _clamps,
@@ -199,6 +199,10 @@ class FastProblem:
     def branch(self):
         """The equilibrium branch used at the values, or None."""
         return _try_branch(self.scene, self.values, self.signs)
+
+    def why_no_branch(self) -> str:
+        """Why :attr:`branch` is None: several equilibria, contacts lifting off, or none at all."""
+        return _why_no_branch(self.scene, self.values)
 
     def require_branch(self):
         """The equilibrium branch, or a NumericsError saying why there is none to use."""

@@ -32,17 +32,39 @@ def _branch_at(scene, vals: NumericValues, signs=None):
     """The equilibrium branch to use at frozen values: the given pattern or the unique consistent one."""
     if signs is not None:
         return scene.equilibria(signs).branches[0]
-    branches = [b for b in scene.equilibria() if decide(substitute(b.condition, vals), {}) is True]
+    branches = _consistent(scene, vals)
     if len(branches) == 1:
         return branches[0]
-    if not branches:
-        raise NumericsError(
-            "no equilibrium of the fast subsystem is consistent at these values: an impact-type catastrophe "
-            "(no reduced system exists); simulate the full or fast system to see the reaction grow."
+    raise NumericsError(_why_no_branch(scene, vals, branches) + ("; choose one with signs=..." if branches else ""))
+
+
+def _consistent(scene, vals: NumericValues) -> list:
+    return [b for b in scene.equilibria() if decide(substitute(b.condition, vals), {}) is True]
+
+
+def _why_no_branch(scene, vals: NumericValues, branches: list | None = None) -> str:
+    """Why there is no single equilibrium branch at the values: several consistent, unilateral
+    contacts that lift off (an equilibrium with them open is consistent here), else an impact-type
+    catastrophe."""
+    branches = _consistent(scene, vals) if branches is None else branches
+    if branches:
+        return f"{len(branches)} equilibria are consistent at these values (signs {[b.signs for b in branches]})"
+    lifted = [lift for lift in scene.equilibria().lift_offs if decide(substitute(lift.condition, vals), {}) is True]
+    if lifted:
+        opened = sorted({j + 1 for lift in lifted for j in lift.open})
+        which = (
+            f"contact {opened[0]} lifts off (the loads pull it"
+            if len(opened) == 1
+            else (f"contacts {', '.join(map(str, opened))} lift off (the loads pull them")
         )
-    raise NumericsError(
-        f"{len(branches)} equilibria are consistent at these values (signs {[b.signs for b in branches]}); "
-        "choose one with signs=..."
+        return (
+            f"no equilibrium of the fast subsystem with every contact closed at these values: {which} open; see "
+            "scene.equilibria().lift_offs), so there is no equilibrium in contact to linearize or to follow here; "
+            "choose values where the contacts press."
+        )
+    return (
+        "no equilibrium of the fast subsystem is consistent at these values: an impact-type catastrophe "
+        "(no reduced system exists); simulate the full or fast system to see the reaction grow."
     )
 
 

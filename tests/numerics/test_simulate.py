@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 
 import contactsym as cs
 from contactsym import numerics as nm
+from tests.numerics.brake import brake, brake_values
 
 x, xdot = sp.symbols("x xdot", real=True)
 X, Y = sp.Function("X")(x, xdot), sp.Function("Y")(x, xdot)
@@ -144,6 +145,21 @@ def test_fold_without_root_is_an_impact_type_catastrophe():
     assert fast.status == "impact" and fast.t[-1] < 200
     with pytest.raises(nm.NumericsError, match="impact-type catastrophe"):
         nm.simulate_reduced(rod, fold, (0, 1), {"x_1": 0, "xdot_1": 1})
+    assert "impact-type catastrophe" in nm.fast_cycle(rod, fold).message
+
+
+def test_a_pad_pulled_open_is_named_as_a_lift_off_not_a_catastrophe():
+    """The brake with its load pulling pad 1 away: no equilibrium with both pads closed, because pad 1
+    opens (the fast motion shows it: its reaction falls to 0 and stays there, pad 2 keeps pressing),
+    not because the reaction grows without bound."""
+    values = brake_values(-2.1, -1.0, 1.0, 1.0, F=(2, 4))
+    assert nm.equilibrium_reactions(brake, values) == []
+    fast = nm.simulate_fast(brake, values, (0, 50))
+    assert fast.ok and fast.reactions[0, -1] == 0 and fast.reactions[1, -1] > 0
+    with pytest.raises(nm.NumericsError, match="contact 1 lifts off"):
+        nm.hopf_point(brake, values, "mu")
+    cycle = nm.fast_cycle(brake, values)
+    assert not cycle.converged and "contact 1 lifts off" in cycle.message and "catastrophe" not in cycle.message
 
 
 def test_unique_case_is_not_flagged():
