@@ -220,13 +220,25 @@ def scene_options(name, description, at, presentation, parameters, positive, sol
 def lagrangian_parts(lagrangian, loads, frame) -> None:
     """A finite Lagrangian, loads as (Point or ReferenceFrame, Vector) pairs, and an optional frame."""
     finite_expression(lagrangian, "the Lagrangian")
+    _real_valued(lagrangian, "the Lagrangian")
     for load in _sequence(loads, "loads", "give a list of (Point or ReferenceFrame, Vector) pairs"):
         if not (isinstance(load, (tuple, list)) and len(load) == 2 and isinstance(load[0], (Point, ReferenceFrame))):
             raise SceneError(f"load {shorten(load)} must be a pair (Point or ReferenceFrame, Vector).")
         if not isinstance(load[1], Vector) and load[1] != 0:
             raise SceneError(f"the force or torque of load {shorten(load)} must be a sympy Vector.")
+        for components, _ in getattr(load[1], "args", ()):
+            _real_valued(components, f"load {shorten(load)}")
     if frame is not None and not isinstance(frame, ReferenceFrame):
         raise SceneError(f"frame = {shorten(frame)} must be the inertial ReferenceFrame (or None).")
+
+
+def _real_valued(expr, what: str) -> None:
+    """Mechanics is real: the imaginary unit in a mass, a length or a load is a slip (``sp.I`` for an inertia ``I``)."""
+    if isinstance(expr, sp.Basic) and expr.has(sp.I):
+        raise SceneError(
+            f"{what} contains the imaginary unit I ({shorten(expr)}); masses, lengths and loads are real. For an "
+            "inertia named I use a symbol: sp.Symbol('I', positive=True)."
+        )
 
 
 def _check_accelerations(coordinates: tuple, accelerations) -> tuple:
@@ -238,6 +250,7 @@ def _check_accelerations(coordinates: tuple, accelerations) -> tuple:
     for q, g in zip(coordinates, accelerations):
         if not isinstance(g, (str, sp.Basic, *NUMBER_TYPES)) or isinstance(g, bool):
             raise SceneError(f"the acceleration of {q} must be a SymPy expression, not {type(g).__name__}.")
+        _real_valued(g, f"the acceleration of {q}")
     return accelerations
 
 

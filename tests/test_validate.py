@@ -80,6 +80,8 @@ SCENE_CASES = [
     ("Lagrangian of text", lambda: _lagrangian("x"), ContactsymError, "is text"),
     ("Lagrangian with nan", lambda: _lagrangian(sp.nan * x.diff() ** 2), SceneError, "not a number"),
     ("loads=[1, 2]", lambda: _lagrangian(loads=[1, 2]), SceneError, "must be a pair"),
+    ("a mass I (the imaginary unit)", lambda: _lagrangian(sp.I * LAGRANGIAN), SceneError, "imaginary unit I"),
+    ("an acceleration with I", lambda: _scene([X, N + sp.I * Y]), SceneError, "imaginary unit I"),
     ("loads=None", lambda: _lagrangian(loads=None), SceneError, "loads must be a list"),
     ("frame=3", lambda: _lagrangian(frame=3), SceneError, "inertial ReferenceFrame"),
     ("scene(None)", lambda: cs.scene(None), SceneError, "must be text"),
