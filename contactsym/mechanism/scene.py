@@ -26,6 +26,7 @@ from .contact import Contact, contact_manifold, frozen_symbol, plain_symbol
 from .contact_space import contact_space, mass_determinant, t
 from .equation_numbers import NUMBERS, paper_equations
 from .fixed_values import checked_values, substituted
+from .friction_geometry import check_friction_geometry
 from .scene_stages import SceneStages
 
 __all__ = ["Contact", "Scene", "paper_equations", "plain_symbol", "t"]
@@ -221,13 +222,17 @@ class Scene(SceneStages, LatexReprMixin):
     def from_lagrangian(cls, lagrangian, coordinates, contacts, loads=(), frame=None, **options) -> Scene:
         """A scene from a Lagrangian, via ``sympy.physics.mechanics.LagrangesMethod``.
 
-        See :func:`contactsym.mechanism.contact_space.lagrangian_accelerations`.
+        See :func:`contactsym.mechanism.contact_space.lagrangian_accelerations`. Friction at a point
+        is refused unless its direction is a unit vector and, in the plane, the gap is the distance
+        of the point from its surface (:func:`contactsym.mechanism.friction_geometry.check_friction_geometry`).
         """
         coordinates, _, contacts = scene_parts(coordinates, None, contacts, derived=True)
         lagrangian = sympy_only(lagrangian, "the Lagrangian")
         lagrangian_parts(lagrangian, loads, frame)
         space = contact_space(lagrangian, coordinates, contacts, loads, frame)
-        return cls(coordinates, None, contacts, contact_space=space, **options)
+        scene = cls(coordinates, None, contacts, contact_space=space, **options)
+        check_friction_geometry(scene, frame)  # a unit direction, a gap that is the distance
+        return scene
 
     @cached_property
     def positive_expressions(self) -> tuple:

@@ -12,16 +12,24 @@ import sympy as sp
 from sympy.physics.mechanics import Lagrangian, Particle, Point, ReferenceFrame, RigidBody, inertia
 
 from ...algebra.basic import known_sign
+from ..contact_space import t
+from ..friction_geometry import vanishes
 from .contacts import COMPLIANCE_LAWS  # noqa: F401  (0.1's path of the table of laws)
 from .declarations import FormulaReader
+from .space import printed
 from .spec import BodySpec, LoadSpec, MassSpec, PointSpec, SceneSpec, removed_mixin
 from .toml_source import SceneFileError
 
-__all__ = ["Plane", "inertia_proved", "read_motion", "read_points"]
+__all__ = ["Plane", "inertia_proved", "read_motion", "read_points", "turning_problem"]
 
 
-def read_points(reader: FormulaReader) -> tuple[PointSpec, ...]:
-    """``[points]``: ``P = [x, y]`` or ``P = {position = [x, y], body = "C", angle = "theta"}``."""
+def read_points(reader: FormulaReader, positive=()) -> tuple[PointSpec, ...]:
+    """``[points]``: ``P = [x, y]`` or ``P = {position = [x, y], body = "C", angle = "theta"}``.
+
+    A material point takes its velocity from the body turning counter-clockwise by ``angle`` about
+    the point ``body``; its position must turn so too (:func:`turning_problem`, on the domain where
+    the expressions ``positive`` are positive), or the file is refused with the fix.
+    """
     points: dict[str, PointSpec] = {}
     for name, entry in reader.section("points").items():
         body = angle = None
@@ -40,8 +48,56 @@ def read_points(reader: FormulaReader) -> tuple[PointSpec, ...]:
                 reader.doc.fail("points", name, "a material point needs both body = ... and angle = ...")
             entry = entry["position"]
         position = reader.pair(entry, "points", name)
+        if body is not None:
+            problem = turning_problem(name, position, points[body].position, angle, body, positive)
+            if problem:
+                reader.doc.fail("points", name, problem)
         points[name] = PointSpec(name, position, body, angle, reader.doc.line("points", name))
     return tuple(points.values())
+
+
+def turning_problem(name: str, position, base, angle, body: str = "C", positive=()) -> str | None:
+    """Why a point at ``position`` (x, y) does not move with the body turning counter-clockwise by
+    ``angle`` about its point at ``base`` (and the fix), or None.
+
+    The velocity a file gives the material point is that body's, v_C + angle' z x (P - C). A point
+    fixed in the body moves so: d/dt (P - C) = angle' z x (P - C). A spot at a fixed offset from C
+    (d/dt (P - C) = 0, as the brake's pads: the material point of the disc passing through it) is
+    accepted too; any other offset is refused. Checked exactly where possible, otherwise at random
+    points of the domain (:func:`contactsym.mechanism.friction_geometry.vanishes`).
+
+    Examples
+    --------
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> x, theta = dynamicsymbols("x theta")
+    >>> l = sp.Symbol("l", positive=True)
+    >>> turning_problem("A", (x + l*sp.cos(theta), l*sp.sin(theta)), (x, 0), theta) is None
+    True
+    >>> print(turning_problem("A", (x + l*sp.cos(theta), -l*sp.sin(theta)), (x, 0), theta))
+    ... # doctest: +ELLIPSIS
+    the rate of the position of A is not the velocity of the body turning counter-clockwise by theta ...
+    """
+    offset = [sp.sympify(p) - b for p, b in zip(position, base)]
+
+    def turns(rate) -> bool:
+        turned = (-rate * offset[1], rate * offset[0])  # rate z x (P - C)
+        return all(vanishes(sp.diff(o, t) - v, positive) for o, v in zip(offset, turned))
+
+    rate = sp.diff(angle, t)
+    if turns(rate) or turns(sp.S.Zero):  # fixed in the body, or a spot fixed relative to C
+        return None
+    plain = f"or give {name} as a plain position [x, y] (its velocity is then the rate of its position)"
+    if rate != 0 and turns(-rate):
+        fix = f'it turns clockwise as {printed(angle)} grows: write angle = "{printed(-angle)}", {plain}'
+    else:
+        fix = (
+            f"its offset from {body} moves, but not as a point fixed in that body: give the angle the body "
+            f"turns by, {plain}"
+        )
+    return (
+        f"the rate of the position of {name} is not the velocity of the body turning counter-clockwise by "
+        f"{printed(angle)} about {body} (angles in the plane count counter-clockwise); {fix}"
+    )
 
 
 def read_masses(reader: FormulaReader, known) -> list[MassSpec]:

@@ -71,4 +71,8 @@ def build_scene(spec: SceneSpec) -> Scene:
     except (SceneFileError, ParseError):
         raise
     except ContactsymError as error:  # the API's own message, from the file
+        if getattr(error, "contact", None) is not None:  # about one contact: placed at its gap or friction
+            contact = spec.contacts[error.contact]
+            line = contact.gap_line if error.key == "gap" and contact.gap_line else contact.friction.line
+            raise SceneFileError(f"{spec.source}:{line}: {str(error).rstrip('.')}.") from None
         raise type(error)(f"{spec.source}: {error}") from None

@@ -19,6 +19,7 @@ from ...errors import ContactsymError
 from ...laws import Coulomb, Generic, KelvinVoigt, Law, Viscous
 from ...parse import ParseError
 from ..contact import Contact
+from ..friction_geometry import unit_vector_problem
 from .declarations import FormulaReader
 from .spec import ContactSpec, FrictionSpec, LawSpec, removed_mixin
 from .toml_source import SceneFileError, shown
@@ -122,7 +123,7 @@ def _gap(reader: FormulaReader, entry: dict, where: str, coordinates, lagrangian
     return gap
 
 
-def _friction(reader: FormulaReader, entry, where: str, lagrangian: bool, points) -> FrictionSpec:
+def _friction(reader: FormulaReader, entry, where: str, lagrangian: bool, points, positive) -> FrictionSpec:
     if not isinstance(entry, dict):
         reader.doc.fail(where, "friction", "friction must be a table {mu = ..., direction = ...}")
     reader.checked(entry, f"{where}.friction", "contacts.friction")
@@ -141,11 +142,23 @@ def _friction(reader: FormulaReader, entry, where: str, lagrangian: bool, points
         return FrictionSpec(kind, coefficient, pairs, None, line)
     if entry.get("point") not in points:
         reader.doc.fail(where, "friction", f"friction needs point = one of the [points] {sorted(points)}")
-    return FrictionSpec(kind, coefficient, reader.pair(direction, where, "friction"), entry["point"], line)
+    direction = reader.pair(direction, where, "friction")
+    problem = unit_vector_problem(direction, positive, "the friction direction")
+    if problem:
+        reader.doc.fail(where, "friction", problem)
+    return FrictionSpec(kind, coefficient, direction, entry["point"], line)
 
 
-def read_contacts(reader: FormulaReader, coordinates, lagrangian: bool, points, eps) -> tuple[ContactSpec, ...]:
-    """The ``[[contacts]]``: each declares its reaction's name; ``points`` are the names of [points]."""
+def read_contacts(
+    reader: FormulaReader, coordinates, lagrangian: bool, points, eps, positive=()
+) -> tuple[ContactSpec, ...]:
+    """The ``[[contacts]]``: each declares its reaction's name; ``points`` are the names of [points].
+
+    A friction direction in the plane must be a unit vector (``positive``: the expressions declared
+    positive, the domain where that is checked); whether the gap is the distance of the friction's
+    point from its surface is checked when the scene is built
+    (:func:`contactsym.mechanism.friction_geometry.check_friction_geometry`).
+    """
     contacts = []
     for index, entry in enumerate(reader.section("contacts", required=True, kind=list)):
         where = f"contacts.{index}"
@@ -158,10 +171,12 @@ def read_contacts(reader: FormulaReader, coordinates, lagrangian: bool, points, 
         unilateral = entry.get("unilateral", False)
         if not isinstance(unilateral, bool):
             reader.doc.fail(where, "unilateral", "unilateral must be true or false")
-        friction = _friction(reader, entry["friction"], where, lagrangian, points) if "friction" in entry else None
+        friction = None
+        if "friction" in entry:
+            friction = _friction(reader, entry["friction"], where, lagrangian, points, positive)
         law = _law(reader, entry.get("law", "generic"), where, eps)
-        line = reader.doc.line(where, "law")
-        contacts.append(ContactSpec(gap, reader.names[name], unilateral, law, friction, line))
+        line, gap_line = reader.doc.line(where, "law"), reader.doc.line(where, "gap")
+        contacts.append(ContactSpec(gap, reader.names[name], unilateral, law, friction, line, gap_line))
     if not contacts:
         reader.doc.fail("", None, "no [[contacts]]; add one with gap = ... and reaction = ...")
     return tuple(contacts)

@@ -25,7 +25,7 @@ The motion
     Either ``[accelerations]`` (``x = "formula"`` per coordinate, x'' = formula), or a
     Lagrangian from any of ``[energy]`` (``kinetic``, ``potential``); ``[points]`` (``P = ["x", "y - r"]``, its
     position in the plane, or ``P = {position = [...], body = "C", angle = "theta"}`` for
-    the material point at P of a body turning with ``theta`` about point C);
+    the material point at P of a body turning counter-clockwise by ``theta`` about point C);
     ``[[masses]]`` (``point``, ``mass``); ``[[bodies]]`` (``point``, ``angle``, ``mass``,
     ``inertia``); ``[[loads]]`` (``point`` and ``force = [Fx, Fy]``, or ``angle`` and
     ``moment``).
@@ -195,12 +195,12 @@ def read_spec(
         used = next(t for t in _LAGRANGIAN_TABLES if t in doc.data)
         doc.fail(used, None, f"[{used}] is for a Lagrangian, but the file gives [accelerations]; remove one of them")
     spatial = _dimensions(doc, head, lagrangian) == 3
-    points = read_points(reader) if lagrangian and not spatial else ()
+    points = read_points(reader, positive) if lagrangian and not spatial else ()
     eps = SceneSpec.eps
     if spatial:
         space, contacts, energy = read_space(reader, coordinates, eps)
     else:
-        contacts = read_contacts(reader, coordinates, lagrangian, [p.name for p in points], eps)
+        contacts = read_contacts(reader, coordinates, lagrangian, [p.name for p in points], eps, positive)
     solve_for = reader.formula(head["solve_for"], "scene", "solve_for") if "solve_for" in head else None
     if solve_for is not None and not isinstance(solve_for, sp.Symbol):
         doc.fail("scene", "solve_for", f"solve_for = {shown(head['solve_for'])} must name a parameter")

@@ -36,6 +36,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from ..friction_geometry import unit_vector_problem
 from .bodies import read_masses
 from .contacts import _law
 from .declarations import _NAME, FormulaReader
@@ -190,10 +191,9 @@ def _contacts(reader: FormulaReader, space, coordinates, eps) -> tuple[ContactSp
                     "the plane of a contact is fixed: its normal and distance are "
                     "formulas in the parameters, not the coordinates",
                 )
-            if not is_identity(sum(n**2 for n in normal), 1):
-                reader.doc.fail(
-                    where, "gap", f"the normal {list(normal)} is not a unit vector; divide it by its length"
-                )
+            problem = unit_vector_problem(normal, what="the normal")
+            if problem:
+                reader.doc.fail(where, "gap", problem)
             gap = space.height(point, normal) - distance
         else:
             gap = reader.formula(entry["gap"], where, "gap")
@@ -241,10 +241,9 @@ def _friction(reader: FormulaReader, entry, where: str, point, normal) -> Fricti
             "the sliding direction is frozen in the fast time: write it in the "
             "coordinates and parameters (e.g. an angle parameter), not the rates",
         )
-    if not is_identity(sum(d**2 for d in direction), 1):
-        reader.doc.fail(
-            where, "friction", f"the direction {_shown(direction)} is not a unit vector; divide it by its length"
-        )
+    problem = unit_vector_problem(direction, what="the friction direction")
+    if problem:
+        reader.doc.fail(where, "friction", problem)
     if not is_identity(sum(d * n for d, n in zip(direction, normal)), 0):
         reader.doc.fail(
             where,

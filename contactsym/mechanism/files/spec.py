@@ -189,6 +189,7 @@ class ContactSpec:
     law: LawSpec
     friction: FrictionSpec | None
     line: int  # of the law, where the law's own checks are reported
+    gap_line: int = 0  # of the gap, where a gap that is not the distance is reported (0: the law's line)
 
 
 @checked

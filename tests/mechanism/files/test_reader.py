@@ -200,8 +200,9 @@ def _direct_point_on_line(a: int, b: int, c: int):
     origin.set_vel(frame, 0)
     point = origin.locatenew("P", x * frame.x + y * frame.y)
     point.set_vel(frame, x.diff() * frame.x + y.diff() * frame.y)
-    friction = cs.Coulomb(mu, c * (b * frame.x - a * frame.y), point)
-    contact = cs.Contact(a * x + b * y, N, cs.KelvinVoigt(1, 2), friction, unilateral=False)
+    length = sp.sqrt(a**2 + b**2)  # a unit direction along the line, a gap that is the distance from it
+    friction = cs.Coulomb(mu, c * (b * frame.x - a * frame.y) / length, point)
+    contact = cs.Contact((a * x + b * y) / length, N, cs.KelvinVoigt(1, 2), friction, unilateral=False)
     L = Lagrangian(frame, Particle("P", point, m))
     return cs.Scene.from_lagrangian(L, [x, y], [contact], loads=[(point, X * frame.x + Y * frame.y)], frame=frame)
 
@@ -225,10 +226,10 @@ mass = "m"
 point = "P"
 force = ["X", "Y"]
 [[contacts]]
-gap = "{a}*x + {b}*y"
+gap = "({a}*x + {b}*y)/sqrt({a * a + b * b})"
 reaction = "N"
 law = {{ name = "kelvin-voigt", stiffness = 1, damping = 2 }}
-friction = {{ mu = "mu", point = "P", direction = ["{c * b}", "{-c * a}"] }}
+friction = {{ mu = "mu", point = "P", direction = ["{c * b}/sqrt({a * a + b * b})", "{-c * a}/sqrt({a * a + b * b})"] }}
 """
     from_file, direct = read_scene(text, "line.toml"), _direct_point_on_line(a, b, c)
     assert from_file.accelerations == direct.accelerations  # the rest of the pipeline follows from these
