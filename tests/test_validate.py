@@ -160,6 +160,29 @@ def test_bad_simulation_options_are_rejected(sliding, options, words):
         nm.simulate_full(s, values, 1e-3, (0, 1), initial, **options)
 
 
+BRAKE = {"m": 1, "mu": 1, "alpha": 1.5707963267948966, "F_x": 2, "F_y": -4}
+BRAKE_LAW = {"Phi_1": -2.1, "Phi_2": -2.1, "Psi_1": -1, "Psi_2": -1}
+
+
+@pytest.mark.parametrize(
+    "call, words",
+    [
+        (lambda b: nm.fast_cycle(b, BRAKE | BRAKE_LAW, tol=-1), "tol = -1.0 must be > 0"),
+        (lambda b: nm.fast_cycle(b, BRAKE | BRAKE_LAW, rtol=0), "rtol = 0.0 must be > 0"),
+        (lambda b: nm.fast_cycle(b, BRAKE | BRAKE_LAW, periods=0), "whole number from 1"),
+        (lambda b: nm.fast_cycle(b, BRAKE | BRAKE_LAW, samples=1), "whole number from 2"),
+        (lambda b: nm.simulate_fast(b, BRAKE | BRAKE_LAW, (0, 1), [0, 0, 0]), r"3 values; .*\['Q_1'"),
+        (lambda b: nm.hopf_point(b, BRAKE | BRAKE_LAW, "nu"), "'nu' is not a parameter of 'brake'"),
+        (lambda b: nm.hopf_point(b, BRAKE | BRAKE_LAW, "mu", bracket=(0.5, 0.9)), "no Hopf crossing is bracketed"),
+        (lambda b: nm.hopf_point(b, BRAKE | BRAKE_LAW, "mu", bracket=(1.2, 0.9)), "low < high"),
+    ],
+)
+def test_bad_numerics_options_are_named_before_any_integration(call, words):
+    """Each a ContactsymError with the option named (no numpy broadcast error, no scipy ValueError)."""
+    with pytest.raises(ContactsymError, match=words):
+        call(cs.scene("brake"))
+
+
 def test_complex_initial_state_is_rejected_not_cut():
     values = {"phi": 0.7, "mu_1": 0.3, "mu_2": 0.2, "X_1": 0, "X_2": 1, "Y_1": 0, "Y_2": 0, "Phi": -1, "Psi": -1}
     fs = nm.fast_system(cs.scene("painleve-klein-rod"), values)

@@ -8,14 +8,24 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..arguments import checked
+from ..arguments import between, checked
 from ..errors import NumericsError
 from ..mechanism.scene import t as _time
 from .codegen import lambdify_cse
 from .fastsystem import FastProblem
 from .integration import Simulation, integrate
 from .systems import OdeSystem, _coordinates, _free_coordinates, _manifold_parameters
-from .values import NumericValues, _check_free, _check_span, _evaluate, _state_values, _with, numeric_values, substitute
+from .values import (
+    NumericValues,
+    _check_free,
+    _check_span,
+    _evaluate,
+    _positive,
+    _state_values,
+    _with,
+    numeric_values,
+    substitute,
+)
 
 
 @checked(nan=True)
@@ -80,7 +90,7 @@ def _no_cycle(system: OdeSystem, message: str) -> Cycle:
     )
 
 
-@checked(scene="Scene", unilateral="bool | None")
+@checked(scene="Scene", unilateral="bool | None", periods=between(1, 10**7), samples=between(2, 10**8))
 def fast_cycle(
     scene,
     values: Mapping | None,
@@ -117,6 +127,8 @@ def fast_cycle(
     >>> cycle.converged, cycle.contact_loss, round(cycle.period, 3)
     (True, True, 4.901)
     """
+    tol = _positive(tol, "tol", "successive returns to the section must agree to a positive tolerance")
+    rtol = _positive(rtol, "rtol", "it is the integrator's relative tolerance")
     problem = FastProblem.at(scene, values, laws=laws, unilateral=unilateral, form=form)
     system, N_scale = problem.system, problem.reaction_scale
     k = scene.k

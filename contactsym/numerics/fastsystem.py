@@ -296,6 +296,11 @@ def simulate_fast(
         z0 = np.array([given.get(name, 0.0) for name in system.names], dtype=float)
     else:
         z0 = np.asarray([float(_number(v, "initial")) for v in np.ravel(initial)], dtype=float)
+        if z0.size != len(system.names):
+            raise NumericsError(
+                f"initial has {z0.size} values; the fast subsystem's state is {list(system.names)} "
+                f"({len(system.names)} values, in this order), or give a mapping by name."
+            )
     if atol is None:
         reference = z0 if problem.u_star is None else problem.state_at(problem.u_star)
         atol = rtol * np.maximum(np.abs(z0), problem.scales(reference))

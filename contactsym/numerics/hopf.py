@@ -272,6 +272,9 @@ def hopf_point(
     vals = numeric_values(scene, values)
     key = next((p for p in vals.numbers if p == parameter or str(p) == str(parameter)), None)
     if key is None:
+        known = sorted(str(p) for p in scene.parameters)
+        if str(parameter) not in known:
+            raise NumericsError(f"{shorten(parameter)} is not a parameter of '{scene.name}'; its parameters: {known}.")
         raise NumericsError(f"give a starting value for the parameter {shorten(parameter)} in values.")
     start = float(vals.numbers[key])
 
@@ -284,8 +287,7 @@ def hopf_point(
             raise HopfError(f"at {key} = {p:g} the fast subsystem has no oscillatory pair.")
         return float(complex_pairs.real.max())
 
-    if bracket is None:
-        bracket = _widen(alpha, start)
+    bracket = _widen(alpha, start) if bracket is None else _bracket(alpha, bracket, key)
     p_star = brentq(alpha, *bracket, xtol=1e-15 * max(abs(start), 1.0), rtol=1e-15)
     h = 1e-6 * max(abs(p_star), 1e-8)
     slope = (alpha(p_star + h) - alpha(p_star - h)) / (2 * h)
@@ -293,6 +295,24 @@ def hopf_point(
     u_star, J, H, T, dN, z = _at_point(FastProblem(scene, point, laws, signs=signs))
     vectors = first_lyapunov_from_derivatives(J, H, T, tol=1e-6)
     return _coefficient(vectors, u_star, dN, state=z, parameter=key, value=p_star, dalpha=slope)
+
+
+def _bracket(alpha, bracket, key) -> tuple[float, float]:
+    """A given bracket, checked: two finite numbers, low < high, Re lambda of the critical pair changing sign."""
+    try:
+        low, high = (float(b) for b in bracket)
+    except (TypeError, ValueError):
+        raise NumericsError(f"bracket = {shorten(bracket)}; give two numbers (low, high).") from None
+    if not (np.isfinite(low) and np.isfinite(high) and low < high):
+        raise NumericsError(f"bracket = {shorten(bracket)}; give two finite numbers with low < high.")
+    at_low, at_high = alpha(low), alpha(high)
+    if at_low * at_high > 0:
+        raise HopfError(
+            f"Re lambda of the critical pair is {at_low:.3g} at {key} = {low:g} and {at_high:.3g} at {key} = {high:g}: "
+            "the same sign, so no Hopf crossing is bracketed; widen the bracket or leave it out (the start value "
+            "is widened around)."
+        )
+    return low, high
 
 
 def _widen(alpha, start: float) -> tuple[float, float]:
