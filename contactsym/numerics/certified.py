@@ -318,6 +318,7 @@ def classify(scene_or_stability, values: Mapping, *, signs=None, band: float = 1
         st = scene.stability(signs)
     vals = numeric_values(scene, values)
     numbers = vals.numbers
+    _inside_the_domain(scene, numbers)
     results = [certified_sign(substitute(c, NumericValues({}, vals.functions)), numbers, band=band) for c in st.hurwitz]
     condition_signs = tuple(s for s, _ in results)
     stable = 1 if all(s > 0 for s in condition_signs) else (-1 if any(s < 0 for s in condition_signs) else 0)
@@ -335,3 +336,20 @@ def classify(scene_or_stability, values: Mapping, *, signs=None, band: float = 1
     except NumericsError:
         region = None
     return Classification(stable, condition_signs, tuple(x for _, x in results), region)
+
+
+def _inside_the_domain(scene, numbers: Mapping) -> None:
+    """Refuse a point outside the scene's declared domain (its positive expressions, e.g. cos(theta) > 0
+    for 0 < theta < pi/2): the regions are derived and printed for that domain (divided by such
+    expressions, say), so a verdict outside it would contradict them. An expression whose symbols are
+    not all given is not checked here."""
+    for expr in scene.declared_positive:
+        if not expr.free_symbols <= set(numbers):
+            continue
+        sign, _ = certified_sign(expr, numbers)
+        if sign <= 0:
+            given = ", ".join(f"{s} = {float(numbers[s]):.6g}" for s in sorted(expr.free_symbols, key=str))
+            raise NumericsError(
+                f"{given} lies outside the domain of '{scene.name}': it declares {expr} > 0 (its intervals or "
+                "positive=), and its conditions are derived and stated for that domain; choose values inside it."
+            )

@@ -4,6 +4,7 @@ import math
 from fractions import Fraction
 
 import numpy as np
+import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -95,3 +96,24 @@ def test_classify_reports_the_region_of_every_law():
     values = {"alpha": 0.5, "m": 1, "mu": 0.5, "Phi_1": -1, "Phi_2": -2, "Psi_1": -1, "Psi_2": -1}
     assert nm.classify(brake, values).region == "robustly stable"  # mu < cot(alpha), (6.3)
     assert nm.classify(brake, {**values, "mu": 3}).region == "law-dependent"
+
+
+@settings(max_examples=30, deadline=None)
+@given(theta=st.floats(-3.1, 3.1), beta=st.floats(-3.1, 3.1), friction=st.floats(0.05, 3.0))
+def test_a_point_outside_the_declared_domain_gets_no_verdict(theta, beta, friction):
+    """The spatial rod declares 0 < theta, beta < pi/2 (sin, cos > 0), and its printed regions divide
+    by sin(theta) cos(beta) cos(theta): outside the domain classify refuses the point (it once gave
+    'robustly stable' where the printed region said False); inside, its verdict is the printed region's."""
+    import contactsym as cs
+
+    rod = cs.scene("painleve-rod-3d")
+    values = {"m": 1.0, "mu": friction, "beta": beta, "theta": theta, "Phi": -1.0, "Psi": -1.0}
+    inside = min(math.sin(theta), math.cos(theta), math.sin(beta), math.cos(beta)) > 0  # checked with math
+    if not inside:
+        with pytest.raises(nm.NumericsError, match="outside the domain of 'painleve-rod-3d'|declared positive"):
+            nm.classify(rod, values)
+        return
+    region = rod.regions()["stable for every law"]
+    point = {s: values[str(s)] for s in region.condition.free_symbols}
+    printed = bool(region.condition.subs(point))
+    assert (nm.classify(rod, values).region == "robustly stable") == printed
