@@ -2,15 +2,20 @@
 
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 import contactsym as cs
 from contactsym.cli import main, parse_signs
+from contactsym.command_line.output import derivation_chain
+from tests.report.test_derivation import NEUTRAL, block
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -248,3 +253,36 @@ def test_set_fixes_parameters_before_the_derivation(capsys):
 def test_a_bad_set_is_a_usage_error(capsys, setting, message):
     code, _, err = run(capsys, "conditions", "brake", "--set", setting)
     assert code == 2 and message in err
+
+
+def test_set_takes_exact_constants_and_reduces_the_circle(capsys):
+    """--set alpha=pi/2 is pi/2 (the package's parser reads it; no eval); a float's sin^2 + cos^2 reads 1."""
+    code, out, err = run(capsys, "conditions", "brake", "--set", "alpha=pi/2")
+    assert code == 0, err
+    assert "(fixed: alpha = pi/2)" in out and "sin(" not in out and "cos(" not in out
+    code, out, err = run(capsys, "conditions", "brake", "--set", "alpha=0.7853981633974483")
+    assert code == 0, err
+    hopf = next(line for line in out.splitlines() if line.startswith("Hopf frequency"))
+    assert "sin(7853981633974483/10000000000000000)" in hopf and "cos(" not in hopf
+    code, out, err = run(capsys, "conditions", "brake", "--set", "alpha=pi/7", "--format", "latex")
+    assert code == 0 and r"\cos^{2}{\left(\frac{\pi}{7} \right)}" not in out
+
+
+OWN_WORDS = ["lambda", "lambda_", "tau", "t", "eps", "epsilon", "u", "A", "f", "omega"]
+
+
+def _words(text: str) -> list[str]:
+    return re.findall(r"[A-Za-z_][A-Za-z_0-9]*", text)
+
+
+@settings(max_examples=10, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(st.lists(st.sampled_from(OWN_WORDS), min_size=1, max_size=3, unique=True))
+def test_show_never_prints_a_scene_name_for_the_packages_own(tmp_path_factory, names):
+    """`show` of a scene whose parameters take the package's own names (t, eps, lambda, ...): each name occurs
+    exactly as often as a neutral stand-in does in the same scene, so no occurrence is the package's."""
+    folder = tmp_path_factory.mktemp("names")
+    (folder / "drawn.toml").write_text(block(names))
+    (folder / "neutral.toml").write_text(block(NEUTRAL[: len(names)]))
+    drawn, neutral = (_words(derivation_chain(str(folder / f))) for f in ("drawn.toml", "neutral.toml"))
+    for name, stand_in in zip(names, NEUTRAL):
+        assert drawn.count(name) == neutral.count(stand_in) > 0, (name, names)

@@ -46,8 +46,9 @@ __all__ = ["TrigField", "TrigFraction", "present_factor", "to_fraction"]
 
 
 def _is_angle(x: sp.Expr) -> bool:
-    """A symbol or a coordinate q(t): what sin and cos are taken of."""
-    return x.is_Symbol or isinstance(x, AppliedUndef)
+    """A symbol, a coordinate q(t), or a real number SymPy leaves inside sin and cos (``pi/7``, a
+    parameter fixed at ``157/200``): what sin and cos are taken of, tied by sin^2 + cos^2 = 1."""
+    return x.is_Symbol or isinstance(x, AppliedUndef) or (x.is_number and x.is_real is True)
 
 
 def _integer_combination(arg: sp.Expr) -> bool:

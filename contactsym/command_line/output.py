@@ -13,6 +13,7 @@ import sympy as sp
 
 from ..mechanism.files.reader import scene_or_file
 from ..mechanism.scene import Scene
+from ..report.plain_text import own_letters
 
 __all__ = ["conditions_latex", "conditions_text", "derivation_chain"]
 
@@ -29,17 +30,20 @@ def derivation_chain(name) -> str:
     fast = s.fast_subsystem()
     lin = s.linearization()
     st = s.stability()
+    letters = own_letters(s)  # the package's t, eps, A, omega apart from the scene's own names
+    eps = "eps" if letters.text("eps") == "eps" else str(s.eps)
+    u, A = fast.u[0].name.partition("_")[0], letters.text("A")
     lines = [f"scene {s.name}: {s.description}", "", "accelerations (1.4):"]
     lines += [f"  {s.plain(q)}'' = {s.plain(g)}" for q, g in s.accelerations.items()]
-    lines += ["", "fast subsystem (2.1), tau = t/eps:"]
+    lines += ["", f"fast subsystem (2.1), {s.regularized().tau} = {letters.text('t')}/{eps}:"]
     lines += [f"  {eq.lhs} = {eq.rhs}" for eq in fast.equations]
-    lines += ["", "equilibria f(u*) = 0 (4.2):"]
+    lines += ["", f"equilibria {letters.text('f')}({u}*) = 0 (4.2):"]
     for branch in s.equilibria():
-        lines.append(f"  signs {branch.signs}: u* = {branch.u_star}, exists where {branch.condition}")
+        lines.append(f"  signs {branch.signs}: {u}* = {branch.u_star}, exists where {branch.condition}")
     lines += [
         "",
-        f"A (4.3) = {lin.A.tolist()}",
-        f"det A = {lin.det_A}",
+        f"{A} (4.3) = {lin.A.tolist()}",
+        f"det {A} = {lin.det_A}",
         f"characteristic polynomial (4.6): {lin.charpoly.as_expr()}",
         "",
         "Hurwitz conditions (4.7), all > 0:",
@@ -55,7 +59,7 @@ def derivation_chain(name) -> str:
     if st.k >= 3 and st.A.free_symbols and st.undecided != sp.false:
         lines.append(f"  undecided where {st.undecided}")
     if st.hopf_frequency is not None:
-        lines.append(f"Hopf frequency omega (stretched time) = {st.hopf_frequency}")
+        lines.append(f"Hopf frequency {letters.text('omega')} (stretched time) = {st.hopf_frequency}")
     return "\n".join(lines)
 
 
@@ -84,8 +88,10 @@ def conditions_text(data: dict) -> str:
         lines.append(
             f"  {name} > 0 always: {entry['always']}" if entry.get("always") else f"  {name} = {entry['sympy']}"
         )
-    if data.get("hopf_frequency"):
-        lines.append(f"Hopf frequency omega (stretched time tau) = {data['hopf_frequency']['sympy']}")
+    hopf = data.get("hopf_frequency")
+    if hopf:
+        name, time = hopf.get("name", "omega"), hopf.get("time", "tau")
+        lines.append(f"Hopf frequency {name} (stretched time {time}) = {hopf['sympy']}")
     return "\n".join(lines)
 
 
@@ -108,7 +114,8 @@ def conditions_latex(data: dict) -> str:
     for entry in data["hurwitz"]:
         rows.append((None, {**entry, "latex": f"{entry['name']} = {entry['latex']}"}))
     if data.get("hopf_frequency"):
-        rows.append((None, {**data["hopf_frequency"], "latex": r"\omega = " + data["hopf_frequency"]["latex"]}))
+        hopf = data["hopf_frequency"]
+        rows.append((None, {**hopf, "latex": hopf.get("name_latex", r"\omega") + " = " + hopf["latex"]}))
     body = []
     for name, entry in rows:
         label = r"\text{" + name.replace("_", r"\_") + r":} " if name else ""

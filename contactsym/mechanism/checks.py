@@ -15,6 +15,7 @@ from ..algebra.basic import PaperSymbol
 from ..arguments import checked
 from ..errors import SceneError
 from ..parse import sympy_only
+from ..printing.glyphs import look_alike
 from ..validate import finite_expression, positive_parameter, reactions_act, shorten
 from .admissibility import check_delassus, check_inertia, frictionless_part
 from .contact import plain_symbol
@@ -189,7 +190,9 @@ def check_scene(scene, parameters) -> None:
 
 
 def user_names(scene) -> frozenset:
-    """The names of the symbols the user gave a scene (parameters, reactions, coordinates and their rates)."""
+    """The names of the symbols the user gave a scene (parameters, reactions, coordinates and their rates),
+    each also in the spelling of its glyph (``lambda_`` prints as ``lambda``: :func:`~contactsym.printing.look_alike`),
+    the time of the coordinates q(t) apart (a user's own ``t`` is a different symbol and counts)."""
     if scene.contact_space is not None:
         space = scene.contact_space
         stated = [*space.M, *space.F, *space.W] + [x for term in space.friction if term for x in (*term[0], term[1])]
@@ -198,7 +201,7 @@ def user_names(scene) -> frozenset:
     stated += [*scene.gaps, *scene.reactions, *scene.at, *scene.at.values(), *scene.declared_parameters]
     for contact in scene.contacts:
         stated += [*contact.compliance.parameters()]
-    names = {str(s) for x in stated for s in sp.sympify(x).free_symbols}
+    names = {str(s) for x in stated for s in sp.sympify(x).free_symbols if s != t}
     for q in scene.coordinates:
         names |= {str(plain_symbol(q)), str(plain_symbol(q, "dot"))}
-    return frozenset(names)
+    return frozenset(names | {look_alike(name) for name in names})

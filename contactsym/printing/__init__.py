@@ -2,6 +2,7 @@
 and plain text with Unicode mathematics as LaTeX. Imports no stage.
 """
 
+from .glyphs import OwnLetters, look_alike, spelled_apart
 from .latex_output import Formula, LatexReprMixin, Numbering, formulas, latex, prime, signs_latex, tex
 from .unicode_math import text_to_latex
 
@@ -9,10 +10,13 @@ __all__ = [
     "Formula",
     "LatexReprMixin",
     "Numbering",
+    "OwnLetters",
     "formulas",
     "latex",
+    "look_alike",
     "prime",
     "signs_latex",
+    "spelled_apart",
     "tex",
     "text_to_latex",
 ]

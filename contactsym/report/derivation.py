@@ -19,9 +19,10 @@ import sympy as sp
 
 from ..errors import ContactsymError
 from ..mechanism.equation_numbers import paper_equations
+from ..printing.glyphs import spelled_apart
 from ..printing.latex_output import Formula, formulas, tex
 from ..stages.stability import generic_minors, hurwitz_names, robustness_formulas
-from .plain_text import _escape
+from .plain_text import _escape, own_letters
 from .summary import conditions
 from .typesetting import WIDTH, _display, _Named, _tidy, width
 
@@ -33,6 +34,7 @@ def _section(title: str, intro: str = "") -> str:
 
 
 def _chain(scene, named: _Named) -> list[str]:
+    letters = own_letters(scene)
     parts = []
     parts.append(
         _section(
@@ -43,22 +45,27 @@ def _chain(scene, named: _Named) -> list[str]:
     parts += [_display(f, named) for f in formulas(scene)]
 
     reg = scene.regularized()
+    fast = scene.fast_subsystem()
+    eps, q = tex(scene.eps), letters.index("q", "j")
+    dq = r"\dot q_j" if q == "q_j" else r"\dot{" + q[: -len("_j")] + "}_j"  # as before where q is free
+    N = own_letters(scene, reactions=False).index("N", "j")
+    x, X, y, Y = (letters.tex(letter) for letter in ("x", "X", "y", "Y"))
     parts.append(
         _section(
             r"2. Regularization (1.6)--(1.9)",
-            r"New fast variables $u_j = N_j$, $v_j = \dot q_j/\varepsilon$ and the stretched time "
-            r"$\tau = t/\varepsilon$ give $x' = \varepsilon X(x, y, \varepsilon)$, $y' = Y(x, y, \varepsilon)$ "
-            r"with the slow variables $x = (" + ", ".join(tex(x) for x in reg.x) + r")$; "
-            r"the slow part is below, and $Y(x, y, 0)$ is the fast subsystem of Section 3.",
+            f"New fast variables ${_generic(fast.u)} = {N}$, ${_generic(fast.v)} = {dq}/{eps}$ and the stretched "
+            f"time ${tex(reg.tau)} = {letters.tex('t')}/{eps}$ give ${x}' = {eps} {X}({x}, {y}, {eps})$, "
+            f"${y}' = {Y}({x}, {y}, {eps})$ with the slow variables ${x} = ("
+            + ", ".join(tex(v) for v in reg.x)
+            + f")$; the slow part is below, and ${Y}({x}, {y}, 0)$ is the fast subsystem of Section 3.",
         )
     )
     parts += [_display(f, named) for f in reg.slow_formulas()]  # Y is not shown: not derived here
 
-    fast = scene.fast_subsystem()
     laws = []
     for j in range(fast.k):
         for letter, value in (("Phi", fast.Phi[j]), ("Psi", fast.Psi[j])):
-            symbol = sp.Symbol(f"{letter}{_index(fast, j)}")
+            symbol = sp.Symbol(spelled_apart(f"{letter}{_index(fast, j)}", letters.taken))  # as the stage's
             if not (isinstance(value, sp.Symbol) and value.name == symbol.name):
                 laws.append(f"${tex(symbol)} = {tex(value)}$")
     law = (
@@ -68,8 +75,8 @@ def _chain(scene, named: _Named) -> list[str]:
         _section(
             "3. Fast subsystem (2.1)",
             r"The associated system in the stretched time, the slow state frozen on the contact manifold; "
-            r"$\Phi_j = \lim \varepsilon^2 \partial N_j/\partial q_j$, "
-            r"$\Psi_j = \lim \varepsilon \partial N_j/\partial \dot q_j$ (" + law + ").",
+            f"${_letter(fast.Phi, 'Phi', letters)} = \\lim {eps}^2 \\partial {N}/\\partial {q}$, "
+            f"${_letter(fast.Psi, 'Psi', letters)} = \\lim {eps} \\partial {N}/\\partial {dq}$ (" + law + ").",
         )
     )
     parts += [_display(f, named) for f in formulas(fast)]
@@ -84,14 +91,27 @@ def _index(fast, j: int) -> str:
     return "" if fast.k == 1 else f"_{j + 1}"
 
 
+def _letter(values, letter: str, letters) -> str:
+    """LaTeX of Phi_j (Psi_j): as the generic law's symbols print, else the letter apart from the scene's names."""
+    return _generic(values) if all(isinstance(v, sp.Symbol) for v in values) else letters.index(letter, "j")
+
+
+def _generic(symbols, fallback: str = "N_j") -> str:
+    """LaTeX of the j-th of ``symbols`` (u_1, u_2 -> u_j; uhat_1 -> \\hat{u}_j; a single R -> R_j)."""
+    bases = {sp.Symbol(s.name.partition("_")[0]) for s in symbols}
+    return tex(bases.pop()) + "_j" if len(bases) == 1 else fallback
+
+
 def _equilibria_section(scene, named: _Named) -> str:
     fast = scene.fast_subsystem()
+    letters = own_letters(scene)
     text = [_section("4. Equilibria (4.2)")]
     if fast.switching:
-        sigmas = ", ".join(f"$\\sigma_{{{i}}} = {tex(s)}$" for i, s in enumerate(fast.switching, 1))
+        sigma, s, u = letters.tex("sigma"), letters.tex("s"), tex(sp.Symbol(fast.u[0].name.partition("_")[0]))
+        sigmas = ", ".join(f"${sigma}_{{{i}}} = {tex(e)}$" for i, e in enumerate(fast.switching, 1))
         text.append(
-            r"$f$ is smooth on each sign pattern $s$ of the switching functions " + sigmas + r"; the root "
-            r"$u^*$ of a piece is an equilibrium where $s_i\,\sigma_i(u^*) > 0$ for every $i$ "
+            f"${letters.tex('f')}$ is smooth on each sign pattern ${s}$ of the switching functions {sigmas}; the "
+            f"root ${u}^*$ of a piece is an equilibrium where ${s}_i\\,{sigma}_i({u}^*) > 0$ for every $i$ "
             r"(the conditions in full are in \texttt{conditions.json})."
         )
     try:
@@ -101,25 +121,30 @@ def _equilibria_section(scene, named: _Named) -> str:
     for branch in branches:
         if branch.signs:
             signs = ", ".join("+" if s == 1 else "-" for s in branch.signs)
-            text.append(f"\\paragraph{{Sign pattern $s = ({signs})$.}}")
+            text.append(f"\\paragraph{{Sign pattern ${letters.tex('s')} = ({signs})$.}}")
         rows = [f for f in formulas(branch) if f.key == "equilibrium"]
-        for row in rows:
+        for u, row in zip(fast.u, rows):  # u* as the fast subsystem's u prints (uhat beside a user's u)
             numbers, note = paper_equations(scene, "equilibrium")
-            text.append(_display(Formula(row.key, row.lhs, row.rhs, "=", numbers, ""), named))
+            text.append(_display(Formula(row.key, tex(u) + "^{*}", row.rhs, "=", numbers, ""), named))
     return "\n".join(text)
 
 
 def _linearization_section(scene, named: _Named) -> str:
     lin = scene.linearization()
+    fast = lin.fast
     k = lin.A.rows
+    letters = own_letters(scene)
+    J, I, A, Phi, Psi = (letters.tex(letter) for letter in ("J", "I", "A", "Phi", "Psi"))
+    u, lam = tex(sp.Symbol(fast.u[0].name.partition("_")[0])), tex(lin.variable)
     text = [
         _section(
             "5. Linearization (4.3)--(4.6)",
-            r"At an equilibrium $(u^*, 0)$ the Jacobian of the fast subsystem is "
-            r"$J = \begin{pmatrix} \Psi A & \Phi \\ A & 0 \end{pmatrix}$ (4.5) with "
-            r"$\Phi = \operatorname{diag}(\Phi_j)$, $\Psi = \operatorname{diag}(\Psi_j)$, for every compliance law. "
+            f"At an equilibrium $({u}^*, 0)$ the Jacobian of the fast subsystem is "
+            f"${J} = \\begin{{pmatrix}} {Psi} {A} & {Phi} \\\\ {A} & 0 \\end{{pmatrix}}$ (4.5) with "
+            f"${Phi} = \\operatorname{{diag}}({_letter(fast.Phi, 'Phi', letters)})$, "
+            f"${Psi} = \\operatorname{{diag}}({_letter(fast.Psi, 'Psi', letters)})$, for every compliance law. "
             + (
-                r"The signs $s_i = \pm 1$ stand for the sign pattern. "
+                f"The signs ${letters.tex('s')}_i = \\pm 1$ stand for the sign pattern. "
                 if any(s.name.startswith("s") for s in lin.A.free_symbols if s.is_integer)
                 else ""
             )
@@ -127,23 +152,23 @@ def _linearization_section(scene, named: _Named) -> str:
         )
     ]
     show = scene.present if scene.presentation else (lambda e: e)
-    A = show(lin.A)
+    matrix = show(lin.A)
     numbers, note = paper_equations(scene, "A")
-    if width(tex(A)) <= WIDTH:
-        text.append(_display(Formula("A", "A", A, "=", numbers, note), named))
+    if width(tex(matrix)) <= WIDTH:
+        text.append(_display(Formula("A", A, matrix, "=", numbers, note), named))
     else:
         for i in range(k):
             for j in range(k):
-                entry = Formula("A", f"a_{{{i + 1}{j + 1}}}", A[i, j], "=", numbers, note)
+                entry = Formula("A", f"{letters.tex('a')}_{{{i + 1}{j + 1}}}", matrix[i, j], "=", numbers, note)
                 text.append(_display(entry, named))
     numbers, note = paper_equations(scene, "det A")
-    text.append(_display(Formula("det A", r"\det A", sp.factor(show(lin.det_A)), "=", numbers, note), named))
+    text.append(_display(Formula("det A", r"\det " + A, sp.factor(show(lin.det_A)), "=", numbers, note), named))
     n = lin.charpoly.degree()
     p = " + ".join(
-        f"p_{{{s}}} \\lambda^{{{s}}}" if s > 1 else ("p_{1} \\lambda" if s == 1 else "p_{0}") for s in range(n, -1, -1)
+        f"p_{{{s}}} {lam}^{{{s}}}" if s > 1 else (f"p_{{1}} {lam}" if s == 1 else "p_{0}") for s in range(n, -1, -1)
     )
     numbers, _ = paper_equations(scene, "charpoly")
-    text.append(_display(Formula("charpoly", r"\det(\lambda I - J)", p, "=", numbers, ""), named))
+    text.append(_display(Formula("charpoly", f"\\det({lam} {I} - {J})", p, "=", numbers, ""), named))
     coefficients = lin.charpoly.all_coeffs()
     for s, c in zip(range(n, -1, -1), coefficients):
         numbers, _ = paper_equations(scene, "coefficient")
@@ -174,12 +199,13 @@ def _hurwitz_section(scene, named: _Named) -> str:
         expanded = _tidy(show(condition))
         text.append(_display(Formula("hurwitz", name, expanded, "=", (), ""), named))
     if st.hopf_frequency is not None:
+        omega = own_letters(scene).tex("omega")
         text.append(
-            r"On the Hopf set $\Delta_{" + str(n - 1) + r"} = 0$ the roots $\pm i\omega$ have "
-            r"$\omega^2$ the common root of the real and imaginary parts of $p(i\omega)$:"
+            r"On the Hopf set $\Delta_{" + str(n - 1) + f"}} = 0$ the roots $\\pm i{omega}$ have "
+            f"${omega}^2$ the common root of the real and imaginary parts of $p(i{omega})$:"
         )
         numbers, note = paper_equations(scene, "hopf frequency")
         omega2 = _tidy(show(st.routh_hurwitz.omega_squared))
-        text.append(_display(Formula("hopf frequency", r"\omega^{2}", omega2, "=", numbers, note), named))
+        text.append(_display(Formula("hopf frequency", omega + "^{2}", omega2, "=", numbers, note), named))
     text += [_display(formula, named) for formula in robustness_formulas(st.robustness)]
     return "\n".join(text)

@@ -34,7 +34,7 @@ from ..validate import checked_fields, cut, instance_of
 from .derivation import _chain, _section
 from .descriptions import describe
 from .errata import AGREE, latex_table, text_to_latex
-from .plain_text import _escape
+from .plain_text import _escape, own_letters
 from .scene_parts import _count_tag, _special_cases
 from .summary import ADVICE, _counts
 from .typesetting import _display, _Named
@@ -110,9 +110,11 @@ def _one_sided_section(scene, named: _Named) -> list[str]:
     except Exception as error:  # a section that cannot be derived must not cost the rest of the report
         return text + [_not_derived(scene, "the one-sided cases", error)]
     words = {True: "stable", False: "unstable", None: "stability not decided"}
+    letters = own_letters(scene)  # a and b of f(N) = a + b N, apart from a scene's own a and b
     if any(case.assumed for case in cases):
         text.append(
-            "Where a sign does not follow from those of $a$ and $b$ (nor from the mechanics), the case is "
+            f"Where a sign does not follow from those of ${letters.tex('a')}$ and ${letters.tex('b')}$ (nor from the "
+            "mechanics), the case is "
             "split in two, as in the paper: the undecided expression positive, then negative."
         )
     for case in cases:
@@ -206,7 +208,7 @@ def report_tex(scene, figures: list[Figure] | tuple = (), notes: list[str] | tup
     listed = isinstance(figures, (list, tuple)) and isinstance(notes, (list, tuple))
     if not listed or not all(isinstance(f, Figure) for f in figures) or not all(isinstance(n, str) for n in notes):
         raise ContactsymError("report_tex: figures must be a list of report.Figure, and notes a list of text.")
-    named = _Named()
+    named = _Named(letter=own_letters(scene).indexed("H"))
     paper = paper_name(scene) is not None  # the paper's own scene object, not one that shares its name
     title = _escape(f"contactsym: {scene.name}")
     description = _escape(scene.description) if scene.description else ""

@@ -10,9 +10,36 @@ from __future__ import annotations
 
 import re
 
+import sympy as sp
+from sympy.core.function import AppliedUndef
+
+from ..algebra.reductions import PaperSymbol, SignSymbol
+from ..printing.glyphs import OwnLetters, look_alike
 from .errata import text_to_latex
 
 __all__: list[str] = []
+
+
+def own_letters(scene, reactions: bool = True) -> OwnLetters:
+    r"""The report's own letters (t, x, J, I, ...) spelled apart from every name the scene prints:
+    its symbols (``symbol_names``), its functions (the sliding point's force ``Y(x, xdot)``) and the
+    parameters of its fast subsystem. ``reactions=False`` leaves the reactions out: for the letter N_j that
+    names them (the sliding point's reaction N is no clash with it).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> letters = own_letters(cs.scene("brake"))  # the brake's J is its inertia, x its coordinate
+    >>> letters.tex("J"), letters.tex("x"), letters.tex("t"), letters.tex("I")
+    ('\\hat{J}', '\\hat{x}', 't', 'I')
+    """
+    own = (PaperSymbol, SignSymbol)  # the theory's symbols (Phi_j, s_i) among the parameters are the package's
+    names = set(scene.symbol_names) | {str(p) for p in scene.fast_subsystem().parameters if not isinstance(p, own)}
+    exprs = list(scene.accelerations.values()) + list(scene.gaps)
+    functions = {type(f).__name__ for e in exprs for f in sp.sympify(e).atoms(AppliedUndef)}
+    names |= functions - {type(q).__name__ for q in scene.coordinates}  # q(t): in symbol_names as q, qdot
+    names -= set() if reactions else {str(r) for r in scene.reactions}
+    return OwnLetters(names | {look_alike(n) for n in names})
 
 
 def _note(note: str) -> str:

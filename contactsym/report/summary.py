@@ -27,6 +27,7 @@ from ..printing.shared import sstr_shared
 from ..stages.regions import REGION_NAMES, Region
 from ..stages.stability import UNDECIDED_TEX, hurwitz_names
 from ..validate import cut, instance_of, sign_pattern
+from .plain_text import own_letters
 from .scene_parts import _count_tag
 from .typesetting import UNORDERED_NODES, _tex
 
@@ -72,6 +73,23 @@ def always_positive(scene, condition) -> str | None:
     if known_sign(condition) != 1:
         return "positive on the scene's declared intervals"
     return "positive for all values of its symbols"
+
+
+def _hopf_names(scene) -> dict:
+    """The names of omega and of the stretched time tau where a scene's own symbol prints as either
+    (``{"name": "omegahat", "name_latex": "\\hat{\\omega}", "time": "tauhat"}``); empty otherwise.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> _hopf_names(cs.scene("brake"))
+    {}
+    """
+    letters = own_letters(scene)
+    omega, tau = letters.text("omega"), str(scene.regularized().tau)
+    if (omega, tau) == ("omega", "tau"):
+        return {}
+    return {"name": omega, "name_latex": letters.tex("omega"), "time": tau}
 
 
 #: conditions() of each scene, computed once: the report, the summary and the JSON share them.
@@ -164,7 +182,7 @@ def _conditions(scene, signs) -> dict:
             entry["always"] = reason
         data["hurwitz"].append(entry)
     if st.hopf_frequency is not None:
-        data["hopf_frequency"] = _entry(st.hopf_frequency)
+        data["hopf_frequency"] = _entry(st.hopf_frequency) | _hopf_names(scene)
     if st.robustness is not None:
         data["robustness"] = _robustness_entry(st.robustness)
     try:
@@ -224,5 +242,5 @@ def summary_text(data: dict) -> str:
         lines.append(f"  equilibria, {name}: {text}" + (f"   {cite}" if cite else ""))
     if data.get("hopf_frequency"):
         text = data["hopf_frequency"]["sympy"]
-        lines.append("  Hopf frequency omega: " + cut(text, 100, count=False))
+        lines.append(f"  Hopf frequency {data['hopf_frequency'].get('name', 'omega')}: " + cut(text, 100, count=False))
     return "\n".join(lines)

@@ -115,12 +115,14 @@ class _Named:
     """Long subexpressions replaced by names H_1, H_2, ... while typesetting one report."""
 
     items: list = field(default_factory=list)
+    #: the letter of the names: H, or H with an accent where the scene has its own H_j (plain_text.own_letters)
+    letter: str = "H"
 
     def name(self, expr: sp.Expr) -> sp.Symbol:
         for symbol, known in self.items:
             if known == expr:
                 return symbol
-        symbol = sp.Symbol(f"H_{len(self.items) + 1}")
+        symbol = sp.Symbol(f"{self.letter}_{len(self.items) + 1}")
         self.items.append((symbol, expr))
         return symbol
 

@@ -18,6 +18,7 @@ import sympy as sp
 from ..algebra.basic import PaperSymbol, normalize, present
 from ..arguments import checked, require
 from ..errors import SceneError
+from ..printing.glyphs import spelled_apart
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, prime, tex
 from .fast_space import (
     _monomial_denominator,
@@ -332,7 +333,8 @@ class FastSubsystem(LatexReprMixin):
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:
         """(2.1) in the form (3.1)/(4.1), and each f_j(u): see :func:`contactsym.printing.latex_output.formulas`."""
         u = self.u
-        names = ["f"] if self.k == 1 else [f"f_{j}" for j in range(1, self.k + 1)]
+        f = spelled_apart("f", self._taken, {n.partition("_")[0] for n in self._taken})  # fhat beside a user's f
+        names = [f] if self.k == 1 else [f"{f}_{j}" for j in range(1, self.k + 1)]
         f_of_u = [sp.Function(name)(*u) for name in names]
 
         def row(key, lhs, rhs):

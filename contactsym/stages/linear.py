@@ -23,7 +23,8 @@ from ..algebra.coprime import cofactors, divided_by_term
 from ..arguments import checked, require
 from ..deprecation import deprecated_property
 from ..errors import ContactsymError
-from ..printing.latex_output import Formula, LatexReprMixin, Numbering
+from ..printing.glyphs import OwnLetters, spelled_apart
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering, tex
 from .minors import FactoredMinors, MinorsInRing, minors_of, polynomial_factors, product_of
 
 __all__ = ["lam", "charpoly", "principal_minors", "Linearization", "linearization_of"]
@@ -222,7 +223,8 @@ class Linearization(LatexReprMixin):
         (4.5) ``[[Psi A, Phi], [A, 0]]``, the Jacobian of (2.1) at the equilibrium (``matrix``
         is its deprecated name).
     charpoly : Poly
-        (4.6) in ``contactsym.lam``.
+        (4.6) in :attr:`variable`: ``contactsym.lam``, or lambda with a hat where a symbol of the
+        scene prints as lambda (``lambdahat``).
 
     Examples
     --------
@@ -331,9 +333,17 @@ class Linearization(LatexReprMixin):
     matrix = deprecated_property("jacobian", "matrix")
 
     @cached_property
+    def variable(self) -> sp.Symbol:
+        """lambda of (4.6): ``contactsym.lam``, or a ``PaperSymbol`` with an accent where a symbol of the
+        scene prints as lambda (as u becomes uhat), so that p(lambda) never shows the user's lambda beside it."""
+        taken = self.fast._taken
+        return lam if "lambda" not in taken else PaperSymbol(spelled_apart("lambda", taken))
+
+    @cached_property
     def charpoly(self) -> sp.Poly:
         log.info("scene '%s': characteristic polynomial (4.6) from %d principal minors", self.fast.name, 2**self.fast.k)
-        return charpoly(self._minors_source, self.Phi, self.Psi, self.fast.positive, self.factors, self.minors)
+        poly = charpoly(self._minors_source, self.Phi, self.Psi, self.fast.positive, self.factors, self.minors)
+        return poly if self.variable == lam else poly.replace(lam, self.variable)
 
     @cached_property
     def _minors_source(self) -> sp.Matrix:
@@ -345,15 +355,16 @@ class Linearization(LatexReprMixin):
     def formulas(self, present: bool = False) -> tuple[Formula, ...]:
         """A (4.3), det A, the matrix (4.5) and p(lambda) (4.6); ``present``: in the presentation variables."""
         show = self.fast.present if present else (lambda expr: expr)
+        letters = OwnLetters(self.fast._taken)  # A and J apart from a scene's own A or J (the brake's inertia)
 
         def row(key, lhs, rhs):
             return NUMBERS.formula(key, lhs, show(rhs), k=self.A.rows, own=self.fast.paper_equations)
 
         return (
-            row("A", "A", self.A),
-            row("det A", r"\det A", self.det_A),
-            row("matrix", "J", self.jacobian),
-            row("charpoly", r"p(\lambda)", self.charpoly.as_expr()),
+            row("A", letters.tex("A"), self.A),
+            row("det A", r"\det " + letters.tex("A"), self.det_A),
+            row("matrix", letters.tex("J"), self.jacobian),
+            row("charpoly", rf"p({tex(self.variable)})", self.charpoly.as_expr()),
         )
 
 

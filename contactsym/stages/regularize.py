@@ -20,6 +20,7 @@ from ..algebra.basic import PaperSymbol, normalize
 from ..algebra.fraction_free import t
 from ..arguments import checked
 from ..errors import ContactsymError
+from ..printing.glyphs import spelled_apart
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, prime, tex
 from .fast import fast_variables, law_coefficients, on_piece
 
@@ -114,7 +115,8 @@ class Regularized(LatexReprMixin):
     def x(self) -> sp.Matrix:
         plain = [self.scene.plain(q) for q in self.slow_coordinates]
         rates = [self.scene.plain(sp.diff(q, t)) for q in self.slow_coordinates]
-        return sp.Matrix([sp.Symbol("t", real=True), *plain, *rates])
+        time = PaperSymbol(spelled_apart("t", self._taken), real=True)  # never a user's t; "that" beside one
+        return sp.Matrix([time, *plain, *rates])
 
     @cached_property
     def X(self) -> sp.Matrix:

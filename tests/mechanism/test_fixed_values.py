@@ -58,6 +58,8 @@ def test_the_values_table_of_a_file_is_with_values():
         ({"m1": True}, "finite real number"),
         ({"m1": "1"}, "finite real number"),
         ({"m1": sp.I}, "finite real number"),
+        ({"m1": sp.Float(0.5) * sp.pi}, "without a float inside"),
+        ({"m1": -sp.sqrt(2)}, "m1 is declared positive"),
         ({sp.Symbol("m1"): 1}, "not a parameter"),  # a symbol of the same name but other assumptions
     ],
 )
@@ -90,3 +92,51 @@ def test_a_scene_proved_positive_keeps_its_verdict_without_a_second_check(monkey
     assert scene.inertia == "proved"
     monkeypatch.setattr(scene_module, "check_inertia", lambda s: "checked again")
     assert scene.with_values({"m": 2}).inertia == "proved"
+
+
+# --- exact constants: pi/2, sqrt(2)/2; sin^2 + cos^2 of a fixed angle reduced -------------------------
+
+
+def _squares_left(expr, angle) -> bool:
+    """Whether ``expr`` still holds cos(angle)**n with n >= 2 (sin^2 + cos^2 = 1 not used)."""
+    return any(p.base == sp.cos(angle) and p.exp >= 2 for p in sp.sympify(expr).atoms(sp.Pow))
+
+
+@pytest.mark.parametrize("value", [sp.pi / 4, sp.pi / 2, 3 * sp.pi / 4])
+def test_a_multiple_of_pi_is_fixed_exactly(value):
+    """The brake with alpha = pi/4, pi/2, 3 pi/4: sin and cos exact, and the regions agree with the symbolic ones there."""
+    brake = cs.scene("brake")
+    fixed = brake.with_values({"alpha": value})
+    assert fixed.fixed_values == {sp.Symbol("alpha", positive=True): value} and f"alpha = {value}" in fixed.description
+    st = fixed.stability()
+    assert not st.robustly_stable.atoms(sp.sin, sp.cos) and not st.hopf_frequency.atoms(sp.sin, sp.cos)
+    alpha = next(x for x in brake.stability().robustly_stable.free_symbols if x.name == "alpha")
+    m, mu = sp.symbols("m mu", positive=True)
+    for point in ({m: 1, mu: sp.Rational(1, 2)}, {m: 2, mu: 3}):
+        symbolic = brake.stability().robustly_stable.xreplace({alpha: value, **point})
+        assert bool(symbolic) == bool(st.robustly_stable.xreplace(point))
+
+
+def test_sqrt_values_are_exact():
+    fixed = read_scene(ARM, "arm.toml").with_values({"m1": sp.sqrt(2) / 2, "l1": sp.sqrt(3)})
+    assert set(fixed.fixed_values.values()) == {sp.sqrt(2) / 2, sp.sqrt(3)}
+    assert not {"m1", "l1"} & {str(x) for x in fixed.linearization().A.free_symbols}
+
+
+@pytest.mark.parametrize("value", [0.7853981633974483, sp.pi / 7, sp.Rational(157, 200)])
+def test_sin_squared_plus_cos_squared_of_a_fixed_angle_is_reduced(value):
+    """A float (read as its decimal), or a multiple of pi SymPy leaves unevaluated: sin^2 c + cos^2 c = 1 is used."""
+    st = cs.scene("brake").with_values({"alpha": value}).stability()
+    c = sp.Rational(repr(value)) if isinstance(value, float) else value
+    assert st.hopf_frequency.has(sp.sin(c))  # the angle is there, as sin(c)
+    for expr in (*st.hurwitz, st.hopf_frequency, st.robustly_stable):
+        assert not _squares_left(expr, c), expr
+    assert "cos(" not in str(st.hopf_frequency)  # sin^2 + cos^2 of the same argument reads 1
+
+
+def test_a_multiple_angle_of_a_fixed_parameter_is_expanded_first():
+    from contactsym.mechanism.fixed_values import _put
+
+    a = sp.Symbol("alpha", positive=True)
+    put = _put(sp.sin(2 * a) ** 2 + sp.cos(2 * a) ** 2, {a: sp.pi / 7})
+    assert not put.has(sp.sin(2 * sp.pi / 7)) and not put.has(sp.cos(2 * sp.pi / 7))

@@ -106,7 +106,9 @@ def test_user_Phi_Psi_epsilon_tau_lambda_are_the_users():
     A = s.linearization().A[0]
     assert sp.expand(A - (1 + Phi)) == 0
     p = s.linearization().charpoly
-    assert p.gens == (cs.lam,) and p.degree() == 2 and lam not in p.free_symbols  # the user's lambda is a load
+    assert p.degree() == 2 and lam not in p.gens  # the user's lambda is a load
+    assert p.gens == (s.linearization().variable,) and str(p.gen) == "lambdahat"  # printed apart from the user's
+    assert sp.latex(p.gen) == r"\hat{\lambda}" and p.gen != cs.lam
     assert st_.robustly_stable == sp.true
 
 
