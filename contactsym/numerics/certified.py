@@ -16,6 +16,7 @@ import sympy as sp
 from sympy.core.evalf import PrecisionExhausted
 
 from ..algebra.intervals import interval_sign
+from ..algebra.reductions import SignSymbol
 from ..arguments import checked
 from ..errors import NumericsError
 from ..parse import sympy_only
@@ -313,12 +314,23 @@ def classify(scene_or_stability, values: Mapping, *, signs=None, band: float = 1
     if isinstance(scene_or_stability, Stability):
         st = scene_or_stability
         scene = st.linearization.scene
+        if signs is not None:
+            raise NumericsError(
+                "signs= chooses the pattern of a scene; a Stability has its own: pass scene.stability(signs) "
+                "or classify(scene, values, signs=signs)."
+            )
     else:
         scene = scene_or_stability
         st = scene.stability(signs)
     vals = numeric_values(scene, values)
     numbers = vals.numbers
     _inside_the_domain(scene, numbers)
+    pattern = sorted((s for s in st.linearization.A.free_symbols if isinstance(s, SignSymbol)), key=str)
+    if pattern:
+        raise NumericsError(
+            f"this stability is symbolic in the sign pattern {[str(s) for s in pattern]}; choose one: "
+            f"classify(scene, values, signs=(1, ...)) or classify(scene.stability(signs), values)."
+        )
     results = [certified_sign(substitute(c, NumericValues({}, vals.functions)), numbers, band=band) for c in st.hurwitz]
     condition_signs = tuple(s for s, _ in results)
     stable = 1 if all(s > 0 for s in condition_signs) else (-1 if any(s < 0 for s in condition_signs) else 0)
@@ -332,10 +344,23 @@ def classify(scene_or_stability, values: Mapping, *, signs=None, band: float = 1
         elif st.law_dependent is not None and decide(st.law_dependent, numbers):
             region = "law-dependent"
         else:
-            region = "undecided"
+            region = _decided_at_the_point(st, vals)
     except NumericsError:
         region = None
     return Classification(stable, condition_signs, tuple(x for _, x in results), region)
+
+
+def _decided_at_the_point(st: Stability, vals: NumericValues) -> str:
+    """The region at a point where the symbolic regions prove nothing (k >= 3): the point decision of
+    :func:`contactsym.robustness.classify.decide_robustness` on A at the point (a certificate or two
+    exact witness laws), as ``scene.with_values(...).stability()`` would give; else 'undecided'."""
+    A = substitute(st.linearization.A, vals)
+    if st.k < 3 or A.free_symbols:
+        return "undecided"
+    from ..robustness.classify import decide_robustness  # scipy.optimize: imported for k >= 3 only
+
+    verdict = decide_robustness(A).verdict
+    return {"stable": "robustly stable", "unstable": "robustly unstable"}.get(verdict, verdict)
 
 
 def _inside_the_domain(scene, numbers: Mapping) -> None:

@@ -117,3 +117,23 @@ def test_a_point_outside_the_declared_domain_gets_no_verdict(theta, beta, fricti
     point = {s: values[str(s)] for s in region.condition.free_symbols}
     printed = bool(region.condition.subs(point))
     assert (nm.classify(rod, values).region == "robustly stable") == printed
+
+
+def test_three_contacts_are_decided_at_the_point_where_the_regions_prove_nothing():
+    """The stool (k = 3): where its symbolic regions are undecided, classify decides the point as the
+    scene with the values fixed does (a second derivation); a symbolic sign pattern is named, not asked
+    for as a value."""
+    import contactsym as cs
+
+    stool = cs.scene("stool-3d")
+    law = {f"{name}_{j}": -1.0 for name in ("Phi", "Psi") for j in (1, 2, 3)}
+    for friction in (0.3, 1.0):
+        found = nm.classify(stool, {"h": 1, "mu": friction, **law}, signs=(1, 1, 1))
+        fixed = stool.with_values({"h": 1, "mu": friction}).stability((1, 1, 1))
+        names = {"robustly stable": "robustly_stable", "robustly unstable": "robustly_unstable"}
+        assert found.region != "undecided"
+        assert getattr(fixed, names.get(found.region, "law_dependent")) is sp.true
+    with pytest.raises(nm.NumericsError, match=r"symbolic in the sign pattern \['s_1', 's_2', 's_3'\]"):
+        nm.classify(stool.stability(), {"h": 1, "mu": 0.5, **law})
+    with pytest.raises(nm.NumericsError, match="a Stability has its own"):
+        nm.classify(stool.stability((1, 1, 1)), {"h": 1, "mu": 0.5, **law}, signs=(1, 1, 1))
