@@ -9,6 +9,7 @@ import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
 import contactsym as cs
+from contactsym.algebra.basic import PaperSymbol
 from contactsym.errors import ContactsymError
 from contactsym.stages.regularize import ReducedSystem, Regularized
 
@@ -47,7 +48,7 @@ def test_sliding_point_regularized():
     m = sp.Symbol("m", positive=True)
     assert reg.eps == s.eps and reg.tau.is_positive
     assert reg.slow_coordinates == (s.coordinates[0],)
-    assert reg.x == sp.Matrix([sp.Symbol("t", real=True), xs, xdot])
+    assert reg.x == sp.Matrix([PaperSymbol("t", real=True), xs, xdot])
     assert reg.y == sp.Matrix([u, v])
     assert zero_matrix(reg.X - sp.Matrix([1, xdot, (Xf - mu * sp.Abs(u)) / m]))
     assert reg.Y.subs(reg.eps, 0) == fast.rhs
@@ -92,7 +93,7 @@ def test_X_is_the_slow_motion_in_stretched_time():
     s = coupled_scene(cs.KelvinVoigt(k, d))
     reg = s.regularized()
     u, v = s.fast_subsystem().u[0], s.fast_subsystem().v[0]
-    assert reg.x == sp.Matrix([sp.Symbol("t", real=True), xs, xdot])
+    assert reg.x == sp.Matrix([PaperSymbol("t", real=True), xs, xdot])
     assert zero_matrix(reg.X - sp.Matrix([1, xdot, X - mu * sp.Abs(u) - c * reg.eps * v]))
     assert zero_matrix(reg.X.subs(reg.eps, 0) - sp.Matrix([1, xdot, X - mu * sp.Abs(u)]))
 
@@ -234,3 +235,13 @@ def test_regularized_is_derived_from_the_scene_not_from_the_fast_subsystem(name,
     fast = scene.fast_subsystem()
     assert y == fast.state
     assert numeric_difference(Y.subs(reg.eps, 0), fast.rhs) < 1e-9
+
+
+def test_the_slow_time_is_the_packages_own_beside_a_users_t():
+    """A parameter t declared real is not the slow state's time t (it was the same Symbol("t", real=True))."""
+    t = sp.Symbol("t", real=True)
+    N = sp.Symbol("N", real=True)
+    x, y = dynamicsymbols("x y")
+    s = cs.Scene.from_accelerations([x, y], [0, N - t], [cs.Contact(coordinate=y, reaction=N)], parameters=[t])
+    time = s.regularized().x[0]
+    assert time != t and str(time) == "that" and sp.latex(time) == r"\hat{t}"
