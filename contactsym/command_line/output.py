@@ -9,6 +9,8 @@ scene painleve-rod: classical Painleve rod, one end sliding on a rough floor (on
 
 from __future__ import annotations
 
+import re
+
 import sympy as sp
 
 from ..mechanism.files.reader import scene_or_file
@@ -84,7 +86,8 @@ def conditions_text(data: dict) -> str:
             lines.append(f"  {name}: {entry['sympy']}" + (f"   {cite}" if cite else ""))
     lines.append("Routh-Hurwitz conditions (4.7), all > 0:")
     for entry in data["hurwitz"]:
-        name = entry["name"].replace("\\", "").replace("{", "").replace("}", "")
+        name = re.sub(r"\\hat\{\\?([A-Za-z]+)\}", r"\1hat", entry["name"])  # \hat{p}_{1} -> phat_1
+        name = name.replace("\\", "").replace("{", "").replace("}", "")
         lines.append(
             f"  {name} > 0 always: {entry['always']}" if entry.get("always") else f"  {name} = {entry['sympy']}"
         )

@@ -21,7 +21,7 @@ from ..errors import ContactsymError
 from ..mechanism.equation_numbers import paper_equations
 from ..printing.glyphs import spelled_apart
 from ..printing.latex_output import Formula, formulas, tex
-from ..stages.stability import generic_minors, hurwitz_names, robustness_formulas
+from ..stages.stability import generic_minors, hurwitz_letters, hurwitz_names, robustness_formulas
 from .plain_text import _escape, own_letters
 from .summary import conditions
 from .typesetting import WIDTH, _display, _Named, _tidy, width
@@ -164,23 +164,25 @@ def _linearization_section(scene, named: _Named) -> str:
     numbers, note = paper_equations(scene, "det A")
     text.append(_display(Formula("det A", r"\det " + A, sp.factor(show(lin.det_A)), "=", numbers, note), named))
     n = lin.charpoly.degree()
+    P = tex(sp.Symbol(hurwitz_letters(scene.stability())["p"]))  # phat beside a scene's own p_1
     p = " + ".join(
-        f"p_{{{s}}} {lam}^{{{s}}}" if s > 1 else (f"p_{{1}} {lam}" if s == 1 else "p_{0}") for s in range(n, -1, -1)
+        f"{P}_{{{s}}} {lam}^{{{s}}}" if s > 1 else (f"{P}_{{1}} {lam}" if s == 1 else f"{P}_{{0}}")
+        for s in range(n, -1, -1)
     )
     numbers, _ = paper_equations(scene, "charpoly")
     text.append(_display(Formula("charpoly", f"\\det({lam} {I} - {J})", p, "=", numbers, ""), named))
     coefficients = lin.charpoly.all_coeffs()
     for s, c in zip(range(n, -1, -1), coefficients):
         numbers, _ = paper_equations(scene, "coefficient")
-        text.append(_display(Formula("coefficient", f"p_{{{s}}}", _tidy(show(c)), "=", numbers, ""), named))
+        text.append(_display(Formula("coefficient", f"{P}_{{{s}}}", _tidy(show(c)), "=", numbers, ""), named))
     return "\n".join(text)
 
 
 def _hurwitz_section(scene, named: _Named) -> str:
     st = scene.stability()
-    names = hurwitz_names(st)
+    names, letters = hurwitz_names(st), hurwitz_letters(st)
     n = st.linearization.charpoly.degree()
-    generic = generic_minors(n)
+    generic = generic_minors(n, letters["p"])
     always = {entry["name"]: entry["always"] for entry in conditions(scene)["hurwitz"] if "always" in entry}
     needed = [name for name in names if name not in always]
     intro = r"Li\'enard--Chipart form: all roots of (4.6) have negative real parts " + (
@@ -191,17 +193,16 @@ def _hurwitz_section(scene, named: _Named) -> str:
     text = [_section("6. Routh--Hurwitz conditions (4.7)", intro)]
     show = scene.present if scene.presentation else (lambda e: e)
     numbers, _ = paper_equations(scene, "hurwitz")
-    for name, condition in zip(names, st.hurwitz):
-        if not name.startswith(r"\Delta"):
+    for name, (kind, m), condition in zip(names, st.routh_hurwitz.labels, st.hurwitz):
+        if kind != "Delta":
             continue
-        m = int(name[len(r"\Delta_{") : -1])
         text.append(_display(Formula("hurwitz", name, generic[m], "=", numbers, ""), named))
         expanded = _tidy(show(condition))
         text.append(_display(Formula("hurwitz", name, expanded, "=", (), ""), named))
     if st.hopf_frequency is not None:
         omega = own_letters(scene).tex("omega")
         text.append(
-            r"On the Hopf set $\Delta_{" + str(n - 1) + f"}} = 0$ the roots $\\pm i{omega}$ have "
+            f"On the Hopf set ${tex(sp.Symbol(letters['Delta']))}_{{{n - 1}}} = 0$ the roots $\\pm i{omega}$ have "
             f"${omega}^2$ the common root of the real and imaginary parts of $p(i{omega})$:"
         )
         numbers, note = paper_equations(scene, "hopf frequency")

@@ -38,7 +38,8 @@ from ..arguments import checked
 from ..deprecation import deprecated_property
 from ..errors import SingularJacobianError
 from ..lyapunov.coefficient import first_lyapunov_symbolic
-from ..printing.latex_output import Formula, LatexReprMixin, Numbering
+from ..printing.glyphs import OwnLetters
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering, tex
 from .classification import classification_matrix, proved_regions
 from .linear import linearization_of
 from .stability_formulas import generic_minors, robustness_formulas, shortest_form
@@ -48,7 +49,15 @@ from .verdicts import Verdict, classification_verdicts, with_point_decision
 if TYPE_CHECKING:
     from ..robustness.classify import Robustness
 
-__all__ = ["Stability", "generic_minors", "hurwitz_names", "robustness_formulas", "shortest_form", "stability_of"]
+__all__ = [
+    "Stability",
+    "generic_minors",
+    "hurwitz_letters",
+    "hurwitz_names",
+    "robustness_formulas",
+    "shortest_form",
+    "stability_of",
+]
 
 #: The general theory's numbers and propositions, for k = 1, k = 2 and k >= 3 contacts.
 NUMBERS = Numbering(
@@ -344,7 +353,7 @@ class Stability(LatexReprMixin):
             return NUMBERS.formula(key, lhs, rhs, k=self.k, own=fast.paper_equations, relation=relation)
 
         names = hurwitz_names(self)
-        generic = generic_minors(self.linearization.charpoly.degree())
+        generic = generic_minors(self.linearization.charpoly.degree(), hurwitz_letters(self)["p"])
         rows = []
         for name, (kind, index), condition in zip(names, self.routh_hurwitz.labels, self.hurwitz):
             if kind == "Delta":
@@ -358,7 +367,8 @@ class Stability(LatexReprMixin):
         if self.k >= 3 and self._symbolic and self.undecided != sp.false:
             rows.append(row("undecided", r"\text{undecided}", show(self.undecided), ":"))
         if self.hopf_frequency is not None:
-            rows.append(row("hopf frequency", r"\omega", show(self.hopf_frequency_printed)))
+            omega = OwnLetters(fast._taken).tex("omega")  # omegahat beside a scene's omega
+            rows.append(row("hopf frequency", omega, show(self.hopf_frequency_printed)))
         return tuple(rows) + robustness_formulas(self.robustness)
 
 
@@ -386,5 +396,19 @@ def hurwitz_names(stability) -> list[str]:
     >>> hurwitz_names(cs.scene("brake").stability())
     ['p_{3}', 'p_{2}', 'p_{1}', 'p_{0}', '\\Delta_{3}']
     """
-    letters = {"p": "p", "Delta": r"\Delta"}
+    letters = {kind: tex(sp.Symbol(name)) for kind, name in hurwitz_letters(stability).items()}
     return [f"{letters[kind]}_{{{index}}}" for kind, index in stability.routh_hurwitz.labels]
+
+
+def hurwitz_letters(stability) -> dict[str, str]:
+    """The names of the coefficients p_s and the minors Delta_m: ``phat``, ``Deltahat`` where the scene has its
+    own p or p_1 (Delta), so that a printed condition never shows the scene's p_1 for a coefficient.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> hurwitz_letters(cs.scene("brake").stability())
+    {'p': 'p', 'Delta': 'Delta'}
+    """
+    own = OwnLetters(getattr(stability.linearization.fast, "_taken", ()))
+    return {kind: own.indexed(kind) for kind in ("p", "Delta")}

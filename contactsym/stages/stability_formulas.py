@@ -68,15 +68,15 @@ def _factored(polynomial: sp.Expr) -> sp.Expr:
 
 
 @checked(n=between(1, 12))
-def generic_minors(n: int) -> dict[int, sp.Expr]:
-    """Delta_m in the coefficients p_n, ..., p_0 (symbols) of a degree-n polynomial, for m = 1..n.
+def generic_minors(n: int, letter: str = "p") -> dict[int, sp.Expr]:
+    """Delta_m in the coefficients p_n, ..., p_0 (symbols named ``letter``_s) of a degree-n polynomial, m = 1..n.
 
     Examples
     --------
-    >>> generic_minors(2)[2]
-    p_0*p_1
+    >>> generic_minors(2)[2], generic_minors(2, "phat")[2]
+    (p_0*p_1, phat_0*phat_1)
     """
-    p = [sp.Symbol(f"p_{s}") for s in range(n + 1)]
+    p = [sp.Symbol(f"{letter}_{s}") for s in range(n + 1)]
     minors = hurwitz_minors(sp.Poly(sum(p[s] * lam**s for s in range(n + 1)), lam))
     return {m: sp.expand(minor) for m, minor in enumerate(minors, 1)}
 

@@ -10,7 +10,7 @@ second: every occurrence is the user's symbol, none is the package's own letter.
 import re
 
 import sympy as sp
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from contactsym.mechanism.files import read_scene
@@ -20,7 +20,7 @@ from contactsym.report.document import report_tex
 
 #: The package's own letters in the report and the spellings a user gives them.
 OWN_NAMES = ["lambda", "lambda_", "tau", "t", "x", "y", "X", "Y", "I", "J", "A", "epsilon", "varepsilon"]
-OWN_NAMES += ["u", "v", "Phi", "Psi", "N", "q", "a", "b", "f", "H_1"]
+OWN_NAMES += ["u", "v", "Phi", "Psi", "N", "q", "a", "b", "f", "H_1", "p_1", "p_0", "omega"]
 NEUTRAL = ["zqa", "zqb", "zqc", "zqd"]
 
 
@@ -61,6 +61,8 @@ distinct = st.lists(st.sampled_from(OWN_NAMES), min_size=1, max_size=3, unique_b
 
 @settings(max_examples=8, suppress_health_check=[HealthCheck.too_slow])
 @given(distinct)
+@example(["lambda_", "t", "I"])  # the probe's belt
+@example(["p_1", "x", "J"])
 def test_no_glyph_of_the_report_stands_for_two_things(names):
     drawn = read_scene(block(names), "drawn.toml")
     neutral = read_scene(block(NEUTRAL[: len(names)]), "neutral.toml")
