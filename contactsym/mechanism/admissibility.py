@@ -26,12 +26,13 @@ __all__ = ["check_delassus", "check_inertia", "frictionless_part"]
 _CIRCLE = ((4, 3, 5), (12, 5, 13), (15, 8, 17), (24, 7, 25), (40, 9, 41), (60, 11, 61))
 
 
-def _sample_points(exprs, positive=(), count: int = 3) -> list[dict]:
+def _sample_points(exprs, positive=(), count: int = 3, either_sign: bool = False) -> list[dict]:
     """Exact points for the free symbols of ``exprs`` (after ``expand_trig``), consistent with assumptions.
 
-    A symbol gets a rational of its declared sign (positive when undeclared); a symbol declared
-    real, of either sign, is negative at the second point (a mass declared real may be negative,
-    and a matrix positive definite only for its positive values is not so in the domain); an angle's sin and
+    A symbol gets a rational of its declared sign (positive when undeclared); with ``either_sign``, a
+    symbol declared real is negative at the second point (for a mass matrix: a mass declared real may
+    be negative, and a matrix positive definite only for its positive values is not so in the
+    domain; a scene's accelerations keep real coefficients free, as the theory's A is); an angle's sin and
     cos get a rational point of the unit circle, in the quadrant where the declared positive
     expressions hold. Returns substitutions for :func:`_at`.
     """
@@ -48,8 +49,9 @@ def _sample_points(exprs, positive=(), count: int = 3) -> list[dict]:
         point = {}
         for i, s in enumerate(symbols):
             value = sp.Rational(i + n + 2, 2 * i + n + 3) + n
-            either_sign = s.is_real and s.is_nonnegative is None and s.is_nonpositive is None
-            point[s] = -value if (s.is_negative or s.is_nonpositive or (either_sign and n == 1)) else value
+            real_either_sign = s.is_real and s.is_nonnegative is None and s.is_nonpositive is None
+            negative = s.is_negative or s.is_nonpositive or (either_sign and real_either_sign and n == 1)
+            point[s] = -value if negative else value
         for quadrants in _quadrant_choices(len(trig)):
             angles = {}
             for i, (x, (cs, sn)) in enumerate(zip(trig, quadrants)):
@@ -112,7 +114,7 @@ def _positive_definite(M: sp.Matrix, positive) -> str | tuple[int, dict | None]:
     minors = (M[:i, :i].det(method="berkowitz") for i in range(1, n + 1))
     if n <= 4 and all(known_sign(m, positive) == 1 for m in minors):
         return "proved"
-    points = _sample_points(list(M), positive)
+    points = _sample_points(list(M), positive, either_sign=True)
     for point in points:
         at = sp.Matrix(n, n, [_at(e, point) for e in M])
         for i in range(1, n + 1):
