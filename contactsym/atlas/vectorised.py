@@ -14,6 +14,7 @@ import sympy as sp
 
 from .. import numerics
 from ..numerics.buffered import NUMPY_FUNCTIONS, BufferedCode, cheapest_trig
+from ..stages.regions import proved_no_equilibrium
 from .grid import AtlasError, Grid
 from .kernel import Kernel, Reasons, Setup, setup_for
 
@@ -107,6 +108,8 @@ class _Truths:
 
 def _strict(condition) -> list:
     """``expr > 0`` parts of an equilibrium's existence condition (an And of strict inequalities)."""
+    if condition == sp.false:  # the branch exists nowhere (a one-sided contact pulled open): never counted
+        return [sp.S.NegativeOne]
     parts = []
     for atom in sp.And.make_args(condition):
         if atom is sp.true:
@@ -215,6 +218,8 @@ def _build_classification(scene, grid, values, signs=None):
     # None (undecided at a numeric A) proves nothing: such points get no region (NaN)
     robust = [sp.false if b is None else b for b in (st.robustly_stable, st.robustly_unstable, st.law_dependent)]
     robust = [setup.prepare(b, "the robust classification (Propositions 3-8)") for b in robust]
+    if proved_no_equilibrium(scene, signs):  # no equilibrium in contact anywhere: no region, no verdict (NaN)
+        return _Classification(setup, [sp.false] * 3, None)
     try:
         classifier = _classifier(setup, st.hurwitz, "the Hurwitz conditions (4.7)")
     except AtlasError:

@@ -16,6 +16,7 @@ import sympy as sp
 from ..mechanism.files.reader import scene_or_file
 from ..mechanism.scene import Scene
 from ..report.plain_text import own_letters
+from ..report.summary import no_equilibrium_note
 
 __all__ = ["conditions_latex", "conditions_text", "derivation_chain"]
 
@@ -51,6 +52,10 @@ def derivation_chain(name) -> str:
         "Hurwitz conditions (4.7), all > 0:",
     ]
     lines += [f"  {c}" for c in st.hurwitz]
+    note = no_equilibrium_note(s)
+    if note:  # the statements below would concern an equilibrium that exists nowhere
+        lines += ["", "for every admissible contact law: no claim. " + note]
+        return "\n".join(lines)
     lines += [
         "",
         "for every admissible contact law:",
@@ -75,6 +80,8 @@ def conditions_text(data: dict) -> str:
     lines = [f"{data['scene']}: {data['description']}"]
     if data.get("signs"):
         lines.append(f"sign pattern {tuple(data['signs'])}")
+    if data.get("equilibria_note"):
+        lines.append(data["equilibria_note"])
     lines.append("closed-form regions:")
     for name, entry in data["regions"].items():
         cite = ", ".join(entry.get("paper", []))

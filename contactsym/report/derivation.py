@@ -114,6 +114,10 @@ def _equilibria_section(scene, named: _Named) -> str:
             f"root ${u}^*$ of a piece is an equilibrium where ${s}_i\\,{sigma}_i({u}^*) > 0$ for every $i$ "
             r"(the conditions in full are in \texttt{conditions.json})."
         )
+    pushes = [u for u, one_sided in zip(fast.u, fast.unilateral) if one_sided and u not in fast.switching]
+    if pushes:  # no switching function fixes their sign: the existence condition says u_j* > 0
+        names = ", ".join(f"${tex(u)}^*$" for u in pushes)
+        text.append(f"A one-sided contact only pushes: the root is an equilibrium where {names} $> 0$.")
     try:
         branches = scene.equilibria().branches
     except ContactsymError as error:
@@ -126,6 +130,11 @@ def _equilibria_section(scene, named: _Named) -> str:
         for u, row in zip(fast.u, rows):  # u* as the fast subsystem's u prints (uhat beside a user's u)
             numbers, note = paper_equations(scene, "equilibrium")
             text.append(_display(Formula(row.key, tex(u) + "^{*}", row.rhs, "=", numbers, ""), named))
+        if pushes and branch.condition == sp.false:
+            text.append("It exists nowhere where the scene is declared: its existence condition is False.")
+        elif pushes and branch.condition != sp.true:
+            text.append("It exists where")
+            text.append(_display(Formula("existence", "", branch.condition, "", (), ""), named))
     return "\n".join(text)
 
 

@@ -36,7 +36,7 @@ from .descriptions import describe
 from .errata import AGREE, latex_table, text_to_latex
 from .plain_text import _escape, own_letters
 from .scene_parts import _count_tag, _special_cases
-from .summary import ADVICE, _counts
+from .summary import ADVICE, _counts, no_equilibrium_note
 from .typesetting import _display, _Named
 
 __all__ = ["Figure", "report_tex"]
@@ -82,6 +82,9 @@ def _regions_section(scene, named: _Named) -> str:
             "proved (the region undecided) it may still hold, and False means that it is proved at no point."
         )
     text = [_section("7. Regions in closed form", intro)]
+    note = no_equilibrium_note(scene)
+    if note:
+        text.append(_escape(note))
     for name, region in scene.regions().items():
         numbers, note = paper_equations(scene, name)
         text.append(f"\\paragraph{{{_escape(name.capitalize())}.}}")

@@ -24,14 +24,14 @@ from ..errors import ContactsymError
 from ..mechanism.equation_numbers import paper_equations
 from ..mechanism.scene import Scene
 from ..printing.shared import sstr_shared
-from ..stages.regions import REGION_NAMES, Region
+from ..stages.regions import REGION_NAMES, Region, proved_no_equilibrium
 from ..stages.stability import UNDECIDED_TEX, hurwitz_names
 from ..validate import cut, instance_of, sign_pattern
 from .plain_text import own_letters
 from .scene_parts import _count_tag
 from .typesetting import UNORDERED_NODES, _tex
 
-__all__ = ["always_positive", "conditions", "summary_text"]
+__all__ = ["always_positive", "conditions", "no_equilibrium_note", "summary_text"]
 
 
 def _counts(scene) -> tuple[dict[str, Region], str]:
@@ -90,6 +90,34 @@ def _hopf_names(scene) -> dict:
     if (omega, tau) == ("omega", "tau"):
         return {}
     return {"name": omega, "name_latex": letters.tex("omega"), "time": tau}
+
+
+def no_equilibrium_note(scene, signs=None) -> str | None:
+    """Why a scene's regions are empty when no equilibrium with every contact closed exists, and the
+    lift-offs that do exist; None when some branch may exist (or its roots are not derived).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> no_equilibrium_note(cs.scene("brake")) is None
+    True
+    """
+    if not proved_no_equilibrium(scene, signs):
+        return None
+    equilibria = scene.equilibria(signs)
+    note = (
+        "No equilibrium with every contact closed exists where the scene is declared: the existence condition "
+        "of each branch (4.2) is False (the loads pull a one-sided contact open), so no stability is claimed."
+    )
+    try:
+        lifts = [lift for lift in equilibria.lift_offs if lift.condition != sp.false]
+    except (ContactsymError, NotImplementedError):
+        lifts = []
+    for lift in lifts:
+        opened = ", ".join(str(j + 1) for j in lift.open)
+        note += f" Lift-off of contact {opened}: exists where {cut(sp.sstr(lift.condition), 100, count=False)}"
+        note += f", stable where {cut(sp.sstr(lift.stable), 100, count=False)}."
+    return note
 
 
 #: conditions() of each scene, computed once: the report, the summary and the JSON share them.
@@ -196,6 +224,9 @@ def _conditions(scene, signs) -> dict:
             )
     except ContactsymError as error:
         data["equilibria"] = {"error": str(error)}
+    note = no_equilibrium_note(scene, signs)
+    if note:
+        data["equilibria_note"] = note
     counts, note = _counts(scene)
     if counts:
         data["equilibrium_counts"] = {
@@ -240,6 +271,8 @@ def summary_text(data: dict) -> str:
         text = cut(entry["sympy"], 100, count=False)
         cite = ", ".join(entry.get("paper", []))
         lines.append(f"  equilibria, {name}: {text}" + (f"   {cite}" if cite else ""))
+    if data.get("equilibria_note"):
+        lines.append("  " + data["equilibria_note"])
     if data.get("hopf_frequency"):
         text = data["hopf_frequency"]["sympy"]
         lines.append(f"  Hopf frequency {data['hopf_frequency'].get('name', 'omega')}: " + cut(text, 100, count=False))

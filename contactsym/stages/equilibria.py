@@ -1,7 +1,13 @@
 """Equilibria (u*, 0) of the fast subsystem: f(u*) = 0 (3.1), (4.2).
 
 f is smooth on each piece of a sign pattern; a root of that piece is an equilibrium
-when it lies in the piece: s_i sigma_i(u*) > 0 for every switching function sigma_i.
+when it lies in the piece: s_i sigma_i(u*) > 0 for every switching function sigma_i, and
+every unilateral contact pushes, u_j* > 0. The sign patterns fix sigma = u_j to +1 where
+u_j is a switching function (friction mu_j |u_j| in f); where it is not (no friction, or
+friction at right angles to the gap, so that f does not switch with the sign of u_j), the
+branch's condition carries u_j* > 0 itself, decided where the scene's declared signs decide
+it (:func:`pushing`): a load that pulls a one-sided contact open leaves the branch False,
+and the equilibrium that exists is a lift-off.
 
 Lift-off (:class:`LiftOff`). A unilateral contact j only pushes; with its gap open the
 law gives N_j = 0 identically, so (2.1) reads u_j = 0, v_j' = f_j(u). The reactions rest
@@ -21,7 +27,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from ..algebra.basic import normalize
+from ..algebra.basic import known_sign, normalize
 from ..algebra.hurwitz import Hurwitz
 from ..arguments import checked
 from ..printing.latex_output import Formula, LatexReprMixin, Numbering, signs_latex, tex
@@ -29,7 +35,7 @@ from .fast import solve_piece
 from .linear import charpoly
 from .stability import Stability, stability_of
 
-__all__ = ["Branch", "Equilibria", "LiftOff"]
+__all__ = ["Branch", "Equilibria", "LiftOff", "pushing"]
 
 #: The general theory's number of an equilibrium: (3.2) for k = 1, (4.2) beyond.
 NUMBERS = Numbering({"equilibrium": (("3.2",), ("4.2",), ("4.2",))})
@@ -58,8 +64,8 @@ class Branch(LatexReprMixin):
         for j, value in enumerate(self.u_star, 1):
             lhs = "u^{*}" if k == 1 else f"u_{{{j}}}^{{*}}"
             rows.append(NUMBERS.formula("equilibrium", lhs, value, k=k, own=own))
-        if self.signs:
-            where = r"\text{where } s = " + signs_latex(self.signs) + r":\ "
+        if self.signs or self.condition != sp.true:  # a one-sided contact's u* > 0 also without a pattern
+            where = r"\text{where } " + (r"s = " + signs_latex(self.signs) + r":\ " if self.signs else "")
             rows.append(Formula("existence", "", where + tex(self.condition), ""))
         return tuple(rows)
 
@@ -98,6 +104,53 @@ class LiftOff:
     u_star: tuple
     condition: sp.Basic
     stable: sp.Basic
+
+
+def pushing(fast, at: dict) -> list:
+    """``u_j* > 0`` for each unilateral contact j whose sign no switching function fixes, at the root ``at``.
+
+    Each relation is decided where the scene's declared signs and positive expressions
+    (``fast.positive``) decide it: ``True`` or ``False``, else kept as ``u_j* > 0``.
+
+    Parameters
+    ----------
+    fast : FastSubsystem
+        The fast subsystem (2.1) of the scene.
+    at : dict
+        The root, ``{u_j: u_j*}``.
+
+    Returns
+    -------
+    list of sympy Boolean
+        One relation per such contact (empty when every unilateral u_j is a switching function).
+
+    Examples
+    --------
+    A block pressed by a load t onto a frictionless one-sided floor: f = u/m - t/m, u* = t.
+
+    >>> import sympy as sp
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> import contactsym as cs
+    >>> y = dynamicsymbols("y")
+    >>> N, t = sp.symbols("N t", real=True)
+    >>> m = sp.Symbol("m", positive=True)
+    >>> s = cs.Scene.from_accelerations([y], [N/m - t/m], [cs.Contact(coordinate=y, reaction=N, unilateral=True)])
+    >>> fast = s.fast_subsystem()
+    >>> pushing(fast, {fast.u[0]: t}), pushing(fast, {fast.u[0]: -m})
+    ([t > 0], [False])
+    """
+    fixed = set(fast.switching)
+    found = []
+    for u_j, one_sided in zip(fast.u, fast.unilateral):
+        if not one_sided or u_j in fixed:
+            continue
+        value = at[u_j]
+        relation = sp.Gt(value, 0)
+        if isinstance(relation, sp.Gt):  # SymPy's assumptions left it open: the scene's positive expressions
+            sign = known_sign(value, fast.positive)
+            relation = relation if sign is None else sp.true if sign > 0 else sp.false
+        found.append(relation)
+    return found
 
 
 def _lift_offs(fast, patterns, stability_of) -> list[LiftOff]:
@@ -161,8 +214,30 @@ class Equilibria(LatexReprMixin):
             for root in fast.roots(pattern):
                 at = dict(zip(fast.u, root))
                 inside = [sp.Gt(sp.cancel(s * sw.subs(at)), 0) for s, sw in zip(pattern, fast.switching)]
-                branches.append(Branch(pattern, root, sp.And(*inside)))
+                branches.append(Branch(pattern, root, sp.And(*inside, *pushing(fast, at))))
         return tuple(branches)
+
+    @cached_property
+    def exists(self) -> bool | None:
+        """Whether some branch exists where the scene is declared (three-valued).
+
+        True when some branch's condition is True throughout, False when every branch's
+        condition is False (then no equilibrium with every contact closed exists, and nothing
+        is stable or unstable: the regions say so), None when it depends on the parameters or
+        is not proved.
+
+        Examples
+        --------
+        >>> import contactsym as cs
+        >>> cs.scene("sliding-point").equilibria().exists, cs.scene("brake").equilibria().exists
+        (True, None)
+        """
+        conditions = [branch.condition for branch in self.branches]
+        if any(condition == sp.true for condition in conditions):
+            return True
+        if all(condition == sp.false for condition in conditions):
+            return False
+        return None
 
     @cached_property
     def lift_offs(self) -> tuple[LiftOff, ...]:
@@ -172,6 +247,10 @@ class Equilibria(LatexReprMixin):
     @checked(equilibrium="Branch | LiftOff")
     def stable(self, equilibrium) -> sp.Basic:
         """Where an equilibrium (a Branch or a LiftOff) is asymptotically stable for the scene's laws.
+
+        For a Branch these are the Hurwitz conditions of its piece, a claim where the branch
+        exists (its ``condition``); a branch that exists nowhere (condition False) is stable
+        nowhere: False.
 
         Examples
         --------
@@ -184,6 +263,8 @@ class Equilibria(LatexReprMixin):
         """
         if isinstance(equilibrium, LiftOff):
             return equilibrium.stable
+        if equilibrium.condition == sp.false:
+            return sp.false
         return sp.And(*[sp.Gt(h, 0) for h in self._stability(equilibrium.signs).hurwitz])
 
     def __iter__(self):
