@@ -76,6 +76,37 @@ def _friction_terms(contacts, frame, coordinates) -> list[tuple[sp.Matrix, sp.Ex
     return terms
 
 
+def slip_speeds(contacts, coordinates, space=None) -> tuple:
+    """Per contact, the sliding speed its friction law takes to be positive, or None.
+
+    Coulomb friction, mu |N| against a given sliding direction d, holds while the contact point
+    slides along d: its speed v . d (with ``Scene.from_lagrangian``; ``space`` gives D = d(v . d)/dq',
+    so v . d = D . q') or sum(c_i q_i') for a direction {q_i: c_i} (``Scene.from_accelerations``)
+    must stay positive. Where it reaches zero the contact sticks or slides back, which the scene
+    does not describe. None for a contact without friction, with a law whose force follows the
+    speed itself (viscous friction), or with friction written out in the accelerations.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> cs.scene("sliding-point").slip_speeds
+    (xdot,)
+    """
+    rates = [sp.diff(q, t) for q in coordinates]
+    speeds = []
+    for j, contact in enumerate(contacts):
+        law, speed = contact.friction, sp.Dummy("speed")
+        if law is None or law.magnitude(contact.reaction, speed).has(speed):
+            speeds.append(None)
+        elif space is not None and space.friction[j] is not None:
+            speeds.append(sum(d * r for d, r in zip(space.friction[j][0], rates)))
+        elif isinstance(law.direction, dict):
+            speeds.append(sum(c * sp.diff(q, t) for q, c in law.direction.items()))
+        else:
+            speeds.append(None)
+    return tuple(speeds)
+
+
 @checked
 @dataclass(frozen=True, eq=False)
 class ContactSpace:

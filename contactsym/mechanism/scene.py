@@ -23,7 +23,7 @@ from ..printing.latex_output import Formula, LatexReprMixin, tex
 from ..validate import lagrangian_parts, scene_options, scene_parts, shorten
 from .checks import check_eps, check_equations, check_inertia, check_scene, user_names, with_friction
 from .contact import Contact, contact_manifold, frozen_symbol, plain_symbol
-from .contact_space import contact_space, mass_determinant, t
+from .contact_space import contact_space, mass_determinant, slip_speeds, t
 from .equation_numbers import NUMBERS, paper_equations
 from .fixed_values import checked_values, substituted
 from .friction_geometry import check_friction_geometry
@@ -254,6 +254,13 @@ class Scene(SceneStages, LatexReprMixin):
             return None
         form, scale = present_factor(rest, inverse.pairs)
         return (1 if scale > 0 else -1) * sign * form
+
+    @cached_property
+    def slip_speeds(self) -> tuple:
+        """Per contact, the sliding speed (plain symbols) its Coulomb law takes to be positive, or None
+        (see :func:`contactsym.mechanism.contact_space.slip_speeds`); simulations stop where one reaches 0."""
+        speeds = slip_speeds(self.contacts, self.coordinates, self.contact_space)
+        return tuple(None if v is None else self.plain(v) for v in speeds)
 
     @cached_property
     def accelerations(self) -> dict:

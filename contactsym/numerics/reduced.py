@@ -14,6 +14,7 @@ from ..mechanism.scene import t as _time
 from .certified import decide
 from .codegen import _cached
 from .integration import Simulation, integrate
+from .sliding import check_sliding_start, stop_where_sliding_stops
 from .systems import OdeSystem, _coordinates, _first_order, _free_coordinates, _manifold_parameters
 from .values import (
     NumericValues,
@@ -209,6 +210,8 @@ def simulate_reduced(
         state={**fixed_values, **{s: given[s] for s in free_state}},
     )
     z0 = np.array([given[s] for s in free_state], dtype=float)
+    held = {k: v for k, v in with_state.numbers.items() if k not in free_state and k not in vals.numbers}
+    check_sliding_start(scene, vals, {**held, **dict(zip(free_state, z0))})
     if atol is None:
         duration = span[1] - span[0]
         rhs = np.abs(system.fun(span[0], z0))
@@ -218,6 +221,7 @@ def simulate_reduced(
         scale[m:] = np.maximum(scale[m:], rhs[m:] * duration)
         top = float(scale.max(initial=0.0))
         atol = rtol * np.maximum(scale, 1e-12 * top if top > 0 else 1.0)
-    return integrate(
+    run = integrate(
         system, span, z0, method=method, rtol=rtol, atol=atol, t_eval=t_eval, dense_output=dense_output, max_rhs=max_rhs
     )
+    return stop_where_sliding_stops(scene, vals, run, held)

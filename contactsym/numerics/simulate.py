@@ -13,6 +13,7 @@ from ..progress import Progress
 from .codegen import lambdify_cse
 from .integration import Simulation, integrate_with_impact_bound
 from .reduced import _reaction_scale, _try_branch
+from .sliding import check_sliding_start, stop_where_sliding_stops
 from .systems import _contact_law, _coordinates, _invert_law, _law_scaled, _manifold_parameters, full_system
 from .values import (
     _UNIT,
@@ -98,6 +99,7 @@ def simulate_full(
         raise NumericsError(f"start = {start!r}; use 'rigid' (on the contact manifold) or 'slow' (N = u*).")
     vals, z0 = _rigid_start(scene, numeric_values(scene, values), initial)
     positions, rates = _coordinates(scene)
+    check_sliding_start(scene, vals, dict(zip(positions + rates, z0)))
     system = full_system(scene, vals, eps, laws=laws, unilateral=unilateral)
     frozen = _with(vals, dict(zip(positions + rates, z0)))
     branch = _try_branch(scene, frozen, signs)
@@ -143,7 +145,7 @@ def simulate_full(
     )
     if branch is None and run.status == "impact":
         run = replace(run, extra={**run.extra, "no_equilibrium": True})
-    return run
+    return stop_where_sliding_stops(scene, vals, run)
 
 
 def _rigid_start(scene, vals: NumericValues, initial) -> tuple[NumericValues, np.ndarray]:

@@ -183,10 +183,45 @@ def test_extreme_parameters_give_finite_results(mass, damping, friction, push, p
     run = nm.simulate_full(scene, values, eps, (0, T), {x: 0, xdot: 1}, rtol=1e-6, max_rhs=30_000)
     assert np.all(np.isfinite(run.y)) and np.all(np.isfinite(run.reactions))
     zeta = damping / math.sqrt(mass)  # damping ratio of the fast subsystem (1.12)
-    if zeta >= 1e-2:  # damped contact: Proposition 1's setting, must integrate
-        assert run.status == "ok", run.message
+    if zeta >= 1e-2:  # damped contact: Proposition 1's setting, must integrate (or end where the point stops)
+        assert run.status in ("ok", "sliding stops"), run.message
     else:  # nearly undamped: thousands of fast periods; a clear stop, never NaN or a hang
-        assert run.status == "ok" or "right-hand-side evaluations" in run.message
+        assert run.status in ("ok", "sliding stops") or "right-hand-side evaluations" in run.message
     reduced = nm.simulate_reduced(scene, values, (0, T), {x: 0, xdot: 1}, rtol=1e-8)
-    assert reduced.ok and np.all(np.isfinite(reduced.y))
+    assert np.all(np.isfinite(reduced.y))
     assert math.isclose(reduced.reactions[0, -1], press, rel_tol=1e-12)
+    # Newton for the rigid contact, N = press: m xdot' = push - mu press, so xdot = 0 at m / (mu press - push)
+    stop = mass / (friction * press - push) if friction * press > push else math.inf
+    if stop < 0.999 * T:
+        assert reduced.status == "sliding stops" and math.isclose(reduced.t[-1], stop, rel_tol=1e-6)
+    elif stop > 1.001 * T:
+        assert reduced.ok, reduced.message
+
+
+# --- the sliding direction: runs end where a contact stops sliding -------------------------
+
+
+def test_a_run_ends_where_the_contact_stops_sliding():
+    """The sliding point with no push: friction mu |Y| stops it at t = m v0 / (mu |Y|) (Newton, by
+    hand), after which its scene (friction against +x) no longer holds: the run ends there, it does
+    not push the point backwards; a start sliding backwards is refused."""
+    scene = cs.scene("sliding-point")
+    values = {"m": 1, "b": 1, "mu": 0.5, X: 0, Y: -1}
+    reduced = nm.simulate_reduced(scene, values, (0, 4), {x: 0, xdot: 1})
+    assert reduced.status == "sliding stops" and math.isclose(reduced.t[-1], 2.0, rel_tol=1e-9)
+    assert abs(reduced["xdot"][-1]) < 1e-9 and reduced["xdot"].min() >= -1e-9
+    full = nm.simulate_full(scene, values, 1e-3, (0, 4), {x: 0, xdot: 1})
+    assert full.status == "sliding stops" and math.isclose(full.t[-1], 2.0, rel_tol=1e-3)
+    with pytest.raises(nm.NumericsError, match="slides backwards"):
+        nm.simulate_reduced(scene, values, (0, 4), {x: 0, xdot: -1})
+
+
+def test_a_braked_disc_ends_where_its_pads_stop_sliding():
+    """The brake's pads slide at -r thetadot - xdot (pad 1, read here from the state by hand): the run
+    ends where that speed reaches 0, not after the friction has spun the disc the other way."""
+    values = brake_values(-1.0, -1.0, 1.0, 1.0)  # inside the Hopf line: no squeal
+    initial = {"x": 0, "y": 0, "theta": 0, "xdot": 0, "ydot": 0, "thetadot": -1}
+    run = nm.simulate_full(brake, values, 1e-3, (0, 3), initial, unilateral=False)
+    assert run.status == "sliding stops", run.message
+    speed = -run["thetadot"] - run["xdot"]  # r = 1
+    assert speed[:-1].min() > 0 and abs(speed[-1]) < 1e-6 and run.t[-1] < 3
