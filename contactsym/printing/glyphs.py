@@ -28,6 +28,7 @@ from functools import lru_cache
 import sympy as sp
 from sympy.printing.conventions import split_super_sub
 
+from ..arguments import checked
 from .latex_output import tex
 
 __all__ = ["ACCENTS", "OwnLetters", "look_alike", "spelled_apart"]
@@ -39,6 +40,7 @@ ACCENTS = ("hat", "check", "tilde", "breve")
 _SAME_LETTER = {"lamda": "lambda", "Lamda": "Lambda", "varepsilon": "epsilon", "varphi": "phi"}
 
 
+@checked
 @lru_cache(maxsize=4096)
 def look_alike(name: str) -> str:
     r"""One spelling per printed glyph: the name with empty sub- and superscripts dropped, digits after
@@ -67,6 +69,7 @@ def look_alike(name: str) -> str:
     return base + "".join(f"__{s}" for s in supers) + ("_" + "_".join(subs) if subs else "")
 
 
+@checked(taken="Collection[str]", bases="Collection[str]")
 def spelled_apart(letter: str, taken, bases=()) -> str:
     r"""``letter`` as the package prints it beside the names ``taken``: itself where its glyph is free,
     else with the first accent (hat, check, tilde, breve) whose glyph is free.
@@ -123,6 +126,7 @@ class OwnLetters:
     ('\\hat{J}', '\\hat{I}', 'Yhat', 'A')
     """
 
+    @checked(names="Collection")
     def __init__(self, names=()):
         self.taken = frozenset(look_alike(str(n)) for n in names)
         #: the letters the scene uses with an index (q for q_1): a generic q_j would read as one of them

@@ -69,7 +69,7 @@ def _factored(polynomial: sp.Expr) -> sp.Expr:
 
 @checked(n=between(1, 12))
 def generic_minors(n: int, letter: str = "p") -> dict[int, sp.Expr]:
-    """Delta_m in the coefficients p_n, ..., p_0 (symbols named ``letter``_s) of a degree-n polynomial, m = 1..n.
+    """Delta_m in the coefficients p_n, ..., p_0 (symbols ``p_s``, or ``<letter>_s`` with ``letter``) of a degree-n polynomial, m = 1..n.
 
     Examples
     --------
