@@ -82,6 +82,8 @@ def conditions_text(data: dict) -> str:
         lines.append(f"sign pattern {tuple(data['signs'])}")
     if data.get("equilibria_note"):
         lines.append(data["equilibria_note"])
+    if data.get("domain"):
+        lines.append("in the scene's domain: " + ", ".join(entry["sympy"] for entry in data["domain"]))
     lines.append("closed-form regions:")
     for name, entry in data["regions"].items():
         cite = ", ".join(entry.get("paper", []))

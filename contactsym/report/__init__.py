@@ -19,7 +19,7 @@ Modules: :mod:`~contactsym.report.typesetting` (widths, line breaking),
 Examples
 --------
 >>> import contactsym as cs
->>> print(summary_text(conditions(cs.scene("brake"))).splitlines()[1])
+>>> print(summary_text(conditions(cs.scene("brake"))).splitlines()[2])
   stable for every law: mu <= Abs(cot(alpha))   (4.4), (6.3)
 """
 

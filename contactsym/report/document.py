@@ -76,6 +76,9 @@ def _parameters(scene) -> str:
 
 def _regions_section(scene, named: _Named) -> str:
     intro = "Each raw condition factored, factors of known sign dropped, written in the paper's variables."
+    if scene.declared_positive:  # the factors dropped and the divisions made hold in the domain only
+        domain = ", ".join(f"${tex(e)} > 0$" for e in scene.declared_positive)
+        intro += f" The regions are stated in the scene's domain, where {domain}."
     if scene.k >= 3:  # the statements are proved on sufficient regions only: False is "proved nowhere"
         intro += (
             " With three or more contacts each statement is proved on a sufficient region: where it is not "

@@ -196,6 +196,8 @@ def _conditions(scene, signs) -> dict:
     }
     if scene.presentation:
         data["presentation"] = {sp.sstr(k): sp.sstr(v) for k, v in scene.presentation.items()}
+    if scene.declared_positive:  # the regions hold there (and may be divided by these expressions)
+        data["domain"] = [_entry(sp.Gt(e, 0, evaluate=False)) for e in scene.declared_positive]
     regions = scene.regions(signs)
     for name in [*REGION_NAMES, *regions]:
         if name in regions:
@@ -257,12 +259,16 @@ def summary_text(data: dict) -> str:
     Examples
     --------
     >>> import contactsym as cs
-    >>> print(summary_text(conditions(cs.scene("brake"))).splitlines()[1])
+    >>> for line in summary_text(conditions(cs.scene("brake"))).splitlines()[1:3]:
+    ...     print(line)
+      in the domain sin(alpha) > 0
       stable for every law: mu <= Abs(cot(alpha))   (4.4), (6.3)
     """
     if not isinstance(data, dict) or not {"scene", "regions"} <= set(data):
         raise ContactsymError("summary_text takes the dict that contactsym.conditions(scene) returns.")
     lines = [f"{data['scene']}: {data['description']}"]
+    if data.get("domain"):
+        lines.append("  in the domain " + ", ".join(entry["sympy"] for entry in data["domain"]))
     for name, entry in data["regions"].items():
         cite = ", ".join(entry.get("paper", []))
         text = cut(entry["sympy"], 100, count=False)

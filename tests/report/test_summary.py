@@ -39,3 +39,17 @@ def test_an_error_while_deriving_the_conditions_is_short_and_says_what_to_do():
     text = str(error)
     assert len(text) < 700 and "scene 'brake'" in text and "characters)" in text
     assert "[intervals]" in text and "[parameters]" in text
+
+
+def test_the_regions_say_the_domain_they_are_stated_in():
+    """The spatial rod's printed regions divide by sin(theta) cos(beta) cos(theta), positive only in its
+    declared domain: the JSON, the summary and the report state that domain, from the scene's own
+    declarations; a scene that declares none states none."""
+    rod = cs.scene("painleve-rod-3d")
+    data = conditions(rod)
+    stated = [sp.sympify(entry["sympy"], locals={str(s): s for s in rod.parameters}) for entry in data["domain"]]
+    assert stated == [sp.Gt(e, 0) for e in rod.declared_positive]
+    assert all(e.is_positive is None for e in rod.declared_positive)  # real declarations, not SymPy facts
+    assert "in the domain sin(beta) > 0" in summary_text(data)
+    assert "stated in the scene's domain" in report_tex(rod)
+    assert "domain" not in conditions(cs.scene("sliding-point"))
