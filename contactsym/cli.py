@@ -56,7 +56,7 @@ from .mechanism.files.reader import scene_or_file
 from .mechanism.scene import Scene
 from .parse import ParseError
 from .scenes import DEFAULT_SCENE, scene_description, scene_names
-from .validate import cut, path_text, shorten
+from .validate import cut, named_once, path_text, shorten
 
 __all__ = ["derivation_chain", "main"]
 
@@ -65,7 +65,7 @@ _parser = command_parser
 
 
 def _with_values(s: Scene, values: list) -> Scene:
-    return s.with_values(dict(values)) if values else s
+    return s.with_values(named_once(values)) if values else s
 
 
 def _progress(message: str) -> None:

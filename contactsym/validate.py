@@ -32,7 +32,7 @@ import sympy as sp
 from sympy.physics.vector import Point, ReferenceFrame, Vector
 
 from .boundary.plain_values import NUMBER_TYPES, SHOWN, checked_fields, cut, flag, instance_of, path_text, shorten
-from .errors import ComplianceError, NumericsError, SceneError, SignPatternError
+from .errors import ComplianceError, ContactsymError, NumericsError, SceneError, SignPatternError
 
 __all__ = [
     "SHOWN",
@@ -135,6 +135,27 @@ def friction_coefficient(mu, what: str = "the friction coefficient mu") -> sp.Ex
 
 
 # --- scenes ------------------------------------------------------------------------------------
+
+
+def named_once(pairs, option: str = "--set") -> dict:
+    """``(name, value)`` pairs of a repeated option as a dict, each name once: a second value for a
+    name is refused, never kept silently in place of the first.
+
+    Examples
+    --------
+    >>> named_once([("m", 1), ("mu", 2)])
+    {'m': 1, 'mu': 2}
+    >>> named_once([("m", 2), ("m", 3)])
+    Traceback (most recent call last):
+    ...
+    contactsym.errors.ContactsymError: --set m is given twice (2 and 3); give each name once.
+    """
+    found: dict = {}
+    for name, value in pairs:
+        if name in found:
+            raise ContactsymError(f"{option} {name} is given twice ({found[name]} and {value}); give each name once.")
+        found[name] = value
+    return found
 
 
 def scene_name(name) -> str:

@@ -286,3 +286,9 @@ def test_show_never_prints_a_scene_name_for_the_packages_own(tmp_path_factory, n
     drawn, neutral = (_words(derivation_chain(str(folder / f))) for f in ("drawn.toml", "neutral.toml"))
     for name, stand_in in zip(names, NEUTRAL):
         assert drawn.count(name) == neutral.count(stand_in) > 0, (name, names)
+
+
+def test_a_name_set_twice_is_refused_not_overwritten(capsys):
+    """--set m=2 --set m=3 kept the last value without a word; now neither is taken."""
+    assert main(["conditions", "brake", "--set", "m=2", "--set", "m=3"]) == 1
+    assert "--set m is given twice (2 and 3)" in capsys.readouterr().err

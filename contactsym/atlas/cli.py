@@ -18,8 +18,8 @@ from pathlib import Path
 import numpy as np
 
 from ..atomic import process_tag, remove_leftovers, umask_bits
-from ..errors import AtlasError, UsageError
-from ..validate import cut
+from ..errors import AtlasError, ContactsymError, UsageError
+from ..validate import cut, named_once
 from .grid import check_size
 from .run import sweep
 
@@ -137,7 +137,10 @@ def run_atlas(args) -> int:
             raise UsageError(f"--grid names a parameter twice: {names}; give each axis once.")
         check_size(math.prod(_count(spec) for spec in specs))  # before any axis is allocated
         grid = {spec[0]: _values(spec) for spec in specs}
-        values = dict(_parse_set(text) for text in args.set)
+        try:
+            values = named_once(_parse_set(text) for text in args.set)
+        except ContactsymError as error:
+            raise UsageError(str(error)) from None
         out = Path(args.out) if args.out else None
         if out is not None and out.suffix != ".nc":
             raise UsageError(f"--out {out}: the atlas is written as NetCDF; give a file name ending in .nc.")

@@ -176,7 +176,10 @@ def plan_figures(scene, directory, *, resolution: int = 200, dpi: int = 150) -> 
     directory.mkdir(parents=True, exist_ok=True)
     plan = getattr(scene, "figure_plan", None)
     if plan is None:
-        return [], ["No figures: give the scene a [figures] table (x, y, x_range, y_range, values) to draw them."]
+        return [], [
+            "No figures: give the scene a [figures] table (x, y, x_range, y_range, values) to draw them; a plane "
+            "whose axis is fixed by --set (or with_values) is not drawn."
+        ]
     drawn, notes = [], []
     data = region_map_data(scene, plan, resolution=resolution)
     notes += [f"Region '{name}' is not drawn: {why}" for name, why in data.skipped.items()]

@@ -13,8 +13,10 @@ import sympy as sp
 
 from ..algebra.hurwitz import hurwitz_minors
 from ..arguments import between, checked
+from ..errors import ArgumentError
 from ..inequalities import factor_list
 from ..printing.latex_output import Formula, tex
+from ..validate import shorten
 from .linear import lam
 
 if TYPE_CHECKING:
@@ -98,6 +100,12 @@ def robustness_formulas(robustness) -> tuple[Formula, ...]:
     """
     if robustness is None:
         return ()
+    if not all(hasattr(robustness, name) for name in ("verdict", "certificate", "stable_law", "unstable_law")):
+        # the hint names a class imported for k >= 3 only (scipy), so the decorator cannot check it here
+        raise ArgumentError(
+            f"robustness_formulas: robustness = {shorten(robustness)} is not accepted; pass the Robustness that "
+            "contactsym.robustness.decide_robustness returns, or None."
+        )
     rows = [Formula("robustness", r"\text{robustness}", r"\text{" + robustness.verdict + "}", ":")]
     if robustness.certificate is not None:
         statement = robustness.certificate.statement.replace("_", r"\_")
