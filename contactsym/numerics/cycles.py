@@ -210,8 +210,8 @@ def _distance_to_limit(last: list, scale) -> float:
 
     For returns converging geometrically, h_n - h_inf = (h_n - h_(n-1)) r / (1 - r) with r the
     contraction per return, estimated as |h_n - h_(n-1)| / |h_(n-1) - h_(n-2)|. Returns that do not
-    contract (r >= 1) are as far from a limit as the step they just made, at least; identical
-    returns are at it.
+    contract (r >= 1) give no estimate (inf: integrate on); after two identical returns the distance is
+    the last step; identical returns are at their limit.
     """
     step = np.max(np.abs(last[2] - last[1]) / scale)
     before = np.max(np.abs(last[1] - last[0]) / scale)
