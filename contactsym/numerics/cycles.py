@@ -14,6 +14,7 @@ from ..mechanism.scene import t as _time
 from .codegen import lambdify_cse
 from .fastsystem import FastProblem
 from .integration import Simulation, integrate
+from .sliding import check_sliding_start, stop_where_sliding_stops
 from .systems import OdeSystem, _coordinates, _free_coordinates, _manifold_parameters
 from .values import (
     NumericValues,
@@ -284,6 +285,7 @@ def simulate_averaged(
     """
     span = _check_span(span, "span")
     free_state, z0, base = _averaged_start(scene, numeric_values(scene, values), initial)
+    check_sliding_start(scene, base, dict(zip(free_state, z0)), on_manifold=True)
     fast_f = [substitute(f, base) for f in scene.fast_subsystem().f]
     depends = any(f.free_symbols & set(free_state) for f in fast_f)
     options = dict(cycle_options or {})
@@ -296,7 +298,8 @@ def simulate_averaged(
             found = fast_cycle(scene, frozen, laws=laws, unilateral=unilateral, form=form, **options)
             if not found.converged:
                 raise NumericsError(
-                    f"no stable cycle of the fast subsystem at the slow state {list(y)}: {found.message}"
+                    f"no stable cycle of the fast subsystem at the slow state "
+                    f"{ {str(s): round(float(v), 6) for s, v in zip(free_state, y)} }: {found.message}"
                 )
             cache[key] = found
         return cache[key]
@@ -305,7 +308,8 @@ def simulate_averaged(
     run = integrate(
         system, span, z0, method=method, jacobian=False, rtol=rtol, atol=atol, t_eval=t_eval, dense_output=True
     )
-    return replace(run, extra={**run.extra, "cycle": cache.get(()) if not depends else None})
+    run = replace(run, extra={**run.extra, "cycle": cache.get(()) if not depends else None})
+    return stop_where_sliding_stops(scene, base, run, on_manifold=True)
 
 
 def _averaged_start(scene, vals: NumericValues, initial) -> tuple[list, np.ndarray, NumericValues]:

@@ -211,7 +211,7 @@ def simulate_reduced(
     )
     z0 = np.array([given[s] for s in free_state], dtype=float)
     held = {k: v for k, v in with_state.numbers.items() if k not in free_state and k not in vals.numbers}
-    check_sliding_start(scene, vals, {**held, **dict(zip(free_state, z0))})
+    check_sliding_start(scene, vals, {**held, **dict(zip(free_state, z0))}, on_manifold=True)
     if atol is None:
         duration = span[1] - span[0]
         rhs = np.abs(system.fun(span[0], z0))
@@ -224,4 +224,4 @@ def simulate_reduced(
     run = integrate(
         system, span, z0, method=method, rtol=rtol, atol=atol, t_eval=t_eval, dense_output=dense_output, max_rhs=max_rhs
     )
-    return stop_where_sliding_stops(scene, vals, run, held)
+    return stop_where_sliding_stops(scene, vals, run, held, on_manifold=True)

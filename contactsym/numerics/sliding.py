@@ -3,7 +3,7 @@
 A scene's Coulomb law is mu |N| against a given sliding direction
 (:attr:`contactsym.Scene.slip_speeds`): it describes the motion while each such contact slides
 that way. Where a sliding speed reaches zero the contact sticks or slides back, which the scene
-does not describe, so the simulations end their run there (status ``"sliding stops"``) instead of
+does not describe, so the simulations (full, reduced, averaged) end their run there (status ``"sliding stops"``) instead of
 integrating on with friction pushing the wrong way; a start that already slides backwards is
 refused.
 """
@@ -26,16 +26,24 @@ __all__ = ["check_sliding_start", "stop_where_sliding_stops"]
 SLIDING_STOPS = "sliding stops"
 
 
-def _speeds(scene, vals: NumericValues, fixed: Mapping) -> list[tuple[int, sp.Expr]]:
+def _speeds(scene, vals: NumericValues, fixed: Mapping, on_manifold: bool) -> list[tuple[int, sp.Expr]]:
+    """The speeds with the values put in; ``on_manifold``: the coordinates the contacts fix (and their
+    rates) first put on the contact manifold g = 0, g' = 0, as the reduced and averaged systems are."""
     held = {k: v if isinstance(v, sp.Basic) else sp.Float(float(v)) for k, v in fixed.items()}
     known = NumericValues({**vals.numbers, **held}, vals.functions)
-    return [(j, sp.sympify(substitute(v, known))) for j, v in enumerate(scene.slip_speeds) if v is not None]
+    manifold = scene.manifold if on_manifold else {}
+    return [
+        (j, sp.sympify(substitute(v.xreplace(manifold), known)))
+        for j, v in enumerate(scene.slip_speeds)
+        if v is not None
+    ]
 
 
-def check_sliding_start(scene, vals: NumericValues, state: Mapping) -> None:
+def check_sliding_start(scene, vals: NumericValues, state: Mapping, on_manifold: bool = False) -> None:
     """Refuse a start whose contact slides against the direction its Coulomb law assumes.
 
-    ``state`` maps the plain coordinates and rates (symbols) to numbers.
+    ``state`` maps the plain coordinates and rates (symbols) to numbers; ``on_manifold`` for the
+    reduced and averaged systems, whose state lies on the contact manifold.
 
     Examples
     --------
@@ -48,7 +56,7 @@ def check_sliding_start(scene, vals: NumericValues, state: Mapping) -> None:
     ...
     contactsym.numerics.NumericsError: at the start contact 1 slides backwards: its sliding speed xdot is -1 < 0, against the direction its Coulomb law assumes; start with it > 0, or reverse the friction direction of the scene.
     """
-    for j, speed in _speeds(scene, vals, state):
+    for j, speed in _speeds(scene, vals, state, on_manifold):
         if speed.free_symbols:
             continue
         value = float(speed)
@@ -60,15 +68,18 @@ def check_sliding_start(scene, vals: NumericValues, state: Mapping) -> None:
             )
 
 
-def stop_where_sliding_stops(scene, vals: NumericValues, run: Simulation, fixed: Mapping | None = None) -> Simulation:
+def stop_where_sliding_stops(
+    scene, vals: NumericValues, run: Simulation, fixed: Mapping | None = None, on_manifold: bool = False
+) -> Simulation:
     """``run`` up to the first time a contact's sliding speed reaches zero, with status ``"sliding stops"``.
 
     The speeds are evaluated at the run's points (the state by name, ``fixed`` for coordinates held
-    constant); the crossing itself is found on the dense output where the run has one (else by
-    linear interpolation) and appended as the run's last point. A run that never stops sliding, or
-    whose speeds cannot be evaluated from its state, is returned as it is.
+    constant; ``on_manifold`` as for :func:`check_sliding_start`); the crossing itself is found on
+    the dense output where the run has one (else it is the last point before it) and appended as the
+    run's last point. A run that never stops sliding, or whose speeds cannot be evaluated from its
+    state, is returned as it is.
     """
-    speeds = _speeds(scene, vals, dict(fixed or {}))
+    speeds = _speeds(scene, vals, dict(fixed or {}), on_manifold)
     if not speeds or run.t.size == 0:
         return run
     rows = {name: run.y[i] for i, name in enumerate(run.names)}

@@ -225,3 +225,18 @@ def test_a_braked_disc_ends_where_its_pads_stop_sliding():
     assert run.status == "sliding stops", run.message
     speed = -run["thetadot"] - run["xdot"]  # r = 1
     assert speed[:-1].min() > 0 and abs(speed[-1]) < 1e-6 and run.t[-1] < 3
+
+
+def test_the_reduced_and_averaged_brake_end_where_the_disc_stops():
+    """On the contact manifold the pads do not move (x' = 0), so pad 1 slides at -r thetadot: with
+    |N_1| + |N_2| = 4 pressing (u* = (1, 3), by hand from the loads), mu r 4 / J = 4 decelerates the disc
+    from thetadot = -5 to rest at t = 1.25; the reduced run ends there, and so does the averaged one."""
+    values = brake_values(-1.0, -1.0, 1.0, 1.0)  # inside the Hopf line: the reduced system holds
+    reduced = nm.simulate_reduced(brake, values, (0, 5), {"theta": 0, "thetadot": -5})
+    assert reduced.status == "sliding stops" and math.isclose(reduced.t[-1], 1.25, rel_tol=1e-6)
+    squealing = brake_values(-2.1, -1.0, 1.0, 1.0)  # past the line: the cycle's mean reactions drive it
+    averaged = nm.simulate_averaged(
+        brake, squealing, (0, 5), {"theta": 0, "thetadot": -5}, cycle_options={"samples": 512, "tol": 1e-6}
+    )
+    assert averaged.status == "sliding stops" and abs(averaged.at(averaged.t[-1], "thetadot")) < 1e-9
+    assert averaged["thetadot"].max() <= 1e-9  # never spun the other way
