@@ -354,8 +354,10 @@ def _decided_at_the_point(st: Stability, vals: NumericValues) -> str:
     """The region at a point where the symbolic regions prove nothing (k >= 3): the point decision of
     :func:`contactsym.robustness.classify.decide_robustness` on A at the point (a certificate or two
     exact witness laws), as ``scene.with_values(...).stability()`` would give; else 'undecided'."""
+    if st.k < 3:
+        return "undecided"
     A = substitute(st.linearization.A, vals)
-    if st.k < 3 or A.free_symbols:
+    if A.free_symbols:
         return "undecided"
     from ..robustness.classify import decide_robustness  # scipy.optimize: imported for k >= 3 only
 

@@ -17,6 +17,7 @@ import numpy as np
 import sympy as sp
 
 from ..errors import NumericsError
+from .codegen import lambdify_cse
 from .integration import Simulation
 from .values import NumericValues, substitute
 
@@ -86,7 +87,7 @@ def stop_where_sliding_stops(
     symbols = sorted(set().union(*(v.free_symbols for _, v in speeds)), key=str)
     if any(str(s) not in rows for s in symbols):
         return run
-    function = sp.lambdify(symbols, [v for _, v in speeds], "numpy")
+    function = lambdify_cse(symbols, [v for _, v in speeds])
     values = np.array(
         [np.broadcast_to(np.asarray(v, dtype=float), run.t.shape) for v in function(*(rows[str(s)] for s in symbols))]
     )

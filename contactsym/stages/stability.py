@@ -39,10 +39,10 @@ from ..deprecation import deprecated_property
 from ..errors import SingularJacobianError
 from ..lyapunov.coefficient import first_lyapunov_symbolic
 from ..printing.glyphs import OwnLetters
-from ..printing.latex_output import Formula, LatexReprMixin, Numbering, tex
+from ..printing.latex_output import Formula, LatexReprMixin, Numbering
 from .classification import classification_matrix, proved_regions
 from .linear import linearization_of
-from .stability_formulas import generic_minors, robustness_formulas, shortest_form
+from .stability_formulas import generic_minors, hurwitz_letters, hurwitz_names, robustness_formulas, shortest_form
 from .verdicts import NAMES as VERDICT_NAMES
 from .verdicts import Verdict, classification_verdicts, with_point_decision
 
@@ -384,31 +384,3 @@ def stability_of(fast, signs=None) -> Stability:
     True
     """
     return fast.later_stage(("stability", signs), lambda: Stability(linearization_of(fast, signs)))
-
-
-@checked(stability="Stability")
-def hurwitz_names(stability) -> list[str]:
-    r"""LaTeX names of ``stability.hurwitz``: coefficients ``p_s`` of (4.6), minors ``Delta_m`` of (4.7).
-
-    Examples
-    --------
-    >>> import contactsym as cs
-    >>> hurwitz_names(cs.scene("brake").stability())
-    ['p_{3}', 'p_{2}', 'p_{1}', 'p_{0}', '\\Delta_{3}']
-    """
-    letters = {kind: tex(sp.Symbol(name)) for kind, name in hurwitz_letters(stability).items()}
-    return [f"{letters[kind]}_{{{index}}}" for kind, index in stability.routh_hurwitz.labels]
-
-
-def hurwitz_letters(stability) -> dict[str, str]:
-    """The names of the coefficients p_s and the minors Delta_m: ``phat``, ``Deltahat`` where the scene has its
-    own p or p_1 (Delta), so that a printed condition never shows the scene's p_1 for a coefficient.
-
-    Examples
-    --------
-    >>> import contactsym as cs
-    >>> hurwitz_letters(cs.scene("brake").stability())
-    {'p': 'p', 'Delta': 'Delta'}
-    """
-    own = OwnLetters(getattr(stability.linearization.fast, "_taken", ()))
-    return {kind: own.indexed(kind) for kind in ("p", "Delta")}

@@ -15,6 +15,7 @@ from ..algebra.hurwitz import hurwitz_minors
 from ..arguments import between, checked
 from ..errors import ArgumentError
 from ..inequalities import factor_list
+from ..printing.glyphs import OwnLetters
 from ..printing.latex_output import Formula, tex
 from ..validate import shorten
 from .linear import lam
@@ -22,7 +23,7 @@ from .linear import lam
 if TYPE_CHECKING:
     from ..robustness.classify import Robustness  # noqa: F401 - the hint of robustness_formulas
 
-__all__ = ["generic_minors", "robustness_formulas", "shortest_form"]
+__all__ = ["generic_minors", "hurwitz_letters", "hurwitz_names", "robustness_formulas", "shortest_form"]
 
 
 def shortest_form(polynomial: sp.Expr, outer=()) -> sp.Expr:
@@ -115,3 +116,31 @@ def robustness_formulas(robustness) -> tuple[Formula, ...]:
             values = r",\ ".join([tex(sp.Tuple(*law.Phi)), tex(sp.Tuple(*law.Psi))])
             rows.append(Formula("witness", r"(\Phi, \Psi)_{\text{" + name + "}}", values))
     return tuple(rows)
+
+
+@checked(stability="Stability")
+def hurwitz_names(stability) -> list[str]:
+    r"""LaTeX names of ``stability.hurwitz``: coefficients ``p_s`` of (4.6), minors ``Delta_m`` of (4.7).
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> hurwitz_names(cs.scene("brake").stability())
+    ['p_{3}', 'p_{2}', 'p_{1}', 'p_{0}', '\\Delta_{3}']
+    """
+    letters = {kind: tex(sp.Symbol(name)) for kind, name in hurwitz_letters(stability).items()}
+    return [f"{letters[kind]}_{{{index}}}" for kind, index in stability.routh_hurwitz.labels]
+
+
+def hurwitz_letters(stability) -> dict[str, str]:
+    """The names of the coefficients p_s and the minors Delta_m: ``phat``, ``Deltahat`` where the scene has its
+    own p or p_1 (Delta), so that a printed condition never shows the scene's p_1 for a coefficient.
+
+    Examples
+    --------
+    >>> import contactsym as cs
+    >>> hurwitz_letters(cs.scene("brake").stability())
+    {'p': 'p', 'Delta': 'Delta'}
+    """
+    own = OwnLetters(getattr(stability.linearization.fast, "_taken", ()))
+    return {kind: own.indexed(kind) for kind in ("p", "Delta")}
